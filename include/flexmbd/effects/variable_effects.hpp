@@ -1,0 +1,54 @@
+#pragma once
+/// @file
+/// Effects on one relative-motion variable q of a joint, each an element of its own (docs/theory.md, (T10)):
+///   spring  Q = -k (q_m - rest), q_m the mid-step value: the exact discrete gradient of k (q - rest)^2 / 2
+///   damper  Q = -c (q_f - q_i)/h: dissipates c dq^2/h >= 0 per step
+///   drive   q_f = f(t_f), enforced by a multiplier lambda; the drive force on q is -lambda
+
+#include "flexmbd/elements/element.hpp"
+#include "flexmbd/model/model_spec.hpp"
+
+namespace flexmbd {
+
+class VariableSpring : public Element {
+ public:
+  VariableSpring(int variable, int variable_unknown, double stiffness, double rest);
+  void AddResidual(const StepContext& ctx, Eigen::Ref<Eigen::VectorXd> r,
+                   Eigen::Ref<Eigen::VectorXd> magnitude) const override;
+  void AddTangent(const StepContext& ctx, Eigen::Ref<Eigen::MatrixXd> J) const override;
+  void AddEnergy(const State& state, const Vec3& gravity, EnergyTally* tally) const override;
+
+ private:
+  int variable_;
+  double stiffness_, rest_;
+};
+
+class VariableDamper : public Element {
+ public:
+  VariableDamper(int variable, int variable_unknown, double coefficient);
+  void AddResidual(const StepContext& ctx, Eigen::Ref<Eigen::VectorXd> r,
+                   Eigen::Ref<Eigen::VectorXd> magnitude) const override;
+  void AddTangent(const StepContext& ctx, Eigen::Ref<Eigen::MatrixXd> J) const override;
+  void AddStepWork(const StepContext& ctx, StepWork* work) const override;
+
+ private:
+  int variable_;
+  double coefficient_;
+};
+
+class VariableDrive : public Element {
+ public:
+  VariableDrive(int variable, int variable_unknown, int multiplier, int multiplier_unknown, TimeFunctionSpec law);
+  void AddResidual(const StepContext& ctx, Eigen::Ref<Eigen::VectorXd> r,
+                   Eigen::Ref<Eigen::VectorXd> magnitude) const override;
+  void AddTangent(const StepContext& ctx, Eigen::Ref<Eigen::MatrixXd> J) const override;
+  void AddStepWork(const StepContext& ctx, StepWork* work) const override;
+  const TimeFunctionSpec& law() const { return law_; }
+  int variable() const { return variable_; }
+
+ private:
+  int variable_, multiplier_;
+  TimeFunctionSpec law_;
+};
+
+}  // namespace flexmbd

@@ -1,0 +1,128 @@
+#pragma once
+/// @file
+/// The one element interface (DESIGN.md): bodies, joints, effects and loads all declare the unknowns they
+/// couple, add their residual and their tangent. The same code serves static and dynamic analyses; the
+/// StepContext says which.
+///
+/// Unknowns of a step (docs/theory.md, "Unknowns"): per node the increment (dx in W, theta in the node frame at
+/// the start of the step, R_f = R_i Exp(theta)); per joint variable its increment dq; the multipliers lambda.
+/// Residual rows of node and variable unknowns are generalised forces conjugate to those increments.
+
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "flexmbd/math/so3.hpp"
+#include "flexmbd/model/state.hpp"
+
+namespace flexmbd {
+
+using Vec6 = Eigen::Matrix<double, 6, 1>;
+
+/// Which analysis is asking.
+enum class AnalysisMode {
+  kDynamic,  ///< a time step from state i to state f
+  kStatic,   ///< equilibrium at the current iterate: start and end coincide (theta = 0)
+};
+
+/// Integration coefficients of the dynamic scheme for one node (docs/theory.md, eq. (T3)):
+///   x_f - x_i = h [(v_i + v_f)/2 + alpha (v_f - v_i - h a_prev)],
+/// a_prev the mean acceleration of the previous step; the same for theta, w and the angular acceleration.
+struct NodeSchemeCoefficients {
+  double alpha_translation = 0.0;  ///< >= 0; 0 is energy preserving
+  double alpha_rotation = 0.0;     ///< >= 0
+};
+
+/// A node's start and trial-end configuration and velocities for one evaluation.
+struct NodeStep {
+  Vec3 x_i, x_f, dx;
+  Mat3 R_i, R_f;
+  Vec3 theta;          ///< rotation increment, node frame at i
+  Mat3 S;              ///< SecantOperator(theta)
+  Mat3 T;              ///< RightJacobian(theta)
+  Vec3 v_i, v_f, w_i, w_f;
+  double dvf_ddx = 0;  ///< d v_f / d dx (scalar times identity)
+  double dwf_dtheta = 0;
+};
+
+/// Builds the configuration part of a NodeStep from the start state and the increment (dx, theta). In static
+/// mode the start is moved to the end, so the node stands still at start + increment.
+NodeStep MakeNodeStep(const NodeState& start, const Vec6& increment, AnalysisMode mode);
+
+/// Fills the velocity part of a dynamic NodeStep from the scheme relation (theory eq. (T3)); uses the start
+/// state's velocities and previous-step accelerations.
+void SetNodeStepVelocities(const NodeState& start, double h, const NodeSchemeCoefficients& c, NodeStep* node);
+
+/// The configuration of `node` moved by a further increment d (velocities are left unset): used for
+/// finite-difference tangents.
+NodeStep PerturbNodeStep(const NodeStep& node, const Vec6& d, AnalysisMode mode);
+
+/// One joint variable's start and trial-end values.
+struct VariableStep {
+  double q_i = 0, q_f = 0, qdot_i = 0;
+};
+
+/// What an element may read during one evaluation.
+struct StepContext {
+  AnalysisMode mode = AnalysisMode::kDynamic;
+  double t_i = 0, t_f = 0, h = 1;    ///< step start, end and size [s]
+  double load_factor = 1;            ///< static load stepping: multiplies gravity and applied loads
+  Vec3 gravity = Vec3::Zero();       ///< [m/s^2]
+  const State* start = nullptr;
+  const std::vector<NodeStep>* nodes = nullptr;
+  const std::vector<VariableStep>* variables = nullptr;
+  const Eigen::VectorXd* lambda = nullptr;  ///< trial multipliers (num_multipliers)
+  bool geometric_stiffness = false;  ///< add the second-derivative terms of constraint forces to the tangent
+  /// d(mid-step value)/d(increment): 1/2 in dynamics (midpoint), 1 in statics (end value).
+  double mid_rate() const { return mode == AnalysisMode::kDynamic ? 0.5 : 1.0; }
+};
+
+/// Energy terms of one element at one state.
+struct EnergyTally {
+  double kinetic = 0;    ///< [J]
+  double potential = 0;  ///< gravity and springs [J]
+};
+
+/// Work done over one accepted step.
+struct StepWork {
+  double external = 0;    ///< by applied loads and drives [J]
+  double dissipated = 0;  ///< by dampers (>= 0) [J]
+};
+
+/// Base of every element. Local unknowns are a list of global indices fixed at model build.
+class Element {
+ public:
+  virtual ~Element() = default;
+
+  /// Global indices of the local unknowns, in local order.
+  const std::vector<int>& unknowns() const { return unknowns_; }
+  int num_local() const { return static_cast<int>(unknowns_.size()); }
+
+  /// Adds the local residual r (size num_local) and, per row, the magnitude of the terms added (for
+  /// scale-free convergence tests).
+  virtual void AddResidual(const StepContext& ctx, Eigen::Ref<Eigen::VectorXd> r,
+                           Eigen::Ref<Eigen::VectorXd> magnitude) const = 0;
+
+  /// Adds the local tangent dr/d(unknowns) (num_local x num_local).
+  virtual void AddTangent(const StepContext& ctx, Eigen::Ref<Eigen::MatrixXd> J) const = 0;
+
+  /// Both at once, for elements that share work between them; J may be null (residual only). The default
+  /// calls AddResidual and AddTangent.
+  virtual void AddResidualAndTangent(const StepContext& ctx, Eigen::Ref<Eigen::VectorXd> r,
+                                     Eigen::Ref<Eigen::VectorXd> magnitude, Eigen::Ref<Eigen::MatrixXd>* J) const {
+    AddResidual(ctx, r, magnitude);
+    if (J != nullptr) AddTangent(ctx, *J);
+  }
+
+  /// Energy stored at a state (zero by default).
+  virtual void AddEnergy(const State&, const Vec3& /*gravity*/, EnergyTally*) const {}
+
+  /// Work done by the element over the converged step described by ctx (zero by default).
+  virtual void AddStepWork(const StepContext&, StepWork*) const {}
+
+ protected:
+  std::vector<int> unknowns_;
+};
+
+}  // namespace flexmbd

@@ -1,0 +1,39 @@
+#pragma once
+/// @file
+/// Small text helpers for the loader's error messages: number formatting, name lists and "did you mean"
+/// suggestions by edit distance.
+
+#include <string>
+#include <vector>
+
+#include "flexmbd/model/model_spec.hpp"
+
+namespace flexmbd {
+namespace io {
+
+/// Shortest decimal text that reads back as exactly `value` ("-3", "0.1", "1e-07").
+std::string FormatNumber(double value);
+
+/// "[x, y, z]" with FormatNumber entries.
+std::string FormatVector(const Vec3& value);
+
+/// "a, b, c" (names in the given order).
+std::string JoinNames(const std::vector<std::string>& names);
+
+/// Optimal-string-alignment distance: insertions, deletions, substitutions and adjacent transpositions.
+int EditDistance(const std::string& a, const std::string& b);
+
+/// The candidate nearest to `word`, if it is close enough to be a likely typo (distance at most
+/// max(1, ceil(|word| / 3))); empty otherwise. Ties go to the earlier candidate.
+std::string ClosestName(const std::string& word, const std::vector<std::string>& candidates);
+
+/// "did you mean 'dt'?" when a candidate is close to `word`, otherwise "<what> are: a, b, c".
+std::string SuggestName(const std::string& word, const std::vector<std::string>& candidates, const std::string& what);
+
+/// "no joint 'B7' in arm.urdf; joints are: B1, B2" plus "; did you mean 'B1'?" when one is close
+/// (kind "joint", kinds "joints").
+std::string NotFoundMessage(const std::string& kind, const std::string& kinds, const std::string& name,
+                            const std::string& where, const std::vector<std::string>& candidates);
+
+}  // namespace io
+}  // namespace flexmbd

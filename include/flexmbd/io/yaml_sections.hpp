@@ -1,0 +1,33 @@
+#pragma once
+/// @file
+/// Readers of the sections of the YAML extension parameters (docs/config.md). Each checks its keys against
+/// its own table, reads every value through yaml_fields.hpp and overwrites only what the YAML gives.
+
+#include <string>
+#include <vector>
+
+#include "flexmbd/io/urdf_reader.hpp"
+#include "flexmbd/io/yaml_fields.hpp"
+#include "flexmbd/model/model_spec.hpp"
+
+namespace flexmbd {
+namespace io {
+
+/// `joints:` a map from URDF joint names to joint settings (type, axes, pitch, effects, initial motion).
+void ReadJoints(const Field& joints, UrdfModel* model);
+
+/// `solver:` settings, then the consistency dt_min <= dt <= dt_max.
+void ReadSolver(const Field& solver, SolverSpec* spec);
+
+/// `output:` settings.
+void ReadOutput(const Field& output, OutputSpec* spec);
+
+/// `loads:` a list of forces and moments on bodies of `model`.
+void ReadLoads(const Field& loads, const UrdfModel& model, std::vector<LoadSpec>* specs);
+
+/// A time function: `law` (required) and the keys that law takes. Values are in `unit` (SI; "" for a plain
+/// factor) or, if `measure` is angular, in degrees under `<key>_deg`; `phase_deg` is always allowed.
+TimeFunctionSpec ReadTimeFunction(const Field& map, const std::string& unit, const Measure& measure);
+
+}  // namespace io
+}  // namespace flexmbd

@@ -1,0 +1,21 @@
+#pragma once
+/// @file
+/// Scalar time functions for drives and loads (docs/config.md, "time functions").
+
+#include "flexmbd/model/model_spec.hpp"
+
+namespace flexmbd {
+
+/// Value of f(t). Ramps hold `offset` before `start` and `value` after `start + duration`:
+/// linear ramp f = offset + (value - offset) s, smooth ramp f = offset + (value - offset)(1 - cos(pi s))/2,
+/// s = (t - start)/duration clipped to [0, 1]; sine f = offset + amplitude sin(2 pi frequency (t - start) + phase)
+/// for t >= start (offset + amplitude sin(phase) before); table: piecewise linear, held constant outside.
+double Evaluate(const TimeFunctionSpec& f, double t);
+
+/// First derivative df/dt (one-sided at the kinks of ramps and tables: the right derivative).
+double EvaluateRate(const TimeFunctionSpec& f, double t);
+
+/// Second derivative d2f/dt2 (zero on linear pieces).
+double EvaluateSecondRate(const TimeFunctionSpec& f, double t);
+
+}  // namespace flexmbd

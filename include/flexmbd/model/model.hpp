@@ -1,0 +1,75 @@
+#pragma once
+/// @file
+/// Model: what does not change during a run, frozen at build: nodes, elements, the unknown layout and the
+/// initial State. Unknowns are ordered [node increments (6 per node) | joint variables | multipliers].
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "flexmbd/effects/variable_effects.hpp"
+#include "flexmbd/elements/element.hpp"
+#include "flexmbd/elements/rigid_body.hpp"
+#include "flexmbd/joints/joint.hpp"
+#include "flexmbd/model/model_spec.hpp"
+#include "flexmbd/model/state.hpp"
+
+namespace flexmbd {
+
+/// A rigid body as the user named it: its node sits at the centre of mass.
+struct BodyInfo {
+  std::string name;
+  int node = -1;
+  Vec3 p_NBo_N = Vec3::Zero();  ///< body (link) frame origin relative to the node, in the node frame [m]
+};
+
+class Model {
+ public:
+  int num_nodes() const { return num_nodes_; }
+  int num_variables() const { return num_variables_; }
+  int num_multipliers() const { return num_multipliers_; }
+  int num_unknowns() const { return 6 * num_nodes_ + num_variables_ + num_multipliers_; }
+  int node_unknown(int node) const { return 6 * node; }
+  int variable_unknown(int variable) const { return 6 * num_nodes_ + variable; }
+  int multiplier_unknown(int multiplier) const { return 6 * num_nodes_ + num_variables_ + multiplier; }
+  /// True for rows that are generalised-force balances (node and variable unknowns), false for constraints.
+  bool is_force_row(int unknown) const { return unknown < 6 * num_nodes_ + num_variables_; }
+
+  const std::vector<std::unique_ptr<Element>>& elements() const { return elements_; }
+  const std::vector<const Joint*>& joints() const { return joints_; }
+  const std::vector<const RigidBody*>& rigid_bodies() const { return rigid_bodies_; }
+  const std::vector<BodyInfo>& bodies() const { return bodies_; }
+  /// Name of each joint variable: the joint name, with "/k" appended for the k-th of several.
+  const std::vector<std::string>& variable_names() const { return variable_names_; }
+
+  const SolverSpec& solver() const { return solver_; }
+  const OutputSpec& output() const { return output_; }
+  const State& initial_state() const { return initial_state_; }
+  const std::string& source() const { return source_; }
+  /// Largest node distance from the origin in the initial state, at least 1 [m]: the scale of round-off.
+  double length_scale() const { return length_scale_; }
+
+  /// Human-readable name of an unknown, e.g. "body link1 rot_y" or "joint B1 constraint 3".
+  std::string DescribeUnknown(int unknown) const;
+
+ private:
+  friend Model BuildModel(const ModelSpec& spec);
+  int num_nodes_ = 0, num_variables_ = 0, num_multipliers_ = 0;
+  std::vector<std::unique_ptr<Element>> elements_;
+  std::vector<const Joint*> joints_;
+  std::vector<const RigidBody*> rigid_bodies_;
+  std::vector<BodyInfo> bodies_;
+  std::vector<std::string> variable_names_;
+  std::vector<std::string> multiplier_names_;
+  SolverSpec solver_;
+  OutputSpec output_;
+  State initial_state_;
+  std::string source_;
+  double length_scale_ = 1.0;
+};
+
+/// Builds and validates a Model. Throws ConfigError for inconsistent input (unknown body names, non-positive
+/// mass, initial poses that violate a joint, a drive whose f(0) differs from the initial position).
+Model BuildModel(const ModelSpec& spec);
+
+}  // namespace flexmbd

@@ -1,0 +1,139 @@
+#pragma once
+/// @file
+/// Plain-data description of a mechanism, produced by the loader (URDF + YAML) or written by hand in
+/// tests, and turned into a frozen Model by BuildModel(). No behaviour lives here.
+
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+
+namespace flexmbd {
+
+using Vec3 = Eigen::Vector3d;
+using Mat3 = Eigen::Matrix3d;
+
+/// A time function f(t), used by drives and applied loads (docs/config.md, "time functions").
+struct TimeFunctionSpec {
+  enum class Kind { kConstant, kLinearRamp, kCosineRamp, kSine, kTable };
+  Kind kind = Kind::kConstant;
+  double value = 0.0;      ///< constant value, or the value reached by a ramp (SI units of the driven quantity)
+  double start = 0.0;      ///< time at which a ramp or sine begins [s]
+  double duration = 1.0;   ///< ramp duration [s]
+  double offset = 0.0;     ///< value before the ramp starts, and mean of the sine
+  double amplitude = 0.0;  ///< sine amplitude
+  double frequency = 0.0;  ///< sine frequency [Hz]
+  double phase = 0.0;      ///< sine phase [rad]
+  std::vector<double> times;   ///< table abscissae [s], strictly increasing
+  std::vector<double> values;  ///< table ordinates, same size as times
+};
+
+/// A rigid body. Its reference frame B is the URDF link frame; the solver places its node at the centre of mass.
+struct BodySpec {
+  std::string name;
+  double mass = 0.0;                           ///< [kg]
+  Mat3 inertia_cm_B = Mat3::Zero();            ///< inertia tensor about the centre of mass, in B [kg m^2]
+  Vec3 p_BoBcm_B = Vec3::Zero();               ///< centre of mass offset from the B origin, in B [m]
+  Vec3 p_WB = Vec3::Zero();                    ///< initial position of the B origin in the world [m]
+  Mat3 R_WB = Mat3::Identity();                ///< initial orientation of B in the world
+  Vec3 v_WBo_W = Vec3::Zero();                 ///< initial velocity of the B origin, in W [m/s]
+  Vec3 w_WB_W = Vec3::Zero();                  ///< initial angular velocity of B, in W [rad/s]
+};
+
+/// Joint types; each has the relative-motion variables listed in docs/theory.md.
+enum class JointType { kRevolute, kPrismatic, kCylindrical, kScrew, kPlanar, kSpherical, kUniversal, kFixed };
+
+/// A linear spring on one relative-motion variable: Q = -k (q - rest).
+struct SpringSpec {
+  double stiffness = 0.0;  ///< [N m/rad] or [N/m]
+  double rest = 0.0;       ///< [rad] or [m]
+};
+
+/// A viscous damper on one relative-motion variable: Q = -c qdot.
+struct DamperSpec {
+  double coefficient = 0.0;  ///< [N m s/rad] or [N s/m]
+};
+
+/// Effects acting on one relative-motion variable of a joint.
+struct VariableEffectsSpec {
+  std::vector<SpringSpec> springs;
+  std::vector<DamperSpec> dampers;
+  std::vector<TimeFunctionSpec> drives;  ///< at most one: the variable then follows f(t) exactly
+};
+
+/// A joint between a frame J_P on the parent body (or the world) and a frame J_C on the child body.
+/// At zero relative motion the two frames coincide.
+struct JointSpec {
+  std::string name;
+  JointType type = JointType::kRevolute;
+  std::string parent;                           ///< parent body name; empty for the world
+  std::string child;                            ///< child body name
+  Vec3 p_PJ = Vec3::Zero();                     ///< joint frame origin in the parent frame [m]
+  Mat3 R_PJ = Mat3::Identity();                 ///< joint frame orientation in the parent frame
+  Vec3 p_CJ = Vec3::Zero();                     ///< joint frame origin in the child frame [m]
+  Mat3 R_CJ = Mat3::Identity();                 ///< joint frame orientation in the child frame
+  Vec3 axis_J = Vec3::UnitZ();                  ///< motion axis in the joint frame (normal for planar)
+  Vec3 axis2_J = Vec3::UnitX();                 ///< second axis of a universal joint, in the joint frame
+  double pitch = 0.0;                           ///< screw pitch [m/rev]
+  std::vector<double> initial_position;         ///< initial relative motion, one per variable [rad or m]
+  std::vector<double> initial_velocity;         ///< initial relative rate, one per variable [rad/s or m/s]
+  std::vector<VariableEffectsSpec> effects;     ///< one entry per variable (may be empty)
+};
+
+/// A force or moment applied to a body, scaled by a time function.
+struct LoadSpec {
+  enum class Kind { kForce, kMoment };
+  enum class Frame { kWorld, kBody };  ///< kWorld: dead load; kBody: follower load
+  std::string body;
+  Kind kind = Kind::kForce;
+  Frame frame = Frame::kWorld;
+  Vec3 vector = Vec3::Zero();           ///< [N] or [N m], in the chosen frame
+  Vec3 p_BoP_B = Vec3::Zero();          ///< point of application of a force, in B [m]
+  TimeFunctionSpec scale;               ///< multiplies vector; constant 1 by default
+  LoadSpec() { scale.value = 1.0; }
+};
+
+/// Solver settings (docs/config.md, "solver").
+struct SolverSpec {
+  enum class Analysis { kDynamic, kStatic };
+  enum class Integrator { kEnergyDecaying, kEnergyPreserving };
+  Analysis analysis = Analysis::kDynamic;
+  Integrator integrator = Integrator::kEnergyDecaying;
+  double rho_inf = 0.6;            ///< high-frequency velocity amplification of the energy-decaying scheme, in [0, 1]
+  double t_end = 1.0;              ///< [s]
+  double dt = 1.0e-2;              ///< initial (and, without adaptivity, fixed) step [s]
+  double dt_min = 1.0e-7;          ///< [s]
+  double dt_max = 0.1;             ///< [s]
+  bool adaptive = true;            ///< adapt the step to the local error estimate
+  double tol = 1.0e-6;             ///< Newton relative tolerance
+  double error_tol = 1.0e-4;       ///< local error target per step, relative
+  int max_iterations = 20;         ///< Newton iterations per step
+  int load_steps = 10;             ///< load increments of the static analysis
+  bool static_first = false;       ///< run a static analysis and start the dynamics from it
+  Vec3 gravity = Vec3(0.0, 0.0, -9.81);  ///< [m/s^2]
+};
+
+/// Output settings (docs/config.md, "output").
+struct OutputSpec {
+  double rate_hz = 100.0;  ///< sample rate; 0 writes every accepted step
+  std::string csv;         ///< CSV path; empty for none
+  std::string bag;         ///< bag path; empty for none
+};
+
+/// The whole mechanism and its run settings.
+struct ModelSpec {
+  std::string source;  ///< where it came from (file names), used in messages
+  std::vector<BodySpec> bodies;
+  std::vector<JointSpec> joints;
+  std::vector<LoadSpec> loads;
+  SolverSpec solver;
+  OutputSpec output;
+};
+
+/// Number of relative-motion variables of a joint type.
+int NumJointVariables(JointType type);
+
+/// Lower-case name of a joint type as written in YAML ("revolute", ...).
+const char* JointTypeName(JointType type);
+
+}  // namespace flexmbd

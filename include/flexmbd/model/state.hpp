@@ -1,0 +1,41 @@
+#pragma once
+/// @file
+/// State: the minimal copyable set that fixes the future of a run. Copying a State undoes a rejected step.
+
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "flexmbd/math/so3.hpp"
+
+namespace flexmbd {
+
+/// Kinematic state of one node (3 displacements and a finite rotation).
+struct NodeState {
+  Vec3 x = Vec3::Zero();            ///< position in W [m]
+  Mat3 R = Mat3::Identity();        ///< orientation R_WN
+  Vec3 v = Vec3::Zero();            ///< velocity in W [m/s]
+  Vec3 w = Vec3::Zero();            ///< angular velocity, in the node frame [rad/s]
+  Vec3 a_prev = Vec3::Zero();       ///< mean linear acceleration over the last accepted step, in W [m/s^2]
+  Vec3 alpha_prev = Vec3::Zero();   ///< mean angular acceleration over the last accepted step, node frame [rad/s^2]
+  Vec3 a_prev2 = Vec3::Zero();      ///< a_prev of the step before [m/s^2]
+  Vec3 alpha_prev2 = Vec3::Zero();  ///< alpha_prev of the step before [rad/s^2]
+};
+
+/// Everything that changes during a run.
+struct State {
+  double t = 0.0;                   ///< time [s]
+  std::vector<NodeState> nodes;     ///< (num_nodes)
+  Eigen::VectorXd q;                ///< joint relative-motion variables [rad or m] (num_variables)
+  Eigen::VectorXd qdot;             ///< their rates [rad/s or m/s] (num_variables)
+  Eigen::VectorXd lambda;           ///< constraint multipliers [N, N m] (num_multipliers)
+  int history_steps = 0;            ///< accepted steps whose accelerations are in a_prev (0, 1 or 2+)
+  double h_prev = 0.0;              ///< size of the last accepted step [s]
+  double peak_speed = 0.0;          ///< largest node speed so far [m/s]: scale of the local error test
+  double peak_spin = 0.0;           ///< largest node angular speed so far [rad/s]
+  double external_work = 0.0;       ///< work of applied loads and drives since t = 0 [J]
+  double dissipated_physical = 0.0; ///< energy dissipated by dampers since t = 0 [J]
+  double dissipated_numerical = 0.0;///< energy removed by the integrator's dissipation since t = 0 [J]
+};
+
+}  // namespace flexmbd

@@ -1,0 +1,69 @@
+#pragma once
+/// @file
+/// The energy-decaying time step (docs/theory.md, section "Time integration", eqs. (T3)-(T6)). For each node
+///   x_f - x_i = h [(v_i + v_f)/2 + a (v_f - v_i - h a_prev)],   and the same for theta and w,
+/// where a_prev is the previous step's mean acceleration, so the added term is O(h^3) on smooth motion and the
+/// scheme stays second order. Forces use exact discrete gradients and constraints hold at the end of the step,
+/// so for a conservative system
+///   E_f - E_i = - a m (v_f - v_i - h a_prev) . (v_f - v_i) - (same for rotation with J).
+/// a is alpha_inf where that product is >= 0 and 0 where it is not (the step is redone with a = 0 for a node
+/// whose product turns out negative), so the energy never increases. alpha_inf = 0 is energy preserving.
+
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "flexmbd/solver/newton.hpp"
+#include "flexmbd/solver/step_context_builder.hpp"
+
+namespace flexmbd {
+
+class Model;
+class SparseSystem;
+
+/// Outcome of one attempted step.
+enum class StepStatus { kAccepted, kRejectedError, kNewtonDiverged, kSingularMatrix };
+const char* StepStatusName(StepStatus status);
+
+struct StepResult {
+  StepStatus status = StepStatus::kAccepted;
+  double error = 0;  ///< local error estimate relative to the target (accept if <= 1)
+  NewtonReport newton;
+};
+
+/// alpha_inf of the scheme from the high-frequency velocity amplification rho_inf in [kMinRhoInf, 1].
+constexpr double kMinRhoInf = 1.0 / 3.0;
+double DissipationFromRhoInf(double rho_inf);
+
+class Integrator {
+ public:
+  Integrator(const Model& model, SparseSystem* system);
+
+  /// Attempts a step of size h from `start`. On kAccepted (or kRejectedError, for the caller to decide)
+  /// `end` holds the converged end state.
+  StepResult Step(const State& start, double h, State* end);
+
+  /// The context of the last converged step (for outputs such as joint efforts).
+  const StepContext& last_context() const { return builder_.context(); }
+
+ private:
+  std::vector<NodeSchemeCoefficients> Coefficients(const State& start) const;
+  // Turns off the dissipation of nodes whose converged step would gain energy; true if any was turned off.
+  bool DropEnergyGainingDissipation(const State& start, double h, std::vector<NodeSchemeCoefficients>* c) const;
+  Eigen::VectorXd Predict(const State& start, double h) const;
+  void Commit(const State& start, const Eigen::VectorXd& unknowns, double h,
+              const std::vector<NodeSchemeCoefficients>& coefficients, State* end);
+  // Local error estimate of the step that led to `end`, relative to the target; h_before is the size of the
+  // step before it.
+  double ErrorEstimate(const State& end, double h_before) const;
+  double NoiseFloor(const State& start) const;
+
+  const Model& model_;
+  SparseSystem* system_;
+  StepContextBuilder builder_;
+  double alpha_inf_;
+  std::vector<Mat3> node_inertia_;  ///< rotational inertia of each node's body, weights the dissipation check
+};
+
+}  // namespace flexmbd

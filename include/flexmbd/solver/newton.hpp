@@ -1,0 +1,41 @@
+#pragma once
+/// @file
+/// Newton iteration shared by static and dynamic analyses. Converged when the force rows are small relative
+/// to the magnitude of the forces that make them up, the constraint rows are below kConstraintTolerance,
+/// and the last increment of the kinematic unknowns is small.
+
+#include <functional>
+
+#include <Eigen/Core>
+
+#include "flexmbd/elements/element.hpp"
+
+namespace flexmbd {
+
+class Model;
+class SparseSystem;
+
+/// Constraints hold to this absolute accuracy at every converged step [m or rad].
+constexpr double kConstraintTolerance = 1.0e-11;
+
+struct NewtonReport {
+  bool converged = false;
+  bool singular = false;
+  int iterations = 0;
+  double force_residual = 0;       ///< relative, at the last evaluation
+  double constraint_residual = 0;  ///< [m or rad]
+  int worst_unknown = -1;          ///< row with the largest scaled residual
+};
+
+/// Round-off of a configuration with coordinates up to `magnitude` [m or rad]: increments below it are noise.
+double RoundOffFloor(double magnitude);
+
+/// @param noise_floor increments below this are round-off (see RoundOffFloor) whatever the tolerance.
+/// @param evaluate builds the StepContext for the current trial unknowns at a given iteration (1-based).
+/// @param apply applies a Newton increment to the trial unknowns and returns the size (max norm) of the
+/// kinematic part of the motion it is relative to, against which increments are judged small.
+NewtonReport SolveNewton(const Model& model, SparseSystem* system, double tol, int max_iterations, double noise_floor,
+                         const std::function<const StepContext&(int iteration)>& evaluate,
+                         const std::function<double(const Eigen::VectorXd& increment)>& apply);
+
+}  // namespace flexmbd

@@ -1,0 +1,38 @@
+#pragma once
+/// @file
+/// One output sample: what every sink (CSV, bag, topics) receives. One conversion, several sinks.
+
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "flexmbd/elements/element.hpp"
+
+namespace flexmbd {
+
+class Model;
+
+struct OutputSample {
+  double t = 0;                  ///< [s]
+  Eigen::VectorXd position;      ///< joint variables [rad or m] (num_variables)
+  Eigen::VectorXd velocity;      ///< their rates [rad/s or m/s]
+  Eigen::VectorXd effort;        ///< force transmitted along each variable by its spring, damper and drive [N m or N]
+  std::vector<Vec3> reaction_force_W;   ///< per joint: force on the child from the parent, in W [N]
+  std::vector<Vec3> reaction_moment;    ///< per joint: rotational multipliers (moment on the child) [N m]
+  double kinetic = 0;            ///< [J]
+  double potential = 0;          ///< gravity and springs [J]
+  double external_work = 0;      ///< cumulative work of applied loads and drives [J]
+  double dissipated = 0;         ///< cumulative energy dissipated by dampers [J]
+  double numerical_dissipation = 0;  ///< cumulative energy removed by the integrator [J]
+  double dt = 0;                 ///< size of the step that produced the sample [s]
+  int iterations = 0;            ///< Newton iterations of that step
+  double total() const { return kinetic + potential; }
+};
+
+/// The sample at a state; efforts and reactions come from the multipliers evaluated in `ctx`.
+OutputSample MakeSample(const Model& model, const State& state, const StepContext& ctx, double dt, int iterations);
+
+/// Linear interpolation between two samples at time t in [a.t, b.t].
+OutputSample Interpolate(const OutputSample& a, const OutputSample& b, double t);
+
+}  // namespace flexmbd

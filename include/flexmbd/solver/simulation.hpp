@@ -1,0 +1,53 @@
+#pragma once
+/// @file
+/// Runs an analysis on a Model: static equilibrium, time stepping with the step controller, output samples
+/// at the configured rate (interpolated inside accepted steps, so the output rate never limits the step).
+
+#include <functional>
+#include <memory>
+
+#include "flexmbd/model/model.hpp"
+#include "flexmbd/solver/integrator.hpp"
+#include "flexmbd/solver/output_sample.hpp"
+#include "flexmbd/solver/sparse_system.hpp"
+#include "flexmbd/solver/static_solver.hpp"
+#include "flexmbd/solver/step_controller.hpp"
+
+namespace flexmbd {
+
+class Simulation {
+ public:
+  using SampleSink = std::function<void(const OutputSample&)>;
+
+  explicit Simulation(const Model& model);
+
+  /// Runs what the model's solver settings ask for (static, or dynamic with an optional static start),
+  /// passing every output sample to `sink`. Throws SolverError when the run cannot go on.
+  void Run(const SampleSink& sink);
+
+  /// Static equilibrium from the current state. Throws SolverError if Newton fails.
+  StaticResult SolveStaticEquilibrium();
+
+  /// Time stepping from the current state to t_end.
+  void Integrate(double t_end, const SampleSink& sink);
+
+  /// Attempts one step of size h; on acceptance the state advances. Books the outcome.
+  StepResult TryStep(double h);
+
+  const State& state() const { return state_; }
+  const Model& model() const { return model_; }
+  const StepStatistics& statistics() const { return controller_.statistics(); }
+  const SparseSystem& system() const { return system_; }
+
+ private:
+  OutputSample SampleAtState(double dt, int iterations);
+  [[noreturn]] void Fail(const char* what, double h, const StepResult& last) const;
+
+  const Model& model_;
+  State state_;
+  SparseSystem system_;
+  Integrator integrator_;
+  StepController controller_;
+};
+
+}  // namespace flexmbd

@@ -1,0 +1,58 @@
+#pragma once
+/// @file
+/// The iteration matrix in compressed-column form with a pattern fixed at construction, a map from each
+/// element's local entries to their positions (assembly does not allocate), and its KLU factorisation:
+/// one symbolic analysis, then a numeric refactorisation per Newton iteration.
+
+#include <memory>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "flexmbd/elements/element.hpp"
+
+namespace flexmbd {
+
+class Model;
+
+class SparseSystem {
+ public:
+  explicit SparseSystem(const Model& model);
+  ~SparseSystem();
+  SparseSystem(const SparseSystem&) = delete;
+  SparseSystem& operator=(const SparseSystem&) = delete;
+
+  /// Residual and per-row magnitude of its terms for the context; the tangent too when asked.
+  void Assemble(const StepContext& ctx, bool with_tangent);
+
+  const Eigen::VectorXd& residual() const { return residual_; }
+  const Eigen::VectorXd& magnitude() const { return magnitude_; }
+
+  /// Factorises the last assembled tangent and solves J dx = -residual. Returns false if singular.
+  bool Solve(Eigen::VectorXd* dx);
+
+  int num_nonzeros() const { return static_cast<int>(values_.size()); }
+
+  /// Time spent in assembly, factorisation and solve since construction [s].
+  struct Timing {
+    double assembly = 0, factorisation = 0, solve = 0;
+  };
+  const Timing& timing() const { return timing_; }
+
+ private:
+  bool Factorise();
+
+  const Model& model_;
+  int n_;
+  std::vector<int> column_start_, row_index_;
+  std::vector<double> values_;
+  std::vector<std::vector<int>> scatter_;  ///< per element: position of local (i, j) at i * n_local + j
+  Eigen::VectorXd residual_, magnitude_;
+  Eigen::VectorXd local_r_, local_m_;
+  Eigen::MatrixXd local_J_;
+  struct KluFactorisation;
+  std::unique_ptr<KluFactorisation> klu_;
+  Timing timing_;
+};
+
+}  // namespace flexmbd

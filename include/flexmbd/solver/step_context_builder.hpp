@@ -1,0 +1,45 @@
+#pragma once
+/// @file
+/// Turns a start State and a trial vector of unknowns into the StepContext that elements read.
+
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "flexmbd/elements/element.hpp"
+
+namespace flexmbd {
+
+class Model;
+
+class StepContextBuilder {
+ public:
+  explicit StepContextBuilder(const Model& model);
+
+  /// A dynamic step from `start` over h; `unknowns` holds (node increments, dq, lambda).
+  const StepContext& Dynamic(const State& start, const Eigen::VectorXd& unknowns, double h,
+                             const std::vector<NodeSchemeCoefficients>& coefficients);
+
+  /// Static equilibrium at `iterate` moved by the increments in `unknowns` (lambda taken from there too),
+  /// at time t with the given load factor.
+  const StepContext& Static(const State& iterate, const Eigen::VectorXd& unknowns, double t, double load_factor);
+
+  /// The state itself, as a static evaluation with no increment (for constraint checks and outputs).
+  const StepContext& AtState(const State& state);
+
+  const StepContext& context() const { return ctx_; }
+
+  /// Whether the contexts built next ask for the geometric stiffness of constraint forces.
+  void set_geometric_stiffness(bool on) { ctx_.geometric_stiffness = on; }
+
+ private:
+  void Fill(const State& start, const Eigen::VectorXd& unknowns, AnalysisMode mode);
+
+  const Model& model_;
+  std::vector<NodeStep> nodes_;
+  std::vector<VariableStep> variables_;
+  Eigen::VectorXd lambda_;
+  StepContext ctx_;
+};
+
+}  // namespace flexmbd

@@ -1,0 +1,39 @@
+#pragma once
+/// @file
+/// Step-size policy, separate from the integrator: shrinks after a rejection, follows the local error
+/// estimate otherwise, and keeps the books (steps accepted, rejected and why).
+
+#include <string>
+
+#include "flexmbd/model/model_spec.hpp"
+#include "flexmbd/solver/integrator.hpp"
+
+namespace flexmbd {
+
+struct StepStatistics {
+  long accepted = 0;
+  long rejected_error = 0;
+  long rejected_newton = 0;
+  long rejected_singular = 0;
+  long newton_iterations = 0;  ///< over all attempted steps
+  double h_min = 0, h_max = 0; ///< smallest and largest accepted step [s]
+  long rejected() const { return rejected_error + rejected_newton + rejected_singular; }
+  /// One line: "steps: N accepted, M rejected (a error, b Newton, c singular); ...".
+  std::string Summary() const;
+};
+
+class StepController {
+ public:
+  explicit StepController(const SolverSpec& solver);
+
+  /// Books the outcome of a step of size h and returns the size of the next attempt [s].
+  double Next(double h, const StepResult& result);
+
+  const StepStatistics& statistics() const { return stats_; }
+
+ private:
+  SolverSpec solver_;
+  StepStatistics stats_;
+};
+
+}  // namespace flexmbd

@@ -1,0 +1,38 @@
+#!/usr/bin/env bash
+# Builds flexmbd (Release) in a catkin workspace outside the source tree:
+#   ${FLEXMBD_WS:-$HOME/flexmbd_ws}/src/flexmbd -> this repository.
+# Re-running it rebuilds incrementally. Extra arguments go to catkin_make (e.g. a make target:
+# `build.sh run_tests`).
+set -euo pipefail
+source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
+
+command -v catkin_make >/dev/null 2>&1 || die "catkin_make not found; run scripts/install_deps.sh first"
+
+[[ "${FLEXMBD_WS}" != / ]] || die "FLEXMBD_WS must not be /"
+case "${FLEXMBD_WS}/" in
+  "${FLEXMBD_REPO_ROOT}/"*) die "workspace ${FLEXMBD_WS} is inside the repository ${FLEXMBD_REPO_ROOT}; set FLEXMBD_WS elsewhere" ;;
+esac
+mkdir -p "${FLEXMBD_WS}/src" || die "cannot create workspace ${FLEXMBD_WS}"
+
+link="${FLEXMBD_WS}/src/flexmbd"
+if [[ -L "${link}" ]]; then
+  previous="$(readlink "${link}")"
+  if [[ "${previous}" != "${FLEXMBD_REPO_ROOT}" ]]; then
+    # Object files built from another checkout may be newer than this checkout's sources and
+    # would not be rebuilt: start the build over.
+    echo "build: workspace was built from ${previous}; switching to ${FLEXMBD_REPO_ROOT} (full rebuild)"
+    rm -rf "${FLEXMBD_WS:?}/build" "${FLEXMBD_WS:?}/devel"
+    ln -sfn "${FLEXMBD_REPO_ROOT}" "${link}"
+  fi
+elif [[ -e "${link}" ]]; then
+  die "${link} exists and is not a symlink; move it away or set FLEXMBD_WS to another directory"
+else
+  ln -s "${FLEXMBD_REPO_ROOT}" "${link}"
+fi
+
+echo "build: workspace ${FLEXMBD_WS} (src/flexmbd -> ${FLEXMBD_REPO_ROOT})"
+cd "${FLEXMBD_WS}"
+if ! catkin_make -DCMAKE_BUILD_TYPE=Release -DPYTHON_EXECUTABLE=/usr/bin/python3 -j2 "$@" </dev/null; then
+  die "catkin_make $* failed in ${FLEXMBD_WS} (see the compiler output above)"
+fi
+echo "build: done (${FLEXMBD_WS}/devel)"

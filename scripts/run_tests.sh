@@ -1,0 +1,51 @@
+#!/usr/bin/env bash
+# Installs what is missing, builds flexmbd, builds and runs every test (gtest and rostest) and
+# prints the per-suite results. The last line is `N passed, M failed`.
+# Exits non-zero when the build failed, a test failed or errored, or no test ran.
+set -euo pipefail
+source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
+scripts="${FLEXMBD_REPO_ROOT}/scripts"
+
+bash "${scripts}/install_deps.sh"
+
+failed_steps=()
+bash "${scripts}/build.sh" || failed_steps+=("build")
+
+results="${FLEXMBD_WS}/build/test_results"
+rm -rf "${results}"
+make_targets=""
+if [[ -f "${FLEXMBD_WS}/build/Makefile" ]]; then
+  make_targets="$(make -C "${FLEXMBD_WS}/build" help 2>/dev/null || true)"
+fi
+if [[ -z "${make_targets}" ]]; then
+  failed_steps+=("configuring the workspace")
+elif ! grep -qx '\.\.\. run_tests_flexmbd' <<<"${make_targets}"; then
+  failed_steps+=("finding tests: CMake defined no test target (run_tests_flexmbd)")
+else
+  # run_tests_flexmbd runs each test once its own executable is built (catkin's plain run_tests
+  # first builds every test executable), and -k goes on past a test that does not compile, so one
+  # broken test file does not hide the results of the others. Old results were removed above.
+  bash "${scripts}/build.sh" run_tests_flexmbd -k || failed_steps+=("building or running the tests")
+fi
+
+echo
+echo "Test results (${results}):"
+if ((${#failed_steps[@]} > 0)); then
+  printf 'error: run_tests.sh: failed step: %s\n' "${failed_steps[@]}" >&2
+fi
+# catkin names each test's target run_tests_flexmbd_<type>_<name> and its result <type>-<name>.xml
+# (a rostest's <name> keeps its .test extension in the target, not in the result);
+# a test whose result is missing (its executable did not build) is counted as failed.
+expected_suites=()
+while read -r target; do
+  suite="${target#run_tests_flexmbd_}"
+  if [[ "${suite}" == *_* ]]; then
+    expected_suites+=("${suite/_/-}")
+  fi
+done < <(sed -n 's/^\.\.\. \(run_tests_flexmbd_[^ ]*\)$/\1/p' <<<"${make_targets}")
+summary_status=0
+/usr/bin/python3 "${scripts}/summarize_test_results.py" "${results}" "${expected_suites[@]}" || summary_status=$?
+
+if ((${#failed_steps[@]} > 0 || summary_status != 0)); then
+  exit 1
+fi

@@ -1,0 +1,79 @@
+#include "flexmbd/effects/variable_effects.hpp"
+
+#include <cmath>
+
+#include "flexmbd/math/time_function.hpp"
+
+namespace flexmbd {
+
+VariableSpring::VariableSpring(int variable, int variable_unknown, double stiffness, double rest)
+    : variable_(variable), stiffness_(stiffness), rest_(rest) {
+  unknowns_ = {variable_unknown};
+}
+
+void VariableSpring::AddResidual(const StepContext& ctx, Eigen::Ref<Eigen::VectorXd> r,
+                                 Eigen::Ref<Eigen::VectorXd> magnitude) const {
+  const VariableStep& q = (*ctx.variables)[variable_];
+  const double force = stiffness_ * (0.5 * (q.q_i + q.q_f) - rest_);
+  r[0] += force;
+  magnitude[0] += std::abs(force);
+}
+
+void VariableSpring::AddTangent(const StepContext& ctx, Eigen::Ref<Eigen::MatrixXd> J) const {
+  J(0, 0) += ctx.mid_rate() * stiffness_;
+}
+
+void VariableSpring::AddEnergy(const State& state, const Vec3&, EnergyTally* tally) const {
+  const double stretch = state.q[variable_] - rest_;
+  tally->potential += 0.5 * stiffness_ * stretch * stretch;
+}
+
+VariableDamper::VariableDamper(int variable, int variable_unknown, double coefficient)
+    : variable_(variable), coefficient_(coefficient) {
+  unknowns_ = {variable_unknown};
+}
+
+void VariableDamper::AddResidual(const StepContext& ctx, Eigen::Ref<Eigen::VectorXd> r,
+                                 Eigen::Ref<Eigen::VectorXd> magnitude) const {
+  if (ctx.mode == AnalysisMode::kStatic) return;
+  const VariableStep& q = (*ctx.variables)[variable_];
+  const double force = coefficient_ * (q.q_f - q.q_i) / ctx.h;
+  r[0] += force;
+  magnitude[0] += std::abs(force);
+}
+
+void VariableDamper::AddTangent(const StepContext& ctx, Eigen::Ref<Eigen::MatrixXd> J) const {
+  if (ctx.mode == AnalysisMode::kDynamic) J(0, 0) += coefficient_ / ctx.h;
+}
+
+void VariableDamper::AddStepWork(const StepContext& ctx, StepWork* work) const {
+  const VariableStep& q = (*ctx.variables)[variable_];
+  const double dq = q.q_f - q.q_i;
+  work->dissipated += coefficient_ * dq * dq / ctx.h;
+}
+
+VariableDrive::VariableDrive(int variable, int variable_unknown, int multiplier, int multiplier_unknown,
+                             TimeFunctionSpec law)
+    : variable_(variable), multiplier_(multiplier), law_(std::move(law)) {
+  unknowns_ = {variable_unknown, multiplier_unknown};
+}
+
+void VariableDrive::AddResidual(const StepContext& ctx, Eigen::Ref<Eigen::VectorXd> r,
+                                Eigen::Ref<Eigen::VectorXd> magnitude) const {
+  const double lambda = (*ctx.lambda)[multiplier_];
+  r[0] += lambda;
+  magnitude[0] += std::abs(lambda);
+  r[1] += (*ctx.variables)[variable_].q_f - Evaluate(law_, ctx.t_f);
+}
+
+void VariableDrive::AddTangent(const StepContext&, Eigen::Ref<Eigen::MatrixXd> J) const {
+  J(0, 1) += 1.0;
+  J(1, 0) += 1.0;
+}
+
+void VariableDrive::AddStepWork(const StepContext& ctx, StepWork* work) const {
+  const VariableStep& q = (*ctx.variables)[variable_];
+  work->external -= (*ctx.lambda)[multiplier_] * (q.q_f - q.q_i);
+}
+
+}  // namespace flexmbd

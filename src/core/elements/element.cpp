@@ -1,0 +1,55 @@
+#include "flexmbd/elements/element.hpp"
+
+namespace flexmbd {
+
+NodeStep MakeNodeStep(const NodeState& start, const Vec6& increment, AnalysisMode mode) {
+  NodeStep n;
+  const Vec3 dx = increment.head<3>();
+  const Vec3 theta = increment.tail<3>();
+  n.v_i = n.v_f = n.w_i = n.w_f = Vec3::Zero();
+  if (mode == AnalysisMode::kStatic) {
+    n.x_i = n.x_f = start.x + dx;
+    n.R_i = n.R_f = start.R * Exp(theta);
+    n.dx = n.theta = Vec3::Zero();
+    n.S = n.T = Mat3::Identity();
+    return n;
+  }
+  n.x_i = start.x;
+  n.x_f = start.x + dx;
+  n.dx = dx;
+  n.R_i = start.R;
+  n.theta = theta;
+  n.R_f = start.R * Exp(theta);
+  n.S = SecantOperator(theta);
+  n.T = RightJacobian(theta);
+  return n;
+}
+
+void SetNodeStepVelocities(const NodeState& start, double h, const NodeSchemeCoefficients& c, NodeStep* n) {
+  n->v_i = start.v;
+  n->w_i = start.w;
+  // Scheme relation (theory eq. (T3)) solved for the end velocities.
+  const double at = c.alpha_translation, ar = c.alpha_rotation;
+  const double bt = 0.5 + at, br = 0.5 + ar;
+  n->v_f = (n->dx / h - (0.5 - at) * n->v_i + at * h * start.a_prev) / bt;
+  n->w_f = (n->theta / h - (0.5 - ar) * n->w_i + ar * h * start.alpha_prev) / br;
+  n->dvf_ddx = 1.0 / (h * bt);
+  n->dwf_dtheta = 1.0 / (h * br);
+}
+
+NodeStep PerturbNodeStep(const NodeStep& node, const Vec6& d, AnalysisMode mode) {
+  NodeState start;
+  Vec6 increment = d;
+  if (mode == AnalysisMode::kStatic) {
+    start.x = node.x_f;
+    start.R = node.R_f;
+  } else {
+    start.x = node.x_i;
+    start.R = node.R_i;
+    increment.head<3>() += node.dx;
+    increment.tail<3>() += node.theta;
+  }
+  return MakeNodeStep(start, increment, mode);
+}
+
+}  // namespace flexmbd

@@ -1,0 +1,52 @@
+#include "flexmbd/math/time_function.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "flexmbd/common/error.hpp"
+
+namespace flexmbd {
+namespace {
+// Derivative order 0, 1 or 2 of f at t.
+double Derivative(const TimeFunctionSpec& f, double t, int order) {
+  using Kind = TimeFunctionSpec::Kind;
+  switch (f.kind) {
+    case Kind::kConstant:
+      return order == 0 ? f.value : 0.0;
+    case Kind::kLinearRamp:
+    case Kind::kCosineRamp: {
+      const double s = (t - f.start) / f.duration;
+      const double span = f.value - f.offset;
+      if (s < 0.0 || s >= 1.0) return order == 0 ? (s < 0.0 ? f.offset : f.value) : 0.0;
+      if (f.kind == Kind::kLinearRamp) return order == 0 ? f.offset + span * s : order == 1 ? span / f.duration : 0.0;
+      const double w = M_PI / f.duration;
+      if (order == 0) return f.offset + 0.5 * span * (1.0 - std::cos(M_PI * s));
+      if (order == 1) return 0.5 * span * w * std::sin(M_PI * s);
+      return 0.5 * span * w * w * std::cos(M_PI * s);
+    }
+    case Kind::kSine: {
+      const double w = 2.0 * M_PI * f.frequency;
+      const double arg = t < f.start ? f.phase : w * (t - f.start) + f.phase;
+      if (order == 0) return f.offset + f.amplitude * std::sin(arg);
+      if (t < f.start) return 0.0;
+      return order == 1 ? f.amplitude * w * std::cos(arg) : -f.amplitude * w * w * std::sin(arg);
+    }
+    case Kind::kTable: {
+      FLEXMBD_DEMAND(!f.times.empty() && f.times.size() == f.values.size());
+      if (t < f.times.front()) return order == 0 ? f.values.front() : 0.0;
+      if (t >= f.times.back()) return order == 0 ? f.values.back() : 0.0;
+      const auto upper = std::upper_bound(f.times.begin(), f.times.end(), t);
+      const size_t j = static_cast<size_t>(upper - f.times.begin());
+      const double slope = (f.values[j] - f.values[j - 1]) / (f.times[j] - f.times[j - 1]);
+      return order == 0 ? f.values[j - 1] + slope * (t - f.times[j - 1]) : order == 1 ? slope : 0.0;
+    }
+  }
+  return 0.0;
+}
+}  // namespace
+
+double Evaluate(const TimeFunctionSpec& f, double t) { return Derivative(f, t, 0); }
+double EvaluateRate(const TimeFunctionSpec& f, double t) { return Derivative(f, t, 1); }
+double EvaluateSecondRate(const TimeFunctionSpec& f, double t) { return Derivative(f, t, 2); }
+
+}  // namespace flexmbd

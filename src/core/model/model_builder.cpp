@@ -1,0 +1,186 @@
+#include <Eigen/Eigenvalues>
+#include <algorithm>
+#include <map>
+#include <sstream>
+
+#include "flexmbd/common/error.hpp"
+#include "flexmbd/elements/applied_load.hpp"
+#include "flexmbd/math/time_function.hpp"
+#include "flexmbd/model/model.hpp"
+#include "flexmbd/solver/integrator.hpp"
+#include "flexmbd/solver/step_context_builder.hpp"
+
+namespace flexmbd {
+namespace {
+// Initial configurations must satisfy the joints to this accuracy [m or rad]: loader forward kinematics is
+// exact to round-off, so anything larger is an inconsistent input.
+constexpr double kInitialConstraintTolerance = 1.0e-8;
+
+std::string Prefix(const ModelSpec& spec) { return spec.source.empty() ? std::string() : spec.source + ": "; }
+
+void ValidateBody(const ModelSpec& spec, const BodySpec& body) {
+  if (!(body.mass > 0.0)) {
+    std::ostringstream msg;
+    msg << Prefix(spec) << "body '" << body.name << "': mass " << body.mass << " is not positive; expected mass > 0 [kg]";
+    throw ConfigError(msg.str());
+  }
+  const Eigen::SelfAdjointEigenSolver<Mat3> eig(0.5 * (body.inertia_cm_B + body.inertia_cm_B.transpose()));
+  if (eig.eigenvalues().minCoeff() < 0.0) {
+    throw ConfigError(Prefix(spec) + "body '" + body.name +
+                      "': inertia tensor is not positive semi-definite; expected principal moments >= 0 [kg m^2]");
+  }
+}
+
+NodeState NodeFromBody(const BodySpec& body) {
+  NodeState n;
+  const Vec3 p_BoBcm_W = body.R_WB * body.p_BoBcm_B;
+  n.x = body.p_WB + p_BoBcm_W;
+  n.R = body.R_WB;
+  n.v = body.v_WBo_W + body.w_WB_W.cross(p_BoBcm_W);
+  n.w = body.R_WB.transpose() * body.w_WB_W;
+  return n;
+}
+}  // namespace
+
+std::string Model::DescribeUnknown(int unknown) const {
+  static const char* kNodeDof[6] = {"x", "y", "z", "rot_x", "rot_y", "rot_z"};
+  if (unknown < 6 * num_nodes_) return "body " + bodies_[unknown / 6].name + " " + kNodeDof[unknown % 6];
+  if (unknown < 6 * num_nodes_ + num_variables_) return "joint variable " + variable_names_[unknown - 6 * num_nodes_];
+  return multiplier_names_[unknown - 6 * num_nodes_ - num_variables_];
+}
+
+Model BuildModel(const ModelSpec& spec) {
+  const SolverSpec& solver = spec.solver;
+  if (solver.integrator == SolverSpec::Integrator::kEnergyDecaying &&
+      !(solver.rho_inf >= kMinRhoInf && solver.rho_inf <= 1.0)) {
+    std::ostringstream msg;
+    msg << Prefix(spec) << "solver.rho_inf: " << solver.rho_inf
+        << " is outside the range of the energy-decaying scheme; expected 1/3 <= rho_inf <= 1";
+    throw ConfigError(msg.str());
+  }
+  Model model;
+  model.source_ = spec.source;
+  model.solver_ = spec.solver;
+  model.output_ = spec.output;
+  std::map<std::string, int> body_index;
+  for (const BodySpec& body : spec.bodies) {
+    ValidateBody(spec, body);
+    if (!body_index.emplace(body.name, static_cast<int>(model.bodies_.size())).second) {
+      throw ConfigError(Prefix(spec) + "body '" + body.name + "' is defined twice");
+    }
+    const int node = model.num_nodes_++;
+    model.bodies_.push_back({body.name, node, -body.p_BoBcm_B});
+    model.initial_state_.nodes.push_back(NodeFromBody(body));
+    model.length_scale_ = std::max(model.length_scale_, model.initial_state_.nodes.back().x.norm());
+  }
+  for (const BodySpec& body : spec.bodies) {
+    const int node = body_index.at(body.name);
+    auto rigid = std::make_unique<RigidBody>(node, model.node_unknown(node), body.mass, body.inertia_cm_B);
+    model.rigid_bodies_.push_back(rigid.get());
+    model.elements_.push_back(std::move(rigid));
+  }
+
+  auto attachment = [&](const std::string& joint, const std::string& body, const Vec3& p_BJ, const Mat3& R_BJ) {
+    Joint::Attachment side;
+    side.R_NJ = R_BJ;
+    side.p_NJ = p_BJ;
+    if (body.empty()) return side;
+    const auto it = body_index.find(body);
+    if (it == body_index.end()) {
+      throw ConfigError(Prefix(spec) + "joint '" + joint + "': no body '" + body + "'");
+    }
+    side.node = model.bodies_[it->second].node;
+    side.first_unknown = model.node_unknown(side.node);
+    side.p_NJ = p_BJ + model.bodies_[it->second].p_NBo_N;
+    return side;
+  };
+
+  // Count unknowns first: element constructors need the final global indices.
+  for (const JointSpec& joint : spec.joints) {
+    if (joint.effects.size() > static_cast<size_t>(NumJointVariables(joint.type))) {
+      throw ConfigError(Prefix(spec) + "joint '" + joint.name + "': effects given for " +
+                        std::to_string(joint.effects.size()) + " variables but a " + JointTypeName(joint.type) +
+                        " joint has " + std::to_string(NumJointVariables(joint.type)));
+    }
+    model.num_variables_ += NumJointVariables(joint.type);
+    model.num_multipliers_ += (joint.type == JointType::kSpherical ? 3 : 6);
+    for (const VariableEffectsSpec& effects : joint.effects) model.num_multipliers_ += effects.drives.size();
+  }
+  State& state = model.initial_state_;
+  state.q = Eigen::VectorXd::Zero(model.num_variables_);
+  state.qdot = Eigen::VectorXd::Zero(model.num_variables_);
+  state.lambda = Eigen::VectorXd::Zero(model.num_multipliers_);
+
+  int variable = 0, multiplier = 0;
+  for (const JointSpec& joint : spec.joints) {
+    if (joint.child.empty()) throw ConfigError(Prefix(spec) + "joint '" + joint.name + "': child body is missing");
+    const JointKinematics kinematics = MakeJointKinematics(joint);
+    const int n_var = kinematics.num_variables;
+    auto element = std::make_unique<Joint>(
+        joint.name, attachment(joint.name, joint.parent, joint.p_PJ, joint.R_PJ),
+        attachment(joint.name, joint.child, joint.p_CJ, joint.R_CJ), kinematics, variable,
+        model.variable_unknown(variable), multiplier, model.multiplier_unknown(multiplier));
+    const int n_con = element->num_constraints();
+    model.joints_.push_back(element.get());
+    model.elements_.push_back(std::move(element));
+    for (int c = 0; c < n_con; ++c) {
+      model.multiplier_names_.push_back("joint " + joint.name + " constraint " + std::to_string(c));
+    }
+    multiplier += n_con;
+    for (int k = 0; k < n_var; ++k) {
+      const int v = variable + k;
+      model.variable_names_.push_back(n_var == 1 ? joint.name : joint.name + "/" + std::to_string(k));
+      if (k < static_cast<int>(joint.initial_position.size())) state.q[v] = joint.initial_position[k];
+      if (k < static_cast<int>(joint.initial_velocity.size())) state.qdot[v] = joint.initial_velocity[k];
+      if (k >= static_cast<int>(joint.effects.size())) continue;  // no effects on this variable
+      const VariableEffectsSpec& effects = joint.effects[k];
+      for (const SpringSpec& s : effects.springs) {
+        model.elements_.push_back(std::make_unique<VariableSpring>(v, model.variable_unknown(v), s.stiffness, s.rest));
+      }
+      for (const DamperSpec& d : effects.dampers) {
+        model.elements_.push_back(std::make_unique<VariableDamper>(v, model.variable_unknown(v), d.coefficient));
+      }
+      if (effects.drives.size() > 1) {
+        throw ConfigError(Prefix(spec) + "joint '" + joint.name + "': more than one drive on one variable");
+      }
+      for (const TimeFunctionSpec& law : effects.drives) {
+        const double q0 = Evaluate(law, 0.0);
+        if (std::abs(q0 - state.q[v]) > kInitialConstraintTolerance) {
+          std::ostringstream msg;
+          msg << Prefix(spec) << "joint '" << joint.name << "': drive starts at " << q0
+              << " but the initial position is " << state.q[v] << "; expected them equal";
+          throw ConfigError(msg.str());
+        }
+        model.elements_.push_back(std::make_unique<VariableDrive>(v, model.variable_unknown(v), multiplier,
+                                                                  model.multiplier_unknown(multiplier), law));
+        model.multiplier_names_.push_back("drive " + model.variable_names_[v]);
+        ++multiplier;
+      }
+    }
+    variable += n_var;
+  }
+
+  for (const LoadSpec& load : spec.loads) {
+    const auto it = body_index.find(load.body);
+    if (it == body_index.end()) throw ConfigError(Prefix(spec) + "load on unknown body '" + load.body + "'");
+    const BodyInfo& body = model.bodies_[it->second];
+    model.elements_.push_back(std::make_unique<AppliedLoad>(body.node, model.node_unknown(body.node), load,
+                                                            load.p_BoP_B + body.p_NBo_N));
+  }
+
+  // The initial poses must satisfy every joint.
+  StepContextBuilder context(model);
+  const StepContext ctx = context.AtState(state);
+  for (const Joint* joint : model.joints_) {
+    const double violation = joint->ConstraintValues(ctx).cwiseAbs().maxCoeff();
+    if (violation > kInitialConstraintTolerance) {
+      std::ostringstream msg;
+      msg << Prefix(spec) << "joint '" << joint->name() << "': initial poses violate the joint by " << violation
+          << "; expected body poses consistent with the joint's initial position";
+      throw ConfigError(msg.str());
+    }
+  }
+  return model;
+}
+
+}  // namespace flexmbd

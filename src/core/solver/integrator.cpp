@@ -1,0 +1,194 @@
+#include "flexmbd/solver/integrator.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "flexmbd/model/model.hpp"
+#include "flexmbd/solver/joint_rates.hpp"
+#include "flexmbd/solver/sparse_system.hpp"
+
+namespace flexmbd {
+namespace {
+// Velocity scale below which the error estimate is not normalised further [m/s or rad/s].
+constexpr double kVelocityFloor = 1.0e-6;
+// Trapezoidal-family local position error is h^3 |da/dt| / 12 (docs/theory.md, (T12)).
+constexpr double kLocalErrorConstant = 1.0 / 12.0;
+
+// The dissipation of one node's translation or rotation over a step is alpha (dv - h a_prev) . M dv (M the
+// node's mass, or its inertia tensor for rotations): it is used only where that product is >= 0, judged with
+// the previous step's values beforehand and checked after convergence.
+bool Dissipates(const Vec3& dv, const Vec3& dv_lagged, const Mat3& M) { return (dv - dv_lagged).dot(M * dv) >= 0.0; }
+}  // namespace
+
+const char* StepStatusName(StepStatus status) {
+  switch (status) {
+    case StepStatus::kAccepted: return "accepted";
+    case StepStatus::kRejectedError: return "local error above tolerance";
+    case StepStatus::kNewtonDiverged: return "Newton did not converge";
+    case StepStatus::kSingularMatrix: return "singular iteration matrix";
+  }
+  return "unknown";
+}
+
+double DissipationFromRhoInf(double rho_inf) {
+  // Unresolved-mode limit of (T3)-(T4): rho (1 - rho) = 2 alpha (1 + rho)^2 (docs/theory.md).
+  return rho_inf * (1.0 - rho_inf) / (2.0 * (1.0 + rho_inf) * (1.0 + rho_inf));
+}
+
+double Integrator::NoiseFloor(const State& start) const {
+  double magnitude = model_.length_scale();
+  if (start.q.size() > 0) magnitude = std::max(magnitude, start.q.cwiseAbs().maxCoeff());
+  return RoundOffFloor(magnitude);
+}
+
+Integrator::Integrator(const Model& model, SparseSystem* system)
+    : model_(model),
+      system_(system),
+      builder_(model),
+      alpha_inf_(model.solver().integrator == SolverSpec::Integrator::kEnergyDecaying
+                     ? DissipationFromRhoInf(model.solver().rho_inf)
+                     : 0.0),
+      node_inertia_(model.num_nodes(), Mat3::Identity()) {
+  for (const RigidBody* body : model.rigid_bodies()) node_inertia_[body->node()] = body->inertia();
+}
+
+std::vector<NodeSchemeCoefficients> Integrator::Coefficients(const State& start) const {
+  std::vector<NodeSchemeCoefficients> c(model_.num_nodes());
+  if (alpha_inf_ == 0.0 || start.history_steps < 1) return c;
+  const double ratio = start.history_steps >= 2 ? 1.0 : 0.0;  // no a_prev2 before the second step
+  for (int k = 0; k < model_.num_nodes(); ++k) {
+    const NodeState& n = start.nodes[k];
+    c[k].alpha_translation = Dissipates(n.a_prev, ratio * n.a_prev2, Mat3::Identity()) ? alpha_inf_ : 0.0;
+    c[k].alpha_rotation = Dissipates(n.alpha_prev, ratio * n.alpha_prev2, node_inertia_[k]) ? alpha_inf_ : 0.0;
+  }
+  return c;
+}
+
+bool Integrator::DropEnergyGainingDissipation(const State& start, double h,
+                                              std::vector<NodeSchemeCoefficients>* c) const {
+  const StepContext& ctx = builder_.context();
+  bool dropped = false;
+  for (int k = 0; k < model_.num_nodes(); ++k) {
+    const NodeStep& s = (*ctx.nodes)[k];
+    const NodeState& n = start.nodes[k];
+    NodeSchemeCoefficients& ck = (*c)[k];
+    if (ck.alpha_translation > 0 && !Dissipates(s.v_f - s.v_i, h * n.a_prev, Mat3::Identity())) {
+      ck.alpha_translation = 0;
+      dropped = true;
+    }
+    if (ck.alpha_rotation > 0 && !Dissipates(s.w_f - s.w_i, h * n.alpha_prev, node_inertia_[k])) {
+      ck.alpha_rotation = 0;
+      dropped = true;
+    }
+  }
+  return dropped;
+}
+
+Eigen::VectorXd Integrator::Predict(const State& start, double h) const {
+  Eigen::VectorXd x = Eigen::VectorXd::Zero(model_.num_unknowns());
+  for (int k = 0; k < model_.num_nodes(); ++k) {
+    const NodeState& n = start.nodes[k];
+    x.segment<3>(model_.node_unknown(k)) = h * n.v + 0.5 * h * h * n.a_prev;
+    x.segment<3>(model_.node_unknown(k) + 3) = h * n.w + 0.5 * h * h * n.alpha_prev;
+  }
+  for (int k = 0; k < model_.num_variables(); ++k) x[model_.variable_unknown(k)] = h * start.qdot[k];
+  x.tail(model_.num_multipliers()) = start.lambda;
+  return x;
+}
+
+StepResult Integrator::Step(const State& start, double h, State* end) {
+  std::vector<NodeSchemeCoefficients> coefficients = Coefficients(start);
+  const int n_kinematic = model_.num_unknowns() - model_.num_multipliers();
+  // Quasi-Newton first (the constraint geometric stiffness is O(h^2) against inertia); the full tangent only
+  // if convergence is slow.
+  constexpr int kQuasiNewtonIterations = 4;
+  StepResult result;
+  Eigen::VectorXd unknowns;
+  do {
+    unknowns = Predict(start, h);
+    result.newton = SolveNewton(
+        model_, system_, model_.solver().tol, model_.solver().max_iterations, NoiseFloor(start),
+        [&](int iteration) -> const StepContext& {
+          builder_.set_geometric_stiffness(iteration > kQuasiNewtonIterations);
+          return builder_.Dynamic(start, unknowns, h, coefficients);
+        },
+        [&](const Eigen::VectorXd& increment) {
+          unknowns += increment;
+          return unknowns.head(n_kinematic).cwiseAbs().maxCoeff();
+        });
+    if (result.newton.singular) {
+      result.status = StepStatus::kSingularMatrix;
+      return result;
+    }
+    if (!result.newton.converged) {
+      result.status = StepStatus::kNewtonDiverged;
+      return result;
+    }
+    builder_.Dynamic(start, unknowns, h, coefficients);
+  } while (DropEnergyGainingDissipation(start, h, &coefficients));
+  Commit(start, unknowns, h, coefficients, end);
+  result.error = ErrorEstimate(*end, start.h_prev);
+  const bool too_large = model_.solver().adaptive && result.error > 1.0;
+  result.status = too_large ? StepStatus::kRejectedError : StepStatus::kAccepted;
+  return result;
+}
+
+void Integrator::Commit(const State& start, const Eigen::VectorXd& unknowns, double h,
+                        const std::vector<NodeSchemeCoefficients>& coefficients, State* end) {
+  const StepContext& ctx = builder_.context();
+  *end = start;
+  end->t = start.t + h;
+  end->h_prev = h;
+  end->history_steps = start.history_steps + 1;
+  for (int k = 0; k < model_.num_nodes(); ++k) {
+    const NodeStep& s = (*ctx.nodes)[k];
+    NodeState& n = end->nodes[k];
+    n.x = s.x_f;
+    n.R = s.R_f;
+    n.v = s.v_f;
+    n.w = s.w_f;
+    n.a_prev2 = start.nodes[k].a_prev;
+    n.alpha_prev2 = start.nodes[k].alpha_prev;
+    n.a_prev = (s.v_f - s.v_i) / h;
+    n.alpha_prev = (s.w_f - s.w_i) / h;
+    end->peak_speed = std::max(end->peak_speed, n.v.norm());
+    end->peak_spin = std::max(end->peak_spin, n.w.norm());
+  }
+  for (int k = 0; k < model_.num_variables(); ++k) end->q[k] = (*ctx.variables)[k].q_f;
+  end->lambda = unknowns.tail(model_.num_multipliers());
+  end->qdot = JointRates(model_, *end);
+
+  StepWork work;
+  for (const auto& element : model_.elements()) element->AddStepWork(ctx, &work);
+  double numerical = 0;
+  for (const RigidBody* body : model_.rigid_bodies()) {
+    const NodeStep& s = (*ctx.nodes)[body->node()];
+    const NodeState& n = start.nodes[body->node()];
+    const NodeSchemeCoefficients& c = coefficients[body->node()];
+    const Vec3 dv = s.v_f - s.v_i, dw = s.w_f - s.w_i;
+    numerical += c.alpha_translation * body->mass() * (dv - h * n.a_prev).dot(dv) +
+                 c.alpha_rotation * (dw - h * n.alpha_prev).dot(body->inertia() * dw);
+  }
+  end->external_work += work.external;
+  end->dissipated_physical += work.dissipated;
+  end->dissipated_numerical += numerical;
+}
+
+double Integrator::ErrorEstimate(const State& end, double h_before) const {
+  if (end.history_steps < 2) return 0.0;
+  const double h = end.h_prev;
+  const double v_scale = std::max(kVelocityFloor, end.peak_speed);
+  const double w_scale = std::max(kVelocityFloor, end.peak_spin);
+  // Local position error h^3 |da/dt| / 12 with da/dt ~ (a_n - a_{n-1}) / ((h + h_before)/2), relative to the
+  // displacement h v_scale of a step at the run's peak speed (a slow phase is judged on the scale of the
+  // whole motion, not of its own, vanishing, speed).
+  const double weight = kLocalErrorConstant * 2.0 * h * h / (h + h_before);
+  double error = 0;
+  for (const NodeState& n : end.nodes) {
+    error = std::max(error, weight * (n.a_prev - n.a_prev2).norm() / v_scale);
+    error = std::max(error, weight * (n.alpha_prev - n.alpha_prev2).norm() / w_scale);
+  }
+  return error / model_.solver().error_tol;
+}
+
+}  // namespace flexmbd

@@ -1,0 +1,52 @@
+#include "flexmbd/solver/output_sample.hpp"
+
+#include "flexmbd/model/model.hpp"
+
+namespace flexmbd {
+
+OutputSample MakeSample(const Model& model, const State& state, const StepContext& ctx, double dt, int iterations) {
+  OutputSample s;
+  s.t = state.t;
+  s.position = state.q;
+  s.velocity = state.qdot;
+  s.effort = Eigen::VectorXd::Zero(model.num_variables());
+  for (const Joint* joint : model.joints()) {
+    if (joint->num_variables() > 0) s.effort.segment(joint->first_variable(), joint->num_variables()) = joint->VariableForces(ctx);
+    const Eigen::VectorXd lambda = state.lambda.segment(joint->first_multiplier(), joint->num_constraints());
+    s.reaction_force_W.push_back(-lambda.head<3>());
+    s.reaction_moment.push_back(joint->num_constraints() == 6 ? Vec3(-lambda.tail<3>()) : Vec3::Zero());
+  }
+  EnergyTally energy;
+  for (const auto& element : model.elements()) element->AddEnergy(state, model.solver().gravity, &energy);
+  s.kinetic = energy.kinetic;
+  s.potential = energy.potential;
+  s.external_work = state.external_work;
+  s.dissipated = state.dissipated_physical;
+  s.numerical_dissipation = state.dissipated_numerical;
+  s.dt = dt;
+  s.iterations = iterations;
+  return s;
+}
+
+OutputSample Interpolate(const OutputSample& a, const OutputSample& b, double t) {
+  const double span = b.t - a.t;
+  const double u = span > 0 ? (t - a.t) / span : 1.0;
+  auto mix = [u](const auto& x, const auto& y) { return ((1.0 - u) * x + u * y).eval(); };
+  OutputSample s = b;
+  s.t = t;
+  s.position = mix(a.position, b.position);
+  s.velocity = mix(a.velocity, b.velocity);
+  s.effort = mix(a.effort, b.effort);
+  for (size_t k = 0; k < s.reaction_force_W.size(); ++k) {
+    s.reaction_force_W[k] = mix(a.reaction_force_W[k], b.reaction_force_W[k]);
+    s.reaction_moment[k] = mix(a.reaction_moment[k], b.reaction_moment[k]);
+  }
+  s.kinetic = (1.0 - u) * a.kinetic + u * b.kinetic;
+  s.potential = (1.0 - u) * a.potential + u * b.potential;
+  s.external_work = (1.0 - u) * a.external_work + u * b.external_work;
+  s.dissipated = (1.0 - u) * a.dissipated + u * b.dissipated;
+  s.numerical_dissipation = (1.0 - u) * a.numerical_dissipation + u * b.numerical_dissipation;
+  return s;
+}
+
+}  // namespace flexmbd

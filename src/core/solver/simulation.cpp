@@ -1,0 +1,103 @@
+#include "flexmbd/solver/simulation.hpp"
+
+#include <cmath>
+#include <sstream>
+
+#include "flexmbd/common/error.hpp"
+#include "flexmbd/solver/step_context_builder.hpp"
+
+namespace flexmbd {
+namespace {
+// Times closer than this fraction of a step are the same instant (guards the end of the run and sample times
+// against round-off in sums of step sizes).
+constexpr double kTimeEpsilon = 1.0e-9;
+// A step that would leave less than this fraction of itself before t_end is stretched to reach t_end, so the
+// run never ends with a sliver step dominated by round-off.
+constexpr double kSliverFraction = 0.01;
+}  // namespace
+
+Simulation::Simulation(const Model& model)
+    : model_(model),
+      state_(model.initial_state()),
+      system_(model),
+      integrator_(model, &system_),
+      controller_(model.solver()) {}
+
+OutputSample Simulation::SampleAtState(double dt, int iterations) {
+  StepContextBuilder builder(model_);
+  return MakeSample(model_, state_, builder.AtState(state_), dt, iterations);
+}
+
+void Simulation::Fail(const char* what, double h, const StepResult& last) const {
+  std::ostringstream msg;
+  msg << what << " at t = " << state_.t << " s with step " << h << " s (dt_min = " << model_.solver().dt_min
+      << " s); last attempt: " << StepStatusName(last.status);
+  if (last.newton.worst_unknown >= 0) {
+    msg << "; worst residual at " << model_.DescribeUnknown(last.newton.worst_unknown) << " (force "
+        << last.newton.force_residual << " relative, constraint " << last.newton.constraint_residual << ")";
+  }
+  throw SolverError(msg.str());
+}
+
+StaticResult Simulation::SolveStaticEquilibrium() {
+  const StaticResult result = SolveStatic(model_, &system_, &state_);
+  if (!result.converged) {
+    StepResult last;
+    last.status = result.last.singular ? StepStatus::kSingularMatrix : StepStatus::kNewtonDiverged;
+    last.newton = result.last;
+    std::ostringstream what;
+    what << "static analysis failed in load step " << result.load_steps << " of " << model_.solver().load_steps;
+    Fail(what.str().c_str(), 0.0, last);
+  }
+  return result;
+}
+
+void Simulation::Run(const SampleSink& sink) {
+  const SolverSpec& solver = model_.solver();
+  if (solver.analysis == SolverSpec::Analysis::kStatic) {
+    const StaticResult result = SolveStaticEquilibrium();
+    sink(SampleAtState(0.0, result.iterations));
+    return;
+  }
+  if (solver.static_first) SolveStaticEquilibrium();
+  Integrate(solver.t_end, sink);
+}
+
+StepResult Simulation::TryStep(double h) {
+  State end;
+  const StepResult result = integrator_.Step(state_, h, &end);
+  if (result.status == StepStatus::kAccepted) state_ = std::move(end);
+  return result;
+}
+
+void Simulation::Integrate(double t_end, const SampleSink& sink) {
+  const SolverSpec& solver = model_.solver();
+  const double sample_period = model_.output().rate_hz > 0 ? 1.0 / model_.output().rate_hz : 0.0;
+  OutputSample previous = SampleAtState(0.0, 0);
+  sink(previous);
+  long next_sample = 1;
+  const double t_start = state_.t;
+  double h = solver.dt;
+  while (state_.t < t_end - kTimeEpsilon * h) {
+    h = std::min(h, solver.dt_max);
+    if (t_end - state_.t - h < kSliverFraction * h) h = t_end - state_.t;
+    const StepResult result = TryStep(h);
+    const double h_next = controller_.Next(h, result);
+    if (result.status == StepStatus::kAccepted) {
+      const OutputSample current = MakeSample(model_, state_, integrator_.last_context(), h, result.newton.iterations);
+      if (sample_period == 0) {
+        sink(current);
+      } else {
+        for (double t = t_start + next_sample * sample_period; t <= current.t + kTimeEpsilon * h;
+             t = t_start + ++next_sample * sample_period) {
+          sink(Interpolate(previous, current, t));
+        }
+      }
+      previous = current;
+    }
+    if (h_next < solver.dt_min) Fail("step size fell below dt_min", h_next, result);
+    h = h_next;
+  }
+}
+
+}  // namespace flexmbd

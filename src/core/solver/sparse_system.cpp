@@ -1,0 +1,133 @@
+#include "flexmbd/solver/sparse_system.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <set>
+#include <utility>
+
+#include <klu.h>
+
+#include "flexmbd/common/error.hpp"
+#include "flexmbd/model/model.hpp"
+
+namespace flexmbd {
+
+struct SparseSystem::KluFactorisation {
+  klu_symbolic* symbolic = nullptr;
+  klu_numeric* numeric = nullptr;
+  klu_common common;
+};
+
+namespace {
+// Reciprocal condition estimate below which a refactorisation with the old pivot order is redone with fresh
+// pivoting; below it relative errors of the solve exceed about 1e-4 in double precision.
+constexpr double kRefactorConditionLimit = 1.0e-12;
+
+double SecondsSince(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+}  // namespace
+
+SparseSystem::SparseSystem(const Model& model) : model_(model), n_(model.num_unknowns()) {
+  std::vector<std::set<int>> rows_of_column(n_);
+  int max_local = 0;
+  for (const auto& element : model.elements()) {
+    const std::vector<int>& u = element->unknowns();
+    max_local = std::max(max_local, element->num_local());
+    for (int col : u) rows_of_column[col].insert(u.begin(), u.end());
+  }
+  column_start_.assign(n_ + 1, 0);
+  for (int c = 0; c < n_; ++c) {
+    column_start_[c + 1] = column_start_[c] + static_cast<int>(rows_of_column[c].size());
+    row_index_.insert(row_index_.end(), rows_of_column[c].begin(), rows_of_column[c].end());
+  }
+  values_.assign(row_index_.size(), 0.0);
+  for (const auto& element : model.elements()) {
+    const std::vector<int>& u = element->unknowns();
+    const int m = element->num_local();
+    std::vector<int> positions(static_cast<size_t>(m) * m);
+    for (int i = 0; i < m; ++i) {
+      for (int j = 0; j < m; ++j) {
+        const auto first = row_index_.begin() + column_start_[u[j]];
+        const auto last = row_index_.begin() + column_start_[u[j] + 1];
+        positions[i * m + j] = static_cast<int>(std::lower_bound(first, last, u[i]) - row_index_.begin());
+      }
+    }
+    scatter_.push_back(std::move(positions));
+  }
+  residual_.resize(n_);
+  magnitude_.resize(n_);
+  local_r_.resize(max_local);
+  local_m_.resize(max_local);
+  local_J_.resize(max_local, max_local);
+  klu_ = std::make_unique<KluFactorisation>();
+  klu_defaults(&klu_->common);
+}
+
+SparseSystem::~SparseSystem() {
+  if (klu_->numeric) klu_free_numeric(&klu_->numeric, &klu_->common);
+  if (klu_->symbolic) klu_free_symbolic(&klu_->symbolic, &klu_->common);
+}
+
+void SparseSystem::Assemble(const StepContext& ctx, bool with_tangent) {
+  const auto start = std::chrono::steady_clock::now();
+  residual_.setZero();
+  magnitude_.setZero();
+  if (with_tangent) std::fill(values_.begin(), values_.end(), 0.0);
+  const auto& elements = model_.elements();
+  for (size_t e = 0; e < elements.size(); ++e) {
+    const Element& element = *elements[e];
+    const int m = element.num_local();
+    auto r = local_r_.head(m);
+    auto mag = local_m_.head(m);
+    r.setZero();
+    mag.setZero();
+    Eigen::Ref<Eigen::MatrixXd> J = local_J_.topLeftCorner(m, m);
+    if (with_tangent) J.setZero();
+    element.AddResidualAndTangent(ctx, r, mag, with_tangent ? &J : nullptr);
+    const std::vector<int>& u = element.unknowns();
+    for (int i = 0; i < m; ++i) {
+      residual_[u[i]] += r[i];
+      magnitude_[u[i]] += mag[i];
+    }
+    if (!with_tangent) continue;
+    const std::vector<int>& positions = scatter_[e];
+    for (int i = 0; i < m; ++i) {
+      for (int j = 0; j < m; ++j) values_[positions[i * m + j]] += J(i, j);
+    }
+  }
+  timing_.assembly += SecondsSince(start);
+}
+
+bool SparseSystem::Factorise() {
+  klu_common& common = klu_->common;
+  if (!klu_->symbolic) {
+    klu_->symbolic = klu_analyze(n_, column_start_.data(), row_index_.data(), &common);
+    if (!klu_->symbolic) return false;
+  }
+  if (klu_->numeric) {
+    const bool refactored = klu_refactor(column_start_.data(), row_index_.data(), values_.data(), klu_->symbolic,
+                                         klu_->numeric, &common) &&
+                            klu_rcond(klu_->symbolic, klu_->numeric, &common) &&
+                            common.rcond > kRefactorConditionLimit;
+    if (refactored) return true;
+    klu_free_numeric(&klu_->numeric, &common);
+  }
+  klu_->numeric = klu_factor(column_start_.data(), row_index_.data(), values_.data(), klu_->symbolic, &common);
+  return klu_->numeric != nullptr && common.status == KLU_OK;
+}
+
+bool SparseSystem::Solve(Eigen::VectorXd* dx) {
+  auto start = std::chrono::steady_clock::now();
+  const bool factorised = Factorise();
+  timing_.factorisation += SecondsSince(start);
+  if (!factorised) return false;
+  start = std::chrono::steady_clock::now();
+  *dx = -residual_;
+  const bool solved = klu_solve(klu_->symbolic, klu_->numeric, n_, 1, dx->data(), &klu_->common) && dx->allFinite();
+  timing_.solve += SecondsSince(start);
+  return solved;
+}
+
+}  // namespace flexmbd

@@ -1,0 +1,47 @@
+#include "flexmbd/solver/static_solver.hpp"
+
+#include "flexmbd/model/model.hpp"
+#include "flexmbd/solver/joint_rates.hpp"
+#include "flexmbd/solver/sparse_system.hpp"
+#include "flexmbd/solver/step_context_builder.hpp"
+
+namespace flexmbd {
+
+StaticResult SolveStatic(const Model& model, SparseSystem* system, State* state) {
+  StepContextBuilder builder(model);
+  builder.set_geometric_stiffness(true);
+  StaticResult result;
+  for (NodeState& n : state->nodes) n.v = n.w = n.a_prev = n.alpha_prev = n.a_prev2 = n.alpha_prev2 = Vec3::Zero();
+  const int n_steps = model.solver().load_steps;
+  Eigen::VectorXd unknowns = Eigen::VectorXd::Zero(model.num_unknowns());
+  for (int step = 1; step <= n_steps; ++step) {
+    const double load_factor = static_cast<double>(step) / n_steps;
+    result.load_steps = step;
+    double travelled = 0;  // size of the motion within this load step, for the increment test
+    result.last = SolveNewton(
+        model, system, model.solver().tol, model.solver().max_iterations, RoundOffFloor(model.length_scale()),
+        [&](int) -> const StepContext& {
+          unknowns.setZero();
+          unknowns.tail(model.num_multipliers()) = state->lambda;
+          return builder.Static(*state, unknowns, state->t, load_factor);
+        },
+        [&](const Eigen::VectorXd& increment) {
+          for (int k = 0; k < model.num_nodes(); ++k) {
+            NodeState& n = state->nodes[k];
+            n.x += increment.segment<3>(model.node_unknown(k));
+            n.R = n.R * Exp(increment.segment<3>(model.node_unknown(k) + 3));
+          }
+          for (int k = 0; k < model.num_variables(); ++k) state->q[k] += increment[model.variable_unknown(k)];
+          state->lambda += increment.tail(model.num_multipliers());
+          travelled = std::max(travelled, increment.head(model.num_unknowns() - model.num_multipliers()).cwiseAbs().maxCoeff());
+          return travelled;
+        });
+    result.iterations += result.last.iterations;
+    if (!result.last.converged) return result;
+  }
+  state->qdot = JointRates(model, *state);
+  result.converged = true;
+  return result;
+}
+
+}  // namespace flexmbd

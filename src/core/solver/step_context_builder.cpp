@@ -1,0 +1,57 @@
+#include "flexmbd/solver/step_context_builder.hpp"
+
+#include "flexmbd/model/model.hpp"
+
+namespace flexmbd {
+
+StepContextBuilder::StepContextBuilder(const Model& model) : model_(model) {
+  nodes_.resize(model.num_nodes());
+  variables_.resize(model.num_variables());
+  ctx_.nodes = &nodes_;
+  ctx_.variables = &variables_;
+  ctx_.lambda = &lambda_;
+  ctx_.gravity = model.solver().gravity;
+}
+
+void StepContextBuilder::Fill(const State& start, const Eigen::VectorXd& unknowns, AnalysisMode mode) {
+  ctx_.mode = mode;
+  ctx_.start = &start;
+  for (int k = 0; k < model_.num_nodes(); ++k) {
+    nodes_[k] = MakeNodeStep(start.nodes[k], unknowns.segment<6>(model_.node_unknown(k)), mode);
+  }
+  for (int k = 0; k < model_.num_variables(); ++k) {
+    VariableStep& v = variables_[k];
+    v.q_f = start.q[k] + unknowns[model_.variable_unknown(k)];
+    v.q_i = mode == AnalysisMode::kStatic ? v.q_f : start.q[k];
+    v.qdot_i = start.qdot[k];
+  }
+  lambda_ = unknowns.tail(model_.num_multipliers());
+}
+
+const StepContext& StepContextBuilder::Dynamic(const State& start, const Eigen::VectorXd& unknowns, double h,
+                                               const std::vector<NodeSchemeCoefficients>& coefficients) {
+  Fill(start, unknowns, AnalysisMode::kDynamic);
+  for (int k = 0; k < model_.num_nodes(); ++k) SetNodeStepVelocities(start.nodes[k], h, coefficients[k], &nodes_[k]);
+  ctx_.t_i = start.t;
+  ctx_.t_f = start.t + h;
+  ctx_.h = h;
+  ctx_.load_factor = 1.0;
+  return ctx_;
+}
+
+const StepContext& StepContextBuilder::Static(const State& iterate, const Eigen::VectorXd& unknowns, double t,
+                                              double load_factor) {
+  Fill(iterate, unknowns, AnalysisMode::kStatic);
+  ctx_.t_i = ctx_.t_f = t;
+  ctx_.h = 1.0;
+  ctx_.load_factor = load_factor;
+  return ctx_;
+}
+
+const StepContext& StepContextBuilder::AtState(const State& state) {
+  Eigen::VectorXd unknowns = Eigen::VectorXd::Zero(model_.num_unknowns());
+  unknowns.tail(model_.num_multipliers()) = state.lambda;
+  return Static(state, unknowns, state.t, 1.0);
+}
+
+}  // namespace flexmbd

@@ -1,0 +1,49 @@
+#include "flexmbd/io/config_loader.hpp"
+
+#include <cerrno>
+#include <cstring>
+#include <fstream>
+#include <sstream>
+
+#include "flexmbd/common/error.hpp"
+#include "flexmbd/io/initial_placement.hpp"
+#include "flexmbd/io/urdf_reader.hpp"
+#include "flexmbd/io/yaml_overlay.hpp"
+
+namespace flexmbd {
+namespace {
+std::string ReadTextFile(const std::string& path, const std::string& what) {
+  std::ifstream file(path);
+  if (!file) throw ConfigError("cannot open " + what + " '" + path + "': " + std::strerror(errno));
+  std::ostringstream text;
+  text << file.rdbuf();
+  return text.str();
+}
+
+YAML::Node ParseYaml(const std::string& text, const std::string& name) {
+  try {
+    return YAML::Load(text);
+  } catch (const YAML::ParserException& error) {
+    throw ConfigError(name + ": line " + std::to_string(error.mark.line + 1) + ", column " +
+                      std::to_string(error.mark.column + 1) + ": not valid YAML (" + error.msg + ")");
+  }
+}
+}  // namespace
+
+ModelSpec LoadModelSpec(const std::string& urdf_path, const std::string& yaml_path) {
+  const std::string urdf_xml = ReadTextFile(urdf_path, "URDF file");
+  const YAML::Node params =
+      yaml_path.empty() ? YAML::Node() : ParseYaml(ReadTextFile(yaml_path, "YAML file"), yaml_path);
+  return LoadModelSpecFromStrings(urdf_xml, urdf_path, params, yaml_path);
+}
+
+ModelSpec LoadModelSpecFromStrings(const std::string& urdf_xml, const std::string& urdf_name, const YAML::Node& params,
+                                   const std::string& params_name) {
+  io::UrdfModel model = io::ReadUrdf(urdf_xml, urdf_name);
+  io::ApplyYamlOverlay(params, params_name, &model);
+  io::PlaceBodies(model.free_bodies, &model.spec);
+  model.spec.source = params_name.empty() ? urdf_name : urdf_name + " + " + params_name;
+  return model.spec;
+}
+
+}  // namespace flexmbd

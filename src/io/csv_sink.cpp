@@ -1,0 +1,36 @@
+#include "flexmbd/io/csv_sink.hpp"
+
+#include <iomanip>
+#include <limits>
+
+#include "flexmbd/common/error.hpp"
+#include "flexmbd/model/model.hpp"
+
+namespace flexmbd {
+
+CsvSink::CsvSink(const Model& model, const std::string& path) : out_(path) {
+  if (!out_) throw ConfigError("output.csv: cannot open '" + path + "' for writing; expected a writable file path");
+  out_ << std::setprecision(std::numeric_limits<double>::max_digits10) << "t";
+  for (const std::string& name : model.variable_names()) {
+    out_ << ",joint." << name << ".position,joint." << name << ".velocity,joint." << name << ".effort";
+  }
+  for (const Joint* joint : model.joints()) {
+    for (const char* axis : {"x", "y", "z"}) out_ << ",joint." << joint->name() << ".reaction_force_" << axis;
+  }
+  out_ << ",energy.kinetic,energy.potential,energy.total,energy.external_work,energy.dissipated,"
+          "energy.numerical_dissipation,solver.dt,solver.iterations\n";
+}
+
+void CsvSink::Write(const OutputSample& s) {
+  out_ << s.t;
+  for (int k = 0; k < s.position.size(); ++k) out_ << ',' << s.position[k] << ',' << s.velocity[k] << ',' << s.effort[k];
+  for (const Vec3& f : s.reaction_force_W) out_ << ',' << f.x() << ',' << f.y() << ',' << f.z();
+  out_ << ',' << s.kinetic << ',' << s.potential << ',' << s.total() << ',' << s.external_work << ',' << s.dissipated
+       << ',' << s.numerical_dissipation << ',' << s.dt << ',' << s.iterations << '\n';
+}
+
+void CsvSink::Close() {
+  if (out_.is_open()) out_.close();
+}
+
+}  // namespace flexmbd

@@ -1,0 +1,98 @@
+#include "flexmbd/io/initial_placement.hpp"
+
+#include <Eigen/Geometry>
+#include <map>
+#include <set>
+#include <string>
+
+#include "flexmbd/common/error.hpp"
+#include "flexmbd/joints/joint_kinematics.hpp"
+
+namespace flexmbd {
+namespace io {
+namespace {
+// Places bodies on demand, parents first (the joint tree may list children before parents).
+class Placer {
+ public:
+  Placer(const std::vector<BodyMount>& free_bodies, ModelSpec* spec) : spec_(spec) {
+    for (size_t i = 0; i < spec->bodies.size(); ++i) body_index_[spec->bodies[i].name] = i;
+    for (const JointSpec& joint : spec->joints) {
+      FLEXMBD_DEMAND(body_index_.count(joint.child) == 1 && mount_of_.count(joint.child) == 0);
+      mount_of_[joint.child] = Mount{&joint, nullptr};
+    }
+    for (const BodyMount& mount : free_bodies) {
+      FLEXMBD_DEMAND(body_index_.count(mount.body) == 1 && mount_of_.count(mount.body) == 0);
+      mount_of_[mount.body] = Mount{nullptr, &mount};
+    }
+  }
+
+  void PlaceAll() {
+    for (const BodySpec& body : spec_->bodies) Place(body.name);
+  }
+
+ private:
+  struct Mount {
+    const JointSpec* joint;
+    const BodyMount* free;
+  };
+
+  FrameMotion Place(const std::string& body) {
+    if (body.empty()) return FrameMotion{};
+    const auto placed = placed_.find(body);
+    if (placed != placed_.end()) return placed->second;
+    // each body is placed once, from exactly one mount: a second visit before placement would be a loop
+    const bool first_visit = visited_.insert(body).second;
+    FLEXMBD_DEMAND(first_visit && mount_of_.count(body) == 1);
+    const Mount& mount = mount_of_.at(body);
+    const FrameMotion motion = mount.joint
+                                   ? ChildMotion(Place(mount.joint->parent), *mount.joint)
+                                   : CarryRigidly(Place(mount.free->parent), mount.free->R_PB, mount.free->p_PB);
+    BodySpec& spec = spec_->bodies[body_index_.at(body)];
+    spec.R_WB = motion.R_WF;
+    spec.p_WB = motion.p_WF;
+    spec.v_WBo_W = motion.v_WFo_W;
+    spec.w_WB_W = motion.w_WF_W;
+    return placed_[body] = motion;
+  }
+
+  ModelSpec* spec_;
+  std::map<std::string, size_t> body_index_;
+  std::map<std::string, Mount> mount_of_;
+  std::map<std::string, FrameMotion> placed_;
+  std::set<std::string> visited_;
+};
+}  // namespace
+
+FrameMotion CarryRigidly(const FrameMotion& P, const Mat3& R_PF, const Vec3& p_PF) {
+  FrameMotion F;
+  F.R_WF = P.R_WF * R_PF;
+  F.p_WF = P.p_WF + P.R_WF * p_PF;
+  F.w_WF_W = P.w_WF_W;
+  F.v_WFo_W = P.v_WFo_W + P.w_WF_W.cross(F.p_WF - P.p_WF);
+  return F;
+}
+
+FrameMotion ChildMotion(const FrameMotion& P, const JointSpec& joint) {
+  const JointKinematics kinematics = MakeJointKinematics(joint);
+  const Eigen::VectorXd q =
+      Eigen::Map<const Eigen::VectorXd>(joint.initial_position.data(), joint.initial_position.size());
+  const Eigen::VectorXd qdot =
+      Eigen::Map<const Eigen::VectorXd>(joint.initial_velocity.data(), joint.initial_velocity.size());
+  Mat3 R_JpJc;
+  Vec3 p_JpJc_Jp, w_JpJc_Jp, v_JpJc_Jp;
+  RelativePose(kinematics, q, &R_JpJc, &p_JpJc_Jp);
+  RelativeVelocity(kinematics, q, qdot, &w_JpJc_Jp, &v_JpJc_Jp);
+
+  const FrameMotion Jp = CarryRigidly(P, joint.R_PJ, joint.p_PJ);
+  FrameMotion Jc;
+  Jc.R_WF = Jp.R_WF * R_JpJc;
+  Jc.p_WF = Jp.p_WF + Jp.R_WF * p_JpJc_Jp;
+  Jc.w_WF_W = Jp.w_WF_W + Jp.R_WF * w_JpJc_Jp;
+  Jc.v_WFo_W = Jp.v_WFo_W + Jp.w_WF_W.cross(Jp.R_WF * p_JpJc_Jp) + Jp.R_WF * v_JpJc_Jp;
+  return CarryRigidly(Jc, joint.R_CJ.transpose(), -(joint.R_CJ.transpose() * joint.p_CJ));
+}
+
+void PlaceBodies(const std::vector<BodyMount>& free_bodies, ModelSpec* spec) { Placer(free_bodies, spec).PlaceAll(); }
+
+}  // namespace io
+}  // namespace flexmbd

@@ -1,0 +1,221 @@
+#include "flexmbd/io/urdf_reader.hpp"
+
+#include <console_bridge/console.h>
+#include <urdf_parser/urdf_parser.h>
+
+#include <Eigen/Eigenvalues>
+#include <Eigen/Geometry>
+#include <cmath>
+#include <memory>
+
+#include "flexmbd/common/error.hpp"
+#include "flexmbd/io/joint_axes.hpp"
+#include "flexmbd/io/message_text.hpp"
+#include "flexmbd/joints/joint_kinematics.hpp"
+
+namespace flexmbd {
+namespace io {
+namespace {
+// Relative tolerance on a negative principal moment of inertia: URDF values are printed with few digits,
+// so an inertia on the boundary of the PSD cone may come out as -1e-12 of the largest moment.
+constexpr double kInertiaTolerance = 1.0e-9;
+
+// Collects urdfdom's error messages (console_bridge) while it parses; the previous handler is restored on
+// destruction. console_bridge keeps one global handler, so parsing is not thread-safe anyway.
+class UrdfdomErrors : public console_bridge::OutputHandler {
+ public:
+  UrdfdomErrors() { console_bridge::useOutputHandler(this); }
+  ~UrdfdomErrors() override { console_bridge::restorePreviousOutputHandler(); }
+  UrdfdomErrors(const UrdfdomErrors&) = delete;
+  UrdfdomErrors& operator=(const UrdfdomErrors&) = delete;
+
+  void log(const std::string& text, console_bridge::LogLevel level, const char*, int) override {
+    if (level >= console_bridge::CONSOLE_BRIDGE_LOG_ERROR) {
+      std::string line = text;
+      for (char& c : line) c = c == '\n' ? ' ' : c;
+      messages_ += (messages_.empty() ? "" : "; ") + line;
+    }
+  }
+  const std::string& messages() const { return messages_; }
+
+ private:
+  std::string messages_;
+};
+
+urdf::ModelInterfaceSharedPtr ParseUrdf(const std::string& urdf_xml, const std::string& urdf_name) {
+  std::string errors;
+  urdf::ModelInterfaceSharedPtr model;
+  {
+    UrdfdomErrors log;
+    model = urdf::parseURDF(urdf_xml);
+    errors = log.messages();
+  }
+  // urdfdom may log an error and still return a model (e.g. an <inertial> without <inertia>): reject both
+  if (!model || !errors.empty()) {
+    throw ConfigError(urdf_name + ": not a valid URDF (urdfdom could not parse it)" +
+                      (errors.empty() ? "" : ": " + errors));
+  }
+  return model;
+}
+
+Vec3 ToVec3(const urdf::Vector3& v) { return Vec3(v.x, v.y, v.z); }
+
+Mat3 ToMat3(const urdf::Rotation& r) { return Eigen::Quaterniond(r.w, r.x, r.y, r.z).normalized().toRotationMatrix(); }
+
+// Where a link's frame sits: on a body (empty name: the ground), at pose X_body_link.
+struct LinkFrame {
+  std::string body;
+  Mat3 R = Mat3::Identity();
+  Vec3 p = Vec3::Zero();
+};
+
+// Builds the model by walking the URDF tree from its root.
+class UrdfWalker {
+ public:
+  UrdfWalker(const urdf::ModelInterface& urdf, const std::string& name) : urdf_(urdf) { model_.name = name; }
+
+  UrdfModel Walk() {
+    const urdf::Link& root = *urdf_.getRoot();
+    AddRoot(root);
+    AddSubtree(root);
+    return std::move(model_);
+  }
+
+ private:
+  void AddRoot(const urdf::Link& root) {
+    if (root.name == "world" || !root.inertial) {
+      frames_[root.name] = LinkFrame{};
+      return;
+    }
+    model_.spec.bodies.push_back(MakeBody(root));
+    model_.free_bodies.push_back(BodyMount{root.name, "", Mat3::Identity(), Vec3::Zero()});
+    frames_[root.name] = LinkFrame{root.name};
+  }
+
+  void AddSubtree(const urdf::Link& link) {
+    for (const urdf::JointSharedPtr& joint : link.child_joints) {
+      const urdf::Link& child = *urdf_.getLink(joint->child_link_name);
+      AddJoint(*joint, child, frames_.at(link.name));
+      AddSubtree(child);
+    }
+  }
+
+  void AddJoint(const urdf::Joint& joint, const urdf::Link& child, const LinkFrame& parent) {
+    // the joint frame on the parent body
+    const urdf::Pose& origin = joint.parent_to_joint_origin_transform;
+    const LinkFrame joint_frame{parent.body, parent.R * ToMat3(origin.rotation),
+                                parent.p + parent.R * ToVec3(origin.position)};
+    if (joint.type == urdf::Joint::FIXED && !child.inertial) {
+      frames_[child.name] = joint_frame;
+      model_.frame_joints[joint.name] = "it fixes link '" + child.name + "', which has no <inertial>, as a frame on " +
+                                        (parent.body.empty() ? "the ground" : "body '" + parent.body + "'");
+      return;
+    }
+    if (!child.inertial) {
+      Fail("link '" + child.name + "' moves (joint '" + joint.name +
+           "') but has no <inertial>; expected mass and inertia");
+    }
+    model_.spec.bodies.push_back(MakeBody(child));
+    frames_[child.name] = LinkFrame{child.name};
+    if (joint.type == urdf::Joint::FLOATING) {
+      model_.free_bodies.push_back(BodyMount{child.name, parent.body, joint_frame.R, joint_frame.p});
+      model_.frame_joints[joint.name] = "it is a floating joint: link '" + child.name + "' is a free body";
+      return;
+    }
+    model_.spec.joints.push_back(MakeJoint(joint, child.name, joint_frame));
+  }
+
+  BodySpec MakeBody(const urdf::Link& link) const {
+    const urdf::Inertial& inertial = *link.inertial;
+    if (!(inertial.mass > 0.0) || !std::isfinite(inertial.mass)) {
+      Fail("link '" + link.name + "': mass " + FormatNumber(inertial.mass) +
+           " is not positive; expected a mass > 0 [kg]");
+    }
+    Mat3 inertia_I;
+    inertia_I << inertial.ixx, inertial.ixy, inertial.ixz, inertial.ixy, inertial.iyy, inertial.iyz, inertial.ixz,
+        inertial.iyz, inertial.izz;
+    CheckInertia(link.name, inertia_I);
+    const Mat3 R_BI = ToMat3(inertial.origin.rotation);
+    BodySpec body;
+    body.name = link.name;
+    body.mass = inertial.mass;
+    body.inertia_cm_B = R_BI * inertia_I * R_BI.transpose();
+    body.p_BoBcm_B = ToVec3(inertial.origin.position);
+    return body;
+  }
+
+  void CheckInertia(const std::string& link, const Mat3& inertia) const {
+    const Vec3 moments = Eigen::SelfAdjointEigenSolver<Mat3>(inertia, Eigen::EigenvaluesOnly).eigenvalues();
+    if (!inertia.allFinite() || moments.minCoeff() < -kInertiaTolerance * moments.cwiseAbs().maxCoeff()) {
+      Fail("link '" + link + "': <inertia> has principal moments " + FormatVector(moments) +
+           "; expected a positive semi-definite inertia [kg m^2]");
+    }
+  }
+
+  JointSpec MakeJoint(const urdf::Joint& urdf_joint, const std::string& child, const LinkFrame& joint_frame) const {
+    JointSpec joint;
+    joint.name = urdf_joint.name;
+    joint.type = TypeOf(urdf_joint);
+    joint.parent = joint_frame.body;
+    joint.child = child;
+    joint.p_PJ = joint_frame.p;
+    joint.R_PJ = joint_frame.R;
+    joint.axis_J = ToVec3(urdf_joint.axis);
+    joint.axis2_J = DefaultSecondAxis(joint.axis_J);
+    ResizeJointVariables(&joint);
+    AddUrdfDamper(urdf_joint, &joint);
+    try {
+      MakeJointKinematics(joint);
+    } catch (const ConfigError& error) {
+      Fail(error.what());
+    }
+    return joint;
+  }
+
+  JointType TypeOf(const urdf::Joint& joint) const {
+    switch (joint.type) {
+      case urdf::Joint::REVOLUTE:
+      case urdf::Joint::CONTINUOUS: return JointType::kRevolute;
+      case urdf::Joint::PRISMATIC: return JointType::kPrismatic;
+      case urdf::Joint::PLANAR: return JointType::kPlanar;
+      case urdf::Joint::FIXED: return JointType::kFixed;
+      default: break;
+    }
+    Fail("joint '" + joint.name +
+         "': unsupported type; expected revolute, continuous, prismatic, planar, fixed or floating");
+  }
+
+  // <dynamics damping> becomes a damper on variable 0; <dynamics friction> waits for the friction effect.
+  void AddUrdfDamper(const urdf::Joint& urdf_joint, JointSpec* joint) const {
+    if (!urdf_joint.dynamics || joint->effects.empty()) return;
+    const double damping = urdf_joint.dynamics->damping;
+    if (!(damping >= 0.0) || !std::isfinite(damping)) {
+      const char* unit = joint->type == JointType::kPrismatic ? "N s/m" : "N m s/rad";
+      Fail("joint '" + joint->name + "': <dynamics damping> " + FormatNumber(damping) +
+           " is negative; expected a damping >= 0 [" + unit + "]");
+    }
+    if (damping > 0.0) joint->effects[0].dampers = {DamperSpec{damping}};
+  }
+
+  [[noreturn]] void Fail(const std::string& what) const { throw ConfigError(model_.name + ": " + what); }
+
+  const urdf::ModelInterface& urdf_;
+  UrdfModel model_;
+  std::map<std::string, LinkFrame> frames_;
+};
+}  // namespace
+
+UrdfModel ReadUrdf(const std::string& urdf_xml, const std::string& urdf_name) {
+  const urdf::ModelInterfaceSharedPtr urdf = ParseUrdf(urdf_xml, urdf_name);
+  return UrdfWalker(*urdf, urdf_name).Walk();
+}
+
+void ResizeJointVariables(JointSpec* joint) {
+  const size_t n = static_cast<size_t>(NumJointVariables(joint->type));
+  joint->initial_position.resize(n, 0.0);
+  joint->initial_velocity.resize(n, 0.0);
+  joint->effects.resize(n);
+}
+
+}  // namespace io
+}  // namespace flexmbd

@@ -1,0 +1,242 @@
+#include <algorithm>
+#include <cmath>
+
+#include "flexmbd/common/error.hpp"
+#include "flexmbd/io/joint_axes.hpp"
+#include "flexmbd/io/message_text.hpp"
+#include "flexmbd/io/yaml_sections.hpp"
+#include "flexmbd/joints/joint_kinematics.hpp"
+#include "flexmbd/math/time_function.hpp"
+
+namespace flexmbd {
+namespace io {
+namespace {
+// A given initial value of a driven variable must match the drive at t = 0 to this relative tolerance:
+// both are typed by hand, and the same degree conversion is applied to each, so only rounding of the
+// time function's arithmetic separates equal inputs.
+constexpr double kDriveStartTolerance = 1.0e-9;
+
+const std::vector<std::string> kJointKeys = {"type",   "axis",    "axis2", "pitch",    "spring",
+                                             "damper", "initial", "drive", "variables"};
+const std::vector<std::string> kVariableKeys = {"spring", "damper", "initial", "drive"};
+
+// Names of the relative-motion variables, in order (joint_kinematics.hpp).
+std::vector<std::string> VariableNames(JointType type) {
+  switch (type) {
+    case JointType::kRevolute: return {"phi"};
+    case JointType::kPrismatic: return {"s"};
+    case JointType::kCylindrical: return {"phi", "s"};
+    case JointType::kScrew: return {"phi"};
+    case JointType::kPlanar: return {"phi", "x", "y"};
+    case JointType::kUniversal: return {"phi1", "phi2"};
+    case JointType::kSpherical:
+    case JointType::kFixed: return {};
+  }
+  return {};
+}
+
+std::string JointLabel(const JointSpec& joint) {
+  return std::string(JointTypeName(joint.type)) + " joint '" + joint.name + "'";
+}
+
+// Units and description of one variable, from whether the kinematics rotate about it.
+struct VariableUnits {
+  Measure measure;
+  std::string position;   ///< "rad" or "m"
+  std::string stiffness;  ///< "N m/rad" or "N/m"
+  std::string damping;    ///< "N m s/rad" or "N s/m"
+};
+
+VariableUnits UnitsOf(const JointSpec& joint, int variable) {
+  const JointKinematics kinematics = MakeJointKinematics(joint);
+  const bool angular = std::any_of(kinematics.rotations.begin(), kinematics.rotations.end(),
+                                   [variable](const RotationFactor& factor) { return factor.variable == variable; });
+  const std::string description =
+      "variable " + std::to_string(variable) + " (" + VariableNames(joint.type)[variable] + ") of " + JointLabel(joint);
+  if (angular) return {{true, description}, "rad", "N m/rad", "N m s/rad"};
+  return {{false, description}, "m", "N/m", "N s/m"};
+}
+
+JointSpec* FindJoint(const Field& field, const std::string& name, UrdfModel* model) {
+  std::vector<std::string> names;
+  for (JointSpec& joint : model->spec.joints) {
+    if (joint.name == name) return &joint;
+    names.push_back(joint.name);
+  }
+  const auto frame = model->frame_joints.find(name);
+  if (frame != model->frame_joints.end()) {
+    field.Fail("joint '" + name + "' of " + model->name + " has nothing to configure: " + frame->second);
+  }
+  field.Fail(NotFoundMessage("joint", "joints", name, model->name, names));
+}
+
+void ReadJointType(const Field& field, JointSpec* joint) {
+  const Field type = field.Child("type");
+  if (!type.present()) return;
+  std::vector<std::pair<std::string, JointType>> types;
+  for (JointType t : {JointType::kRevolute, JointType::kPrismatic, JointType::kCylindrical, JointType::kScrew,
+                      JointType::kPlanar, JointType::kSpherical, JointType::kUniversal, JointType::kFixed}) {
+    types.emplace_back(JointTypeName(t), t);
+  }
+  joint->type = ReadEnum(type, "joint type", types);
+}
+
+// axis2 (universal, planar) and pitch (screw) apply to some types only; a screw needs its pitch.
+void ReadTypeParameters(const Field& field, JointSpec* joint) {
+  const Field axis2 = field.Child("axis2");
+  if (axis2.present()) {
+    if (joint->type != JointType::kUniversal && joint->type != JointType::kPlanar) {
+      axis2.Fail("applies only to universal and planar joints; this is a " + JointLabel(*joint));
+    }
+    joint->axis2_J = ReadVec3(axis2, Quantity{"a second axis in the joint frame", Bound::kAny, ""});
+  }
+  const Field pitch = field.Child("pitch");
+  const Quantity pitch_quantity{"a screw pitch", Bound::kAny, "m/rev"};
+  if (joint->type == JointType::kScrew) {
+    RequireKey(field, "pitch", Expected(pitch_quantity) + " for a screw joint");
+    joint->pitch = ReadNumber(pitch, pitch_quantity);
+  } else if (pitch.present()) {
+    pitch.Fail("applies only to screw joints; this is a " + JointLabel(*joint));
+  }
+}
+
+void CheckSecondAxis(const Field& field, const JointSpec& joint) {
+  const Field axis2 = field.Child("axis2");
+  if (axis2.present() && AreParallel(joint.axis_J, joint.axis2_J)) {
+    axis2.Fail(axis2.Text() + " is parallel to the joint axis " + FormatVector(joint.axis_J) +
+               "; expected a second axis not parallel to the first");
+  }
+}
+
+void CheckKinematics(const Field& field, const JointSpec& joint) {
+  try {
+    MakeJointKinematics(joint);
+  } catch (const ConfigError& error) {
+    field.Fail(error.what());
+  }
+}
+
+// The one field among `sources` that gives `key` (absent if none does).
+Field Pick(const std::vector<Field>& sources, const std::string& key) {
+  for (const Field& source : sources) {
+    if (source.Child(key).present()) return source.Child(key);
+  }
+  return sources.front().Child(key);
+}
+
+SpringSpec ReadSpring(const Field& field, const VariableUnits& units) {
+  CheckKeys(field, {"k", "rest", "rest_deg"});
+  const Quantity stiffness{"a stiffness", Bound::kNonNegative, units.stiffness};
+  RequireKey(field, "k", Expected(stiffness));
+  SpringSpec spring;
+  spring.stiffness = ReadNumber(field.Child("k"), stiffness);
+  OverlayMeasure(field, "rest", Quantity{"a rest position", Bound::kAny, units.position}, units.measure, &spring.rest);
+  return spring;
+}
+
+DamperSpec ReadDamper(const Field& field, const VariableUnits& units) {
+  CheckKeys(field, {"c"});
+  const Quantity coefficient{"a damping coefficient", Bound::kNonNegative, units.damping};
+  RequireKey(field, "c", Expected(coefficient));
+  return DamperSpec{ReadNumber(field.Child("c"), coefficient)};
+}
+
+// A given initial value of a driven variable must equal the drive's value (or rate) at t = 0.
+void CheckOnDrive(const Field& initial, const std::string& what, double given, double start, const std::string& unit) {
+  if (std::abs(given - start) > kDriveStartTolerance * std::max(1.0, std::abs(start))) {
+    initial.Fail(what + " " + FormatNumber(given) + " [" + unit + "] differs from the drive's " + what + " " +
+                 FormatNumber(start) + " [" + unit + "] at t = 0; expected a driven variable to start on its drive");
+  }
+}
+
+void ReadInitial(const Field& initial, const Field& drive, const VariableUnits& units, int variable, JointSpec* joint) {
+  CheckKeys(initial, {"position", "position_deg", "velocity", "velocity_deg"});
+  double& position = joint->initial_position[variable];
+  double& velocity = joint->initial_velocity[variable];
+  const std::string rate_unit = units.position + "/s";
+  const bool position_given = OverlayMeasure(
+      initial, "position", Quantity{"an initial position", Bound::kAny, units.position}, units.measure, &position);
+  const bool velocity_given = OverlayMeasure(
+      initial, "velocity", Quantity{"an initial velocity", Bound::kAny, rate_unit}, units.measure, &velocity);
+  if (!drive.present()) return;
+  // a driven variable starts on its drive: q(0) = f(0), qdot(0) = f'(0)
+  const TimeFunctionSpec& f = joint->effects[variable].drives.front();
+  if (position_given) CheckOnDrive(initial, "position", position, Evaluate(f, 0.0), units.position);
+  if (velocity_given) CheckOnDrive(initial, "velocity", velocity, EvaluateRate(f, 0.0), rate_unit);
+  position = Evaluate(f, 0.0);
+  velocity = EvaluateRate(f, 0.0);
+}
+
+// Effects and initial motion of one variable, each key taken from whichever of `sources` gives it.
+void ReadVariable(const std::vector<Field>& sources, int variable, JointSpec* joint) {
+  const VariableUnits units = UnitsOf(*joint, variable);
+  VariableEffectsSpec& effects = joint->effects[variable];
+  const Field spring = Pick(sources, "spring");
+  if (spring.present()) effects.springs = {ReadSpring(spring, units)};
+  const Field damper = Pick(sources, "damper");
+  if (damper.present()) effects.dampers = {ReadDamper(damper, units)};
+  const Field drive = Pick(sources, "drive");
+  if (drive.present()) effects.drives = {ReadTimeFunction(drive, units.position, units.measure)};
+  ReadInitial(Pick(sources, "initial"), drive, units, variable, joint);
+}
+
+std::vector<Field> ReadVariableList(const Field& field, const JointSpec& joint) {
+  const Field list = field.Child("variables");
+  const std::vector<Field> entries =
+      ListEntries(list, "a list of per-variable settings {spring, damper, initial, drive}");
+  const std::vector<std::string> names = VariableNames(joint.type);
+  if (entries.size() > names.size()) {
+    list.Fail("has " + std::to_string(entries.size()) + " entries; the " + JointLabel(joint) + " has " +
+              std::to_string(names.size()) + " variable(s)" + (names.empty() ? "" : " (" + JoinNames(names) + ")"));
+  }
+  for (const Field& entry : entries) CheckKeys(entry, kVariableKeys);
+  return entries;
+}
+
+// The shorthand keys configure variable 0, which must exist and not be configured twice.
+void CheckShorthand(const Field& field, const JointSpec& joint, const std::vector<Field>& entries) {
+  for (const std::string& key : kVariableKeys) {
+    const Field shorthand = field.Child(key);
+    if (!shorthand.present()) continue;
+    if (NumJointVariables(joint.type) == 0)
+      shorthand.Fail("the " + JointLabel(joint) + " has no relative-motion variables");
+    if (!entries.empty() && entries.front().Child(key).present()) {
+      entries.front().Child(key).Fail("variable 0 is also configured by " + shorthand.path() +
+                                      "; expected one of the two forms");
+    }
+  }
+}
+
+void ReadVariables(const Field& field, JointSpec* joint) {
+  const std::vector<Field> entries = ReadVariableList(field, *joint);
+  CheckShorthand(field, *joint, entries);
+  for (int i = 0; i < NumJointVariables(joint->type); ++i) {
+    std::vector<Field> sources;
+    if (i == 0) sources.push_back(field);
+    if (static_cast<size_t>(i) < entries.size()) sources.push_back(entries[i]);
+    if (!sources.empty()) ReadVariable(sources, i, joint);
+  }
+}
+
+void ReadJoint(const Field& field, JointSpec* joint) {
+  CheckKeys(field, kJointKeys);
+  ReadJointType(field, joint);
+  OverlayVec3(field, "axis", Quantity{"a joint axis in the joint frame", Bound::kAny, ""}, &joint->axis_J);
+  joint->axis2_J = DefaultSecondAxis(joint->axis_J);  // URDF has no second axis: only the YAML sets one
+  ReadTypeParameters(field, joint);
+  CheckSecondAxis(field, *joint);
+  CheckKinematics(field, *joint);
+  ResizeJointVariables(joint);
+  ReadVariables(field, joint);
+}
+}  // namespace
+
+void ReadJoints(const Field& joints, UrdfModel* model) {
+  for (const std::string& name : MapKeys(joints, "a map from URDF joint names to joint settings")) {
+    const Field field = joints.Child(name);
+    ReadJoint(field, FindJoint(field, name, model));
+  }
+}
+
+}  // namespace io
+}  // namespace flexmbd

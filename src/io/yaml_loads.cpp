@@ -1,0 +1,60 @@
+#include "flexmbd/io/message_text.hpp"
+#include "flexmbd/io/yaml_sections.hpp"
+
+namespace flexmbd {
+namespace io {
+namespace {
+const std::vector<std::string> kLoadKeys = {"body", "force", "moment", "frame", "point", "scale"};
+
+std::string ReadBodyName(const Field& field, const UrdfModel& model) {
+  const std::string name = ReadString(field, "a body name (a URDF link with <inertial>)");
+  std::vector<std::string> names;
+  for (const BodySpec& body : model.spec.bodies) {
+    if (body.name == name) return name;
+    names.push_back(body.name);
+  }
+  field.Fail(NotFoundMessage("body", "bodies", name, model.name, names));
+}
+
+void ReadVector(const Field& entry, LoadSpec* load) {
+  const Field force = entry.Child("force");
+  const Field moment = entry.Child("moment");
+  if (force.present() == moment.present()) {
+    entry.Fail(std::string(force.present() ? "gives both 'force' and 'moment'" : "gives neither 'force' nor 'moment'") +
+               "; expected exactly one of them");
+  }
+  load->kind = force.present() ? LoadSpec::Kind::kForce : LoadSpec::Kind::kMoment;
+  load->vector = force.present() ? ReadVec3(force, Quantity{"a force", Bound::kAny, "N"})
+                                 : ReadVec3(moment, Quantity{"a moment", Bound::kAny, "N m"});
+}
+
+LoadSpec ReadLoad(const Field& entry, const UrdfModel& model) {
+  CheckKeys(entry, kLoadKeys);
+  RequireKey(entry, "body", "the name of a body (a URDF link with <inertial>)");
+  LoadSpec load;
+  load.body = ReadBodyName(entry.Child("body"), model);
+  ReadVector(entry, &load);
+  if (entry.Child("frame").present()) {
+    load.frame = ReadEnum<LoadSpec::Frame>(entry.Child("frame"), "load frame",
+                                           {{"world", LoadSpec::Frame::kWorld}, {"body", LoadSpec::Frame::kBody}});
+  }
+  const Field point = entry.Child("point");
+  if (point.present()) {
+    if (load.kind == LoadSpec::Kind::kMoment)
+      point.Fail("applies only to forces; a moment has no point of application");
+    load.p_BoP_B = ReadVec3(point, Quantity{"a point in the body frame", Bound::kAny, "m"});
+  }
+  const Field scale = entry.Child("scale");
+  if (scale.present()) load.scale = ReadTimeFunction(scale, "", Measure{false, "a load scale factor"});
+  return load;
+}
+}  // namespace
+
+void ReadLoads(const Field& loads, const UrdfModel& model, std::vector<LoadSpec>* specs) {
+  for (const Field& entry : ListEntries(loads, "a list of loads {body, force | moment, frame, point, scale}")) {
+    specs->push_back(ReadLoad(entry, model));
+  }
+}
+
+}  // namespace io
+}  // namespace flexmbd

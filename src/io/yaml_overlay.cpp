@@ -1,0 +1,18 @@
+#include "flexmbd/io/yaml_overlay.hpp"
+
+#include "flexmbd/io/yaml_sections.hpp"
+
+namespace flexmbd {
+namespace io {
+
+void ApplyYamlOverlay(const YAML::Node& params, const std::string& params_name, UrdfModel* model) {
+  const Field root(params, params_name);
+  CheckKeys(root, {"joints", "solver", "output", "loads"});
+  ReadJoints(root.Child("joints"), model);
+  ReadSolver(root.Child("solver"), &model->spec.solver);
+  ReadOutput(root.Child("output"), &model->spec.output);
+  ReadLoads(root.Child("loads"), *model, &model->spec.loads);
+}
+
+}  // namespace io
+}  // namespace flexmbd

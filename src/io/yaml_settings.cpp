@@ -1,0 +1,73 @@
+#include "flexmbd/io/message_text.hpp"
+#include "flexmbd/io/yaml_sections.hpp"
+
+namespace flexmbd {
+namespace io {
+namespace {
+const std::vector<std::string> kSolverKeys = {"analysis",       "integrator", "rho_inf",      "t_end",  "dt",
+                                              "dt_min",         "dt_max",     "adaptive",     "tol",    "error_tol",
+                                              "max_iterations", "load_steps", "static_first", "gravity"};
+const std::vector<std::string> kOutputKeys = {"rate_hz", "csv", "bag"};
+
+// "0.01", or "0.01 (default)" if the key was not given.
+std::string ValueText(const Field& map, const std::string& key, double value) {
+  return FormatNumber(value) + (map.Child(key).present() ? "" : " (default)");
+}
+
+void CheckStepBounds(const Field& solver, const SolverSpec& spec) {
+  const std::string range = "; expected dt_min <= dt <= dt_max [s]";
+  if (spec.dt_max < spec.dt_min) {
+    solver.Child("dt_max").Fail(ValueText(solver, "dt_max", spec.dt_max) + " is less than dt_min " +
+                                ValueText(solver, "dt_min", spec.dt_min) + range);
+  }
+  if (spec.dt > spec.dt_max) {
+    solver.Child("dt").Fail(ValueText(solver, "dt", spec.dt) + " is greater than dt_max " +
+                            ValueText(solver, "dt_max", spec.dt_max) + range);
+  }
+  if (spec.dt < spec.dt_min) {
+    solver.Child("dt").Fail(ValueText(solver, "dt", spec.dt) + " is less than dt_min " +
+                            ValueText(solver, "dt_min", spec.dt_min) + range);
+  }
+}
+}  // namespace
+
+void ReadSolver(const Field& solver, SolverSpec* spec) {
+  using Analysis = SolverSpec::Analysis;
+  using Integrator = SolverSpec::Integrator;
+  CheckKeys(solver, kSolverKeys);
+  if (solver.Child("analysis").present()) {
+    spec->analysis = ReadEnum<Analysis>(solver.Child("analysis"), "analysis",
+                                        {{"dynamic", Analysis::kDynamic}, {"static", Analysis::kStatic}});
+  }
+  if (solver.Child("integrator").present()) {
+    spec->integrator = ReadEnum<Integrator>(
+        solver.Child("integrator"), "integrator",
+        {{"energy_decaying", Integrator::kEnergyDecaying}, {"energy_preserving", Integrator::kEnergyPreserving}});
+  }
+  OverlayNumber(solver, "rho_inf", Quantity{"a spectral radius rho_inf", Bound::kUnitInterval, ""}, &spec->rho_inf);
+  OverlayNumber(solver, "t_end", Quantity{"an end time", Bound::kPositive, "s"}, &spec->t_end);
+  OverlayNumber(solver, "dt", Quantity{"a time step", Bound::kPositive, "s"}, &spec->dt);
+  OverlayNumber(solver, "dt_min", Quantity{"a minimum time step", Bound::kPositive, "s"}, &spec->dt_min);
+  OverlayNumber(solver, "dt_max", Quantity{"a maximum time step", Bound::kPositive, "s"}, &spec->dt_max);
+  OverlayBool(solver, "adaptive", &spec->adaptive);
+  OverlayNumber(solver, "tol", Quantity{"a relative Newton tolerance", Bound::kPositive, ""}, &spec->tol);
+  OverlayNumber(solver, "error_tol", Quantity{"a relative local error tolerance", Bound::kPositive, ""},
+                &spec->error_tol);
+  OverlayInteger(solver, "max_iterations", Quantity{"an iteration count", Bound::kAtLeastOne, ""},
+                 &spec->max_iterations);
+  OverlayInteger(solver, "load_steps", Quantity{"a number of load steps", Bound::kAtLeastOne, ""}, &spec->load_steps);
+  OverlayBool(solver, "static_first", &spec->static_first);
+  OverlayVec3(solver, "gravity", Quantity{"a gravity acceleration", Bound::kAny, "m/s^2"}, &spec->gravity);
+  CheckStepBounds(solver, *spec);
+}
+
+void ReadOutput(const Field& output, OutputSpec* spec) {
+  CheckKeys(output, kOutputKeys);
+  OverlayNumber(output, "rate_hz", Quantity{"a sample rate (0: every step)", Bound::kNonNegative, "Hz"},
+                &spec->rate_hz);
+  OverlayString(output, "csv", "a file path (\"\" for none)", &spec->csv);
+  OverlayString(output, "bag", "a file path (\"\" for none)", &spec->bag);
+}
+
+}  // namespace io
+}  // namespace flexmbd

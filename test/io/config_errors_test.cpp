@@ -1,0 +1,269 @@
+// Bad input: every case throws ConfigError with a one-line message naming the file, the field path, the
+// offending value and the expected form (docs/config.md). Reference: the message texts of the loader.
+
+#include <gtest/gtest.h>
+
+#include "flexmbd/io/config_loader.hpp"
+#include "io_test_util.hpp"
+
+namespace flexmbd {
+namespace {
+using test::DataPath;
+using test::LoadDataUrdf;
+using test::LoadInline;
+
+ModelSpec Pendulum(const std::string& yaml) { return LoadDataUrdf("pendulum.urdf", yaml, "pendulum.yaml"); }
+
+ModelSpec DoublePendulum(const std::string& yaml) {
+  return LoadDataUrdf("double_pendulum.urdf", yaml, "double_pendulum.yaml");
+}
+
+// A prismatic joint 'slide' along x between the world and one body 'block'.
+const std::string kSliderUrdf = test::WorldUrdf({"block"}, R"(
+  <joint name="slide" type="prismatic"><parent link="world"/><child link="block"/><axis xyz="1 0 0"/>
+    <limit lower="-1" upper="1" effort="1" velocity="1"/></joint>)");
+
+// URDF
+
+TEST(ConfigErrors, MalformedUrdfIsRejected) {
+  EXPECT_CONFIG_ERROR(LoadModelSpec(DataPath("urdf/malformed_invalid.urdf"), ""),
+                      "malformed_invalid.urdf: not a valid URDF (urdfdom could not parse it)");
+}
+
+TEST(ConfigErrors, MovingLinkWithoutInertiaIsRejected) {
+  EXPECT_CONFIG_ERROR(
+      LoadModelSpec(DataPath("urdf/no_inertia_invalid.urdf"), ""),
+      "no_inertia_invalid.urdf: link 'l2' moves (joint 'j2') but has no <inertial>; expected mass and inertia");
+}
+
+TEST(ConfigErrors, NegativeMassNamesLink) {
+  EXPECT_CONFIG_ERROR(LoadModelSpec(DataPath("urdf/negative_mass_invalid.urdf"), ""),
+                      "negative_mass_invalid.urdf: link 'l1': mass -2 is not positive; expected a mass > 0 [kg]");
+}
+
+TEST(ConfigErrors, IndefiniteInertiaIsRejected) {
+  const std::string urdf = R"(<robot name="bad">
+    <link name="world"/>
+    <link name="l1"><inertial><mass value="1"/>
+      <inertia ixx="1" ixy="0" ixz="0" iyy="-1" iyz="0" izz="1"/></inertial></link>
+    <joint name="j1" type="continuous"><parent link="world"/><child link="l1"/><axis xyz="0 0 1"/></joint>
+  </robot>)";
+  EXPECT_CONFIG_ERROR(
+      LoadInline(urdf, ""),
+      "test.urdf: link 'l1': <inertia> has principal moments [-1, 1, 1]; expected a positive semi-definite");
+}
+
+TEST(ConfigErrors, NegativeUrdfDampingIsRejected) {
+  const std::string urdf = test::WorldUrdf({"l1"}, R"(
+    <joint name="j1" type="continuous"><parent link="world"/><child link="l1"/><axis xyz="0 0 1"/>
+      <dynamics damping="-0.5"/></joint>)");
+  EXPECT_CONFIG_ERROR(
+      LoadInline(urdf, ""),
+      "test.urdf: joint 'j1': <dynamics damping> -0.5 is negative; expected a damping >= 0 [N m s/rad]");
+}
+
+TEST(ConfigErrors, MissingFileCannotBeOpened) {
+  EXPECT_CONFIG_ERROR(LoadModelSpec(DataPath("urdf/no_such_file.urdf"), ""), "cannot open URDF file '");
+}
+
+// YAML: documents and keys
+
+TEST(ConfigErrors, YamlSyntaxErrorGivesLine) {
+  EXPECT_CONFIG_ERROR(LoadModelSpec(DataPath("urdf/pendulum.urdf"), DataPath("yaml/syntax_invalid.yaml")),
+                      "syntax_invalid.yaml: line 4, column 7: not valid YAML (end of map flow not found)");
+}
+
+TEST(ConfigErrors, UnknownJointListsJoints) {
+  EXPECT_CONFIG_ERROR(DoublePendulum("joints: {B7: {damper: {c: 1.0}}}"),
+                      "double_pendulum.yaml: joints.B7: no joint 'B7' in double_pendulum.urdf; joints are: B1, B2");
+}
+
+TEST(ConfigErrors, FrameJointHasNothingToConfigure) {
+  EXPECT_CONFIG_ERROR(DoublePendulum("joints: {tip_frame: {type: revolute}}"),
+                      "joints.tip_frame: joint 'tip_frame' of double_pendulum.urdf has nothing to configure: it fixes "
+                      "link 'tip', which has no <inertial>, as a frame on body 'arm2'");
+}
+
+TEST(ConfigErrors, UnknownKeySuggestsClosest) {
+  EXPECT_CONFIG_ERROR(Pendulum("solver: {dtt: 0.01}"), "pendulum.yaml: solver.dtt: unknown key; did you mean 'dt'?");
+}
+
+TEST(ConfigErrors, UnknownKeyListsValidKeys) {
+  EXPECT_CONFIG_ERROR(Pendulum("output: {video: a.mp4}"),
+                      "pendulum.yaml: output.video: unknown key; valid keys are: rate_hz, csv, bag");
+}
+
+TEST(ConfigErrors, ReservedKeyIsUnknownForNow) {
+  EXPECT_CONFIG_ERROR(Pendulum("joints: {B1: {friction: {mu_s: 0.2}}}"),
+                      "pendulum.yaml: joints.B1.friction: unknown key");
+}
+
+TEST(ConfigErrors, DuplicateKeyIsRejected) {
+  EXPECT_CONFIG_ERROR(Pendulum("solver: {dt: 0.01, dt: 0.02}"), "pendulum.yaml: solver.dt: duplicate key");
+}
+
+// YAML: values
+
+TEST(ConfigErrors, NegativeStiffnessIsRejected) {
+  EXPECT_CONFIG_ERROR(Pendulum("joints: {B1: {spring: {k: -3}}}"),
+                      "pendulum.yaml: joints.B1.spring.k: -3 is negative; expected a stiffness >= 0 [N m/rad]");
+}
+
+TEST(ConfigErrors, WrongTypeNamesFieldAndExpectedType) {
+  EXPECT_CONFIG_ERROR(Pendulum("solver: {t_end: long}"),
+                      "pendulum.yaml: solver.t_end: 'long' is not a number; expected an end time > 0 [s]");
+}
+
+TEST(ConfigErrors, EmptyValueIsNotADefault) {
+  EXPECT_CONFIG_ERROR(Pendulum("joints: {B1: {damper: {c: }}}"),
+                      "pendulum.yaml: joints.B1.damper.c: an empty value is not a number");
+}
+
+TEST(ConfigErrors, FractionalCountIsRejected) {
+  EXPECT_CONFIG_ERROR(
+      Pendulum("solver: {max_iterations: 2.5}"),
+      "pendulum.yaml: solver.max_iterations: '2.5' is not an integer; expected an iteration count >= 1");
+}
+
+TEST(ConfigErrors, RhoInfOutsideUnitIntervalIsRejected) {
+  EXPECT_CONFIG_ERROR(Pendulum("solver: {rho_inf: 1.5}"), "pendulum.yaml: solver.rho_inf: 1.5 is outside [0, 1]");
+}
+
+TEST(ConfigErrors, VectorOfWrongLengthIsRejected) {
+  EXPECT_CONFIG_ERROR(Pendulum("solver: {gravity: [0, -9.81]}"),
+                      "pendulum.yaml: solver.gravity: [0, -9.81] has 2 entries; expected [x, y, z]");
+}
+
+TEST(ConfigErrors, UnknownChoiceSuggestsClosest) {
+  EXPECT_CONFIG_ERROR(Pendulum("joints: {B1: {drive: {law: sinus}}}"),
+                      "pendulum.yaml: joints.B1.drive.law: 'sinus' is not a valid law; expected one of constant, "
+                      "linear_ramp, cosine_ramp, sine, table; did you mean 'sine'?");
+}
+
+TEST(ConfigErrors, DegreesOnPrismaticVariableAreRejected) {
+  EXPECT_CONFIG_ERROR(LoadInline(kSliderUrdf, "joints: {slide: {initial: {position_deg: 5}}}"),
+                      "test.yaml: joints.slide.initial.position_deg: degrees apply only to angles; variable 0 (s) of "
+                      "prismatic joint 'slide' is not an angle: use 'position' [m]");
+}
+
+TEST(ConfigErrors, BothSiAndDegreeFormsAreRejected) {
+  EXPECT_CONFIG_ERROR(Pendulum("joints: {B1: {initial: {position: 0.1, position_deg: 5}}}"),
+                      "pendulum.yaml: joints.B1.initial.position_deg: both 'position' and 'position_deg' are given");
+}
+
+// YAML: joints
+
+TEST(ConfigErrors, ScrewWithoutPitchIsRejected) {
+  EXPECT_CONFIG_ERROR(
+      Pendulum("joints: {B1: {type: screw}}"),
+      "pendulum.yaml: joints.B1: missing key 'pitch'; expected a screw pitch [m/rev] for a screw joint");
+}
+
+TEST(ConfigErrors, PitchOnRevoluteIsRejected) {
+  EXPECT_CONFIG_ERROR(Pendulum("joints: {B1: {pitch: 0.01}}"),
+                      "pendulum.yaml: joints.B1.pitch: applies only to screw joints; this is a revolute joint 'B1'");
+}
+
+TEST(ConfigErrors, UniversalWithParallelAxesIsRejected) {
+  EXPECT_CONFIG_ERROR(Pendulum("joints: {B1: {type: universal, axis2: [0, 2, 0]}}"),
+                      "pendulum.yaml: joints.B1.axis2: [0, 2, 0] is parallel to the joint axis [0, 1, 0]; expected a "
+                      "second axis not parallel to the first");
+}
+
+TEST(ConfigErrors, ZeroAxisFromYamlIsRejected) {
+  EXPECT_CONFIG_ERROR(Pendulum("joints: {B1: {axis: [0, 0, 0]}}"),
+                      "pendulum.yaml: joints.B1: joint 'B1': axis is zero; expected a non-zero 3-vector");
+}
+
+TEST(ConfigErrors, EffectOnJointWithoutVariablesIsRejected) {
+  EXPECT_CONFIG_ERROR(Pendulum("joints: {B1: {type: spherical, spring: {k: 1}}}"),
+                      "pendulum.yaml: joints.B1.spring: the spherical joint 'B1' has no relative-motion variables");
+}
+
+TEST(ConfigErrors, ShorthandAndVariablesOnSameKeyAreRejected) {
+  EXPECT_CONFIG_ERROR(
+      Pendulum("joints: {B1: {spring: {k: 1}, variables: [{spring: {k: 2}}]}}"),
+      "pendulum.yaml: joints.B1.variables[0].spring: variable 0 is also configured by joints.B1.spring");
+}
+
+TEST(ConfigErrors, TooManyVariableEntriesAreRejected) {
+  EXPECT_CONFIG_ERROR(
+      Pendulum("joints: {B1: {variables: [{}, {}]}}"),
+      "pendulum.yaml: joints.B1.variables: has 2 entries; the revolute joint 'B1' has 1 variable(s) (phi)");
+}
+
+TEST(ConfigErrors, InitialPositionOffTheDriveIsRejected) {
+  EXPECT_CONFIG_ERROR(
+      Pendulum("joints: {B1: {initial: {position: 0.1}, drive: {law: constant, value: 0.2}}}"),
+      "pendulum.yaml: joints.B1.initial: position 0.1 [rad] differs from the drive's position 0.2 [rad] at t = 0; "
+      "expected a driven variable to start on its drive");
+}
+
+TEST(ConfigErrors, InitialVelocityOffTheDriveIsRejected) {
+  EXPECT_CONFIG_ERROR(
+      Pendulum("joints: {B1: {initial: {velocity: 1}, drive: {law: linear_ramp, value: 2, duration: 4}}}"),
+      "pendulum.yaml: joints.B1.initial: velocity 1 [rad/s] differs from the drive's velocity 0.5 [rad/s] at t = 0");
+}
+
+// YAML: time functions
+
+TEST(ConfigErrors, NonIncreasingTableIsRejected) {
+  EXPECT_CONFIG_ERROR(
+      Pendulum("joints: {B1: {drive: {law: table, times: [0, 0.5, 0.5], values: [0, 1, 2]}}}"),
+      "pendulum.yaml: joints.B1.drive.times[2]: 0.5 is not greater than the previous time 0.5; expected "
+      "strictly increasing times [s]");
+}
+
+TEST(ConfigErrors, TableSizesMustMatch) {
+  EXPECT_CONFIG_ERROR(
+      Pendulum("joints: {B1: {drive: {law: table, times: [0, 1, 2], values_deg: [0, 1]}}}"),
+      "pendulum.yaml: joints.B1.drive.values_deg: has 2 entries but times has 3; expected one value per time");
+}
+
+TEST(ConfigErrors, KeyOfAnotherLawIsRejected) {
+  EXPECT_CONFIG_ERROR(
+      Pendulum("joints: {B1: {drive: {law: constant, amplitude: 1}}}"),
+      "pendulum.yaml: joints.B1.drive.amplitude: does not apply to law 'constant'; it takes: law, value, value_deg");
+}
+
+TEST(ConfigErrors, NonPositiveRampDurationIsRejected) {
+  EXPECT_CONFIG_ERROR(Pendulum("joints: {B1: {drive: {law: cosine_ramp, value: 1, duration: 0}}}"),
+                      "pendulum.yaml: joints.B1.drive.duration: 0 is zero; expected a duration > 0 [s]");
+}
+
+// YAML: solver and loads
+
+TEST(ConfigErrors, DtAboveDtMaxIsRejected) {
+  EXPECT_CONFIG_ERROR(Pendulum("solver: {dt: 0.5, dt_max: 0.1}"),
+                      "pendulum.yaml: solver.dt: 0.5 is greater than dt_max 0.1; expected dt_min <= dt <= dt_max [s]");
+}
+
+TEST(ConfigErrors, DtAboveDefaultDtMaxSaysDefault) {
+  EXPECT_CONFIG_ERROR(Pendulum("solver: {dt: 0.5}"),
+                      "pendulum.yaml: solver.dt: 0.5 is greater than dt_max 0.1 (default)");
+}
+
+TEST(ConfigErrors, LoadWithForceAndMomentIsRejected) {
+  EXPECT_CONFIG_ERROR(Pendulum("loads: [{body: rod, force: [1, 0, 0], moment: [0, 0, 1]}]"),
+                      "pendulum.yaml: loads[0]: gives both 'force' and 'moment'; expected exactly one of them");
+}
+
+TEST(ConfigErrors, LoadOnUnknownBodyListsBodies) {
+  EXPECT_CONFIG_ERROR(
+      Pendulum("loads: [{body: rdo, force: [1, 0, 0]}]"),
+      "pendulum.yaml: loads[0].body: no body 'rdo' in pendulum.urdf; bodies are: rod; did you mean 'rod'?");
+}
+
+TEST(ConfigErrors, PointOnMomentIsRejected) {
+  EXPECT_CONFIG_ERROR(Pendulum("loads: [{body: rod, moment: [0, 0, 1], point: [1, 0, 0]}]"),
+                      "pendulum.yaml: loads[0].point: applies only to forces");
+}
+
+TEST(ConfigErrors, NonMapDocumentIsRejected) {
+  EXPECT_CONFIG_ERROR(
+      Pendulum("just text"),
+      "pendulum.yaml: 'just text' is not a map; expected a map with keys joints, solver, output, loads");
+}
+
+}  // namespace
+}  // namespace flexmbd

@@ -1,0 +1,241 @@
+// Analytic element tangents (AddTangent) against central finite differences of the element residuals
+// (AddResidual) w.r.t. the element's local unknowns. The residual depends on the trial unknowns through the
+// StepContext, so each difference perturbs one global unknown and rebuilds the context with the builder.
+
+#include <gtest/gtest.h>
+
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "flexmbd/effects/variable_effects.hpp"
+#include "flexmbd/elements/applied_load.hpp"
+#include "flexmbd/elements/rigid_body.hpp"
+#include "flexmbd/joints/joint.hpp"
+#include "flexmbd/model/model.hpp"
+#include "flexmbd/solver/step_context_builder.hpp"
+#include "tangent_test_models.hpp"
+#include "unit_test_helpers.hpp"
+
+namespace flexmbd {
+namespace {
+
+// Step size of the dynamic tests [s].
+constexpr double kStepSize = 0.01;
+// Central-difference step on unknowns of size 0.01..10.
+constexpr double kFiniteDifferenceStep = 1.0e-6;
+// Relative to the largest tangent entry. Central differences: truncation ~ step^2 |r'''| ~ 1e-12, round-off
+// ~ 1e-16 |r| / step ~ 1e-10. The joint's own geometric stiffness is a forward difference with step 1.5e-8,
+// whose truncation step/2 |d2(G^T lambda)| reaches ~2e-7 of the largest entry for |lambda| ~ 10 (observed):
+// 1e-5 leaves a margin of 50 over that, while a missing or wrong term fails by orders.
+constexpr double kTangentTolerance = 1.0e-5;
+
+using ContextAt = std::function<const StepContext&(const Eigen::VectorXd& unknowns)>;
+
+Eigen::VectorXd LocalResidual(const Element& e, const StepContext& ctx) {
+  Eigen::VectorXd r = Eigen::VectorXd::Zero(e.num_local()), magnitude = Eigen::VectorXd::Zero(e.num_local());
+  e.AddResidual(ctx, r, magnitude);
+  return r;
+}
+
+Eigen::MatrixXd LocalTangent(const Element& e, const StepContext& ctx) {
+  Eigen::MatrixXd J = Eigen::MatrixXd::Zero(e.num_local(), e.num_local());
+  e.AddTangent(ctx, J);
+  return J;
+}
+
+Eigen::MatrixXd FiniteDifferenceTangent(const Element& e, const ContextAt& context_at, const Eigen::VectorXd& u) {
+  Eigen::MatrixXd J(e.num_local(), e.num_local());
+  for (int j = 0; j < e.num_local(); ++j) {
+    Eigen::VectorXd plus = u, minus = u;
+    plus[e.unknowns()[j]] += kFiniteDifferenceStep;
+    minus[e.unknowns()[j]] -= kFiniteDifferenceStep;
+    const Eigen::VectorXd r_plus = LocalResidual(e, context_at(plus));
+    const Eigen::VectorXd r_minus = LocalResidual(e, context_at(minus));
+    J.col(j) = (r_plus - r_minus) / (2.0 * kFiniteDifferenceStep);
+  }
+  return J;
+}
+
+// Compares the analytic tangent at u with finite differences; names the worst entry on failure.
+void ExpectTangentMatchesFiniteDifference(const Element& e, const ContextAt& context_at, const Eigen::VectorXd& u,
+                                          const std::string& what) {
+  const Eigen::MatrixXd fd = FiniteDifferenceTangent(e, context_at, u);
+  const Eigen::MatrixXd J = LocalTangent(e, context_at(u));
+  const double scale = std::max(1.0, test::MaxAbs(fd));
+  Eigen::Index row = 0, col = 0;
+  const double worst = (J - fd).cwiseAbs().maxCoeff(&row, &col);
+  EXPECT_LT(worst, kTangentTolerance * scale)
+      << what << ": entry (" << row << ", " << col << ") analytic " << J(row, col) << " finite difference "
+      << fd(row, col) << ", scale " << scale;
+}
+
+template <typename ElementType>
+std::vector<const ElementType*> ElementsOf(const Model& model) {
+  std::vector<const ElementType*> found;
+  for (const auto& e : model.elements()) {
+    if (const auto* typed = dynamic_cast<const ElementType*>(e.get())) found.push_back(typed);
+  }
+  return found;
+}
+
+// Checks every element of the type in dynamic mode at random trial points, for alpha 0 and 0.1.
+template <typename ElementType>
+void ExpectDynamicTangents(const Model& model, unsigned seed) {
+  const std::vector<const ElementType*> elements = ElementsOf<ElementType>(model);
+  ASSERT_FALSE(elements.empty());
+  test::Random random(seed);
+  StepContextBuilder builder(model);
+  builder.set_geometric_stiffness(true);
+  for (double alpha : {0.0, 0.1}) {
+    const std::vector<NodeSchemeCoefficients> coefficients(model.num_nodes(), NodeSchemeCoefficients{alpha, alpha});
+    for (int trial = 0; trial < 3; ++trial) {
+      const State start = test::PerturbedState(model, &random);
+      const Eigen::VectorXd u = test::RandomUnknowns(model, &random);
+      const ContextAt context_at = [&](const Eigen::VectorXd& unknowns) -> const StepContext& {
+        return builder.Dynamic(start, unknowns, kStepSize, coefficients);
+      };
+      for (const ElementType* e : elements) {
+        ExpectTangentMatchesFiniteDifference(*e, context_at, u,
+                                             "alpha " + std::to_string(alpha) + " trial " + std::to_string(trial));
+      }
+    }
+  }
+}
+
+// Checks every element of the type in static mode at random iterates. The node increments are zero, as in the
+// static solver, which linearises at the iterate: static node steps take the rotation increment as a further
+// rotation R Exp(d) of the moved pose (T = I), exact at zero increment. Variable increments and multipliers are
+// random.
+template <typename ElementType>
+void ExpectStaticTangents(const Model& model, unsigned seed) {
+  const std::vector<const ElementType*> elements = ElementsOf<ElementType>(model);
+  ASSERT_FALSE(elements.empty());
+  test::Random random(seed);
+  StepContextBuilder builder(model);
+  builder.set_geometric_stiffness(true);
+  for (int trial = 0; trial < 3; ++trial) {
+    const State iterate = test::PerturbedState(model, &random);
+    Eigen::VectorXd u = test::RandomUnknowns(model, &random);
+    u.head(6 * model.num_nodes()).setZero();
+    const double load_factor = random.Uniform(0.2, 1.0);
+    const ContextAt context_at = [&](const Eigen::VectorXd& unknowns) -> const StepContext& {
+      return builder.Static(iterate, unknowns, iterate.t, load_factor);
+    };
+    for (const ElementType* e : elements) {
+      ExpectTangentMatchesFiniteDifference(*e, context_at, u, "static trial " + std::to_string(trial));
+    }
+  }
+}
+
+TEST(ElementTangent, RigidBodyDynamicMatchesFiniteDifference) {
+  // Reference: central differences of m (v_f - v_i)/h - m g and (Exp(theta) J w_f - J w_i)/h, w_f from (T3).
+  ExpectDynamicTangents<RigidBody>(BuildModel(test::WorldRevoluteModel()), 201);
+}
+
+TEST(ElementTangent, VariableSpringDynamicMatchesFiniteDifference) {
+  // Reference: central differences of k (q_m - rest): k/2 per unit dq.
+  ExpectDynamicTangents<VariableSpring>(BuildModel(test::WorldRevoluteModel()), 202);
+}
+
+TEST(ElementTangent, VariableDamperDynamicMatchesFiniteDifference) {
+  // Reference: central differences of c (q_f - q_i)/h.
+  ExpectDynamicTangents<VariableDamper>(BuildModel(test::WorldRevoluteModel()), 203);
+}
+
+TEST(ElementTangent, VariableDriveDynamicMatchesFiniteDifference) {
+  // Reference: central differences of (lambda, q_f - f(t_f)).
+  ExpectDynamicTangents<VariableDrive>(BuildModel(test::WorldRevoluteModel()), 204);
+}
+
+TEST(ElementTangent, WorldRevoluteJointDynamicMatchesFiniteDifference) {
+  // Reference: central differences of (G^T lambda, phi_f) with the geometric stiffness on.
+  ExpectDynamicTangents<Joint>(BuildModel(test::WorldRevoluteModel()), 205);
+}
+
+TEST(ElementTangent, AppliedDeadForceAtOffsetStaticMatchesFiniteDifference) {
+  // Reference: central differences of -(F, p x R^T F) at the iterate. (The dynamic tangent documents that it
+  // omits the load-rotation terms, so only statics is checked.)
+  ExpectStaticTangents<AppliedLoad>(BuildModel(test::WorldRevoluteModel()), 206);
+}
+
+TEST(ElementTangent, WorldRevoluteJointStaticMatchesFiniteDifference) {
+  // Reference: central differences of (G^T lambda, phi) at the iterate, geometric stiffness on.
+  ExpectStaticTangents<Joint>(BuildModel(test::WorldRevoluteModel()), 207);
+}
+
+TEST(ElementTangent, RigidBodyStaticMatchesFiniteDifference) {
+  // Reference: the static residual is the constant weight -lf m g: zero tangent.
+  ExpectStaticTangents<RigidBody>(BuildModel(test::WorldRevoluteModel()), 208);
+}
+
+TEST(ElementTangent, VariableEffectsStaticMatchFiniteDifference) {
+  // Reference: central differences of k (q - rest) (slope k), of the damper's zero static force, and of the drive.
+  const Model model = BuildModel(test::WorldRevoluteModel());
+  ExpectStaticTangents<VariableSpring>(model, 209);
+  ExpectStaticTangents<VariableDamper>(model, 210);
+  ExpectStaticTangents<VariableDrive>(model, 211);
+}
+
+TEST(ElementInterface, ResidualAndTangentTogetherEqualSeparateCalls) {
+  // Reference: AddResidualAndTangent (used by the assembly) must add exactly what AddResidual and AddTangent add,
+  // and with J null exactly the residual; for every element of both models, dynamic and static.
+  // Same arithmetic in the same order is expected, but allow a few ulp of each entry for a shared evaluation.
+  constexpr double kSameArithmetic = 1.0e-14;
+  test::Random random(240);
+  for (const ModelSpec& spec : {test::WorldRevoluteModel(), test::SingleJointModel(JointType::kPlanar, false)}) {
+    const Model model = BuildModel(spec);
+    StepContextBuilder builder(model);
+    builder.set_geometric_stiffness(true);
+    const State start = test::PerturbedState(model, &random);
+    Eigen::VectorXd u = test::RandomUnknowns(model, &random);
+    const std::vector<NodeSchemeCoefficients> coefficients(model.num_nodes(), NodeSchemeCoefficients{0.1, 0.1});
+    for (bool dynamic : {true, false}) {
+      if (!dynamic) u.head(6 * model.num_nodes()).setZero();
+      const StepContext& ctx =
+          dynamic ? builder.Dynamic(start, u, kStepSize, coefficients) : builder.Static(start, u, start.t, 0.7);
+      for (const auto& e : model.elements()) {
+        const int m = e->num_local();
+        const Eigen::VectorXd r = LocalResidual(*e, ctx);
+        const Eigen::MatrixXd J = LocalTangent(*e, ctx);
+        Eigen::VectorXd r_both = Eigen::VectorXd::Zero(m), mag_both = r_both, r_only = r_both, mag_only = r_both;
+        Eigen::VectorXd mag = Eigen::VectorXd::Zero(m), scratch = Eigen::VectorXd::Zero(m);
+        e->AddResidual(ctx, scratch, mag);
+        Eigen::MatrixXd J_both = Eigen::MatrixXd::Zero(m, m);
+        Eigen::Ref<Eigen::MatrixXd> J_ref = J_both;
+        e->AddResidualAndTangent(ctx, r_both, mag_both, &J_ref);
+        e->AddResidualAndTangent(ctx, r_only, mag_only, nullptr);
+        const double scale = 1.0 + test::MaxAbs(r) + test::MaxAbs(J);
+        EXPECT_LT(test::MaxAbs(r_both - r), kSameArithmetic * scale) << model.source();
+        EXPECT_LT(test::MaxAbs(r_only - r), kSameArithmetic * scale) << model.source();
+        EXPECT_LT(test::MaxAbs(mag_both - mag), kSameArithmetic * scale) << model.source();
+        EXPECT_LT(test::MaxAbs(J_both - J), kSameArithmetic * scale) << model.source();
+      }
+    }
+  }
+}
+
+class JointTangent : public ::testing::TestWithParam<test::JointCase> {};
+
+TEST_P(JointTangent, DynamicMatchesFiniteDifference) {
+  // Reference: central differences of (G^T lambda, phi_f) in dynamic mode, geometric stiffness on.
+  const Model model = BuildModel(test::SingleJointModel(GetParam().type, GetParam().world_parent));
+  ExpectDynamicTangents<Joint>(model, 300 + static_cast<unsigned>(GetParam().type));
+}
+
+TEST_P(JointTangent, StaticMatchesFiniteDifference) {
+  // Reference: central differences of (G^T lambda, phi) in static mode, geometric stiffness on.
+  const Model model = BuildModel(test::SingleJointModel(GetParam().type, GetParam().world_parent));
+  ExpectStaticTangents<Joint>(model, 400 + static_cast<unsigned>(GetParam().type));
+}
+
+TEST_P(JointTangent, RigidBodiesDynamicMatchFiniteDifference) {
+  // Reference: central differences of the inertial residuals of the bodies of the same model.
+  const Model model = BuildModel(test::SingleJointModel(GetParam().type, GetParam().world_parent));
+  ExpectDynamicTangents<RigidBody>(model, 500 + static_cast<unsigned>(GetParam().type));
+}
+
+INSTANTIATE_TEST_SUITE_P(AllTypes, JointTangent, ::testing::ValuesIn(test::AllJointCases()), test::JointCaseName);
+
+}  // namespace
+}  // namespace flexmbd

@@ -1,0 +1,61 @@
+#pragma once
+// Hand-written ModelSpecs shared by the verification tests (no files involved, so the tests check the core
+// alone).
+
+#include <cmath>
+#include <string>
+
+#include "flexmbd/model/model_spec.hpp"
+
+namespace flexmbd {
+namespace test {
+
+// A body of mass m with centre of mass at distance `arm` along its x axis and isotropic inertia i_cm.
+inline BodySpec ArmBody(const std::string& name, double m, double arm, double i_cm) {
+  BodySpec b;
+  b.name = name;
+  b.mass = m;
+  b.inertia_cm_B = i_cm * Mat3::Identity();
+  b.p_BoBcm_B = Vec3(arm, 0, 0);
+  return b;
+}
+
+// A revolute joint about y between parent (empty = world) and child, at p_PJ in the parent frame.
+inline JointSpec RevoluteY(const std::string& name, const std::string& parent, const std::string& child,
+                           const Vec3& p_PJ) {
+  JointSpec j;
+  j.name = name;
+  j.type = JointType::kRevolute;
+  j.parent = parent;
+  j.child = child;
+  j.p_PJ = p_PJ;
+  j.axis_J = Vec3::UnitY();
+  j.effects.resize(1);
+  return j;
+}
+
+// Pendulum: arm along +x at q = 0 (horizontal), pivot at the origin, gravity -z, released from rest.
+inline ModelSpec Pendulum(double m, double arm, double i_cm) {
+  ModelSpec spec;
+  spec.source = "pendulum (test)";
+  spec.bodies.push_back(ArmBody("link", m, arm, i_cm));
+  spec.joints.push_back(RevoluteY("pivot", "", "link", Vec3::Zero()));
+  spec.solver.gravity = Vec3(0, 0, -9.81);
+  spec.solver.adaptive = false;
+  spec.output.rate_hz = 0;
+  return spec;
+}
+
+// Double pendulum with both arms horizontal at q = 0; link 2 hangs from the end of link 1 (x = 2 arm1).
+inline ModelSpec DoublePendulum(double m, double arm, double i_cm) {
+  ModelSpec spec = Pendulum(m, arm, i_cm);
+  spec.source = "double pendulum (test)";
+  BodySpec second = ArmBody("link2", m, arm, i_cm);
+  second.p_WB = Vec3(2 * arm, 0, 0);
+  spec.bodies.push_back(second);
+  spec.joints.push_back(RevoluteY("elbow", "link", "link2", Vec3(2 * arm, 0, 0)));
+  return spec;
+}
+
+}  // namespace test
+}  // namespace flexmbd
