@@ -1,0 +1,90 @@
+// The command-line runner on bad input: one clear line on stderr naming the file and field, and a non-zero
+// exit status (2 for bad input), never a crash. Runs the real flexmbd_run binary.
+
+#include <gtest/gtest.h>
+
+#include <sys/wait.h>
+
+#include <cstdio>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+namespace {
+
+struct RunOutcome {
+  int exit_status = -1;
+  std::string stderr_text;
+};
+
+RunOutcome RunRunner(const std::string& arguments) {
+  const std::string err_path = testing::TempDir() + "runner_stderr.txt";
+  const std::string command = std::string(FLEXMBD_RUNNER) + " " + arguments + " > /dev/null 2> " + err_path;
+  const int status = std::system(command.c_str());
+  RunOutcome out;
+  out.exit_status = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  std::ifstream err(err_path);
+  std::ostringstream text;
+  text << err.rdbuf();
+  out.stderr_text = text.str();
+  return out;
+}
+
+std::string Data(const std::string& relative) { return std::string(FLEXMBD_SOURCE_DIR) + "/test/data/" + relative; }
+
+// Writes a YAML file for one test and returns its path.
+std::string WriteYaml(const std::string& name, const std::string& text) {
+  const std::string path = testing::TempDir() + name;
+  std::ofstream(path) << text;
+  return path;
+}
+
+constexpr int kBadInputExit = 2;
+
+TEST(RunnerExit, MalformedUrdfExitsWithTwoAndNamesFile) {
+  const RunOutcome out = RunRunner("--urdf " + Data("urdf/malformed_invalid.urdf") + " --config " +
+                                   Data("yaml/pendulum.yaml"));
+  EXPECT_EQ(out.exit_status, kBadInputExit);
+  EXPECT_NE(out.stderr_text.find("malformed_invalid.urdf"), std::string::npos) << out.stderr_text;
+}
+
+TEST(RunnerExit, MovingLinkWithoutInertiaExitsWithTwo) {
+  const RunOutcome out = RunRunner("--urdf " + Data("urdf/no_inertia_invalid.urdf") + " --config \"\"");
+  EXPECT_EQ(out.exit_status, kBadInputExit);
+  EXPECT_NE(out.stderr_text.find("inertial"), std::string::npos) << out.stderr_text;
+}
+
+TEST(RunnerExit, NegativeMassExitsWithTwo) {
+  const RunOutcome out = RunRunner("--urdf " + Data("urdf/negative_mass_invalid.urdf") + " --config \"\"");
+  EXPECT_EQ(out.exit_status, kBadInputExit);
+  EXPECT_NE(out.stderr_text.find("mass"), std::string::npos) << out.stderr_text;
+}
+
+TEST(RunnerExit, UnknownJointNameExitsWithTwoAndListsJoints) {
+  const std::string yaml = WriteYaml("unknown_joint.yaml", "joints:\n  B7:\n    damper: {c: 1.0}\n");
+  const RunOutcome out = RunRunner("--urdf " + Data("urdf/pendulum.urdf") + " --config " + yaml);
+  EXPECT_EQ(out.exit_status, kBadInputExit);
+  EXPECT_NE(out.stderr_text.find("joints.B7"), std::string::npos) << out.stderr_text;
+}
+
+TEST(RunnerExit, NegativeStiffnessExitsWithTwoAndNamesField) {
+  const std::string yaml = WriteYaml("negative_k.yaml", "joints:\n  B1:\n    spring: {k: -3.0}\n");
+  const RunOutcome out = RunRunner("--urdf " + Data("urdf/pendulum.urdf") + " --config " + yaml);
+  EXPECT_EQ(out.exit_status, kBadInputExit);
+  EXPECT_NE(out.stderr_text.find("joints.B1.spring.k"), std::string::npos) << out.stderr_text;
+}
+
+TEST(RunnerExit, UnknownKeyExitsWithTwoAndSuggests) {
+  const std::string yaml = WriteYaml("unknown_key.yaml", "solver: {dtt: 0.01}\n");
+  const RunOutcome out = RunRunner("--urdf " + Data("urdf/pendulum.urdf") + " --config " + yaml);
+  EXPECT_EQ(out.exit_status, kBadInputExit);
+  EXPECT_NE(out.stderr_text.find("did you mean 'dt'"), std::string::npos) << out.stderr_text;
+}
+
+TEST(RunnerExit, MissingArgumentsPrintUsageAndExitWithOne) {
+  const RunOutcome out = RunRunner("--config");
+  EXPECT_EQ(out.exit_status, 1);
+  EXPECT_NE(out.stderr_text.find("usage"), std::string::npos) << out.stderr_text;
+}
+
+}  // namespace
