@@ -47,7 +47,10 @@ RunRecord RunDoublePendulum(SolverSpec::Integrator integrator) {
     }
   });
   record.final_energy = previous;
-  EXPECT_EQ(simulation.statistics().accepted, kSteps);
+  // At this step the chaotic phases occasionally make Newton fail from the extrapolated predictor; the step is
+  // then cut and retried. Such retries must stay rare.
+  EXPECT_GE(simulation.statistics().accepted, kSteps);
+  EXPECT_LT(simulation.statistics().rejected(), kSteps / 100);
   return record;
 }
 

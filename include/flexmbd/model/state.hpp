@@ -28,6 +28,7 @@ struct State {
   std::vector<NodeState> nodes;     ///< (num_nodes)
   Eigen::VectorXd q;                ///< joint relative-motion variables [rad or m] (num_variables)
   Eigen::VectorXd qdot;             ///< their rates [rad/s or m/s] (num_variables)
+  Eigen::VectorXd qddot_prev;       ///< mean rate of change of qdot over the last accepted step (num_variables)
   Eigen::VectorXd lambda;           ///< constraint multipliers [N, N m] (num_multipliers)
   int history_steps = 0;            ///< accepted steps whose accelerations are in a_prev (0, 1 or 2+)
   double h_prev = 0.0;              ///< size of the last accepted step [s]

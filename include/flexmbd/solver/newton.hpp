@@ -1,8 +1,9 @@
 #pragma once
 /// @file
-/// Newton iteration shared by static and dynamic analyses. Converged when the force rows are small relative
-/// to the magnitude of the forces that make them up, the constraint rows are below kConstraintTolerance,
-/// and the last increment of the kinematic unknowns is small.
+/// Newton iteration shared by static and dynamic analyses (simplified: the tangent is refreshed only when
+/// convergence is slow). Converged when the force rows are small relative to the magnitude of the forces that
+/// make them up, the constraint rows are below kConstraintTolerance, and the increment computed from that
+/// residual is small; the increment is applied.
 
 #include <functional>
 
@@ -31,11 +32,12 @@ struct NewtonReport {
 double RoundOffFloor(double magnitude);
 
 /// @param noise_floor increments below this are round-off (see RoundOffFloor) whatever the tolerance.
-/// @param evaluate builds the StepContext for the current trial unknowns at a given iteration (1-based).
+/// @param evaluate builds the StepContext for the current trial unknowns at a given iteration (1-based),
+/// saying whether the tangent will be assembled from it.
 /// @param apply applies a Newton increment to the trial unknowns and returns the size (max norm) of the
 /// kinematic part of the motion it is relative to, against which increments are judged small.
 NewtonReport SolveNewton(const Model& model, SparseSystem* system, double tol, int max_iterations, double noise_floor,
-                         const std::function<const StepContext&(int iteration)>& evaluate,
+                         const std::function<const StepContext&(int iteration, bool with_tangent)>& evaluate,
                          const std::function<double(const Eigen::VectorXd& increment)>& apply);
 
 }  // namespace flexmbd

@@ -28,8 +28,9 @@ class SparseSystem {
   const Eigen::VectorXd& residual() const { return residual_; }
   const Eigen::VectorXd& magnitude() const { return magnitude_; }
 
-  /// Factorises the last assembled tangent and solves J dx = -residual. Returns false if singular.
-  bool Solve(Eigen::VectorXd* dx);
+  /// Solves J dx = -residual, factorising the last assembled tangent first if `refactorise` (otherwise the
+  /// previous factorisation is reused). Returns false if the matrix is singular.
+  bool Solve(Eigen::VectorXd* dx, bool refactorise = true);
 
   int num_nonzeros() const { return static_cast<int>(values_.size()); }
 

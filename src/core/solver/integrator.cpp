@@ -91,7 +91,10 @@ Eigen::VectorXd Integrator::Predict(const State& start, double h) const {
     x.segment<3>(model_.node_unknown(k)) = h * n.v + 0.5 * h * h * n.a_prev;
     x.segment<3>(model_.node_unknown(k) + 3) = h * n.w + 0.5 * h * h * n.alpha_prev;
   }
-  for (int k = 0; k < model_.num_variables(); ++k) x[model_.variable_unknown(k)] = h * start.qdot[k];
+  const bool has_rates = start.qddot_prev.size() == model_.num_variables();
+  for (int k = 0; k < model_.num_variables(); ++k) {
+    x[model_.variable_unknown(k)] = h * start.qdot[k] + (has_rates ? 0.5 * h * h * start.qddot_prev[k] : 0.0);
+  }
   x.tail(model_.num_multipliers()) = start.lambda;
   return x;
 }
@@ -99,17 +102,16 @@ Eigen::VectorXd Integrator::Predict(const State& start, double h) const {
 StepResult Integrator::Step(const State& start, double h, State* end) {
   std::vector<NodeSchemeCoefficients> coefficients = Coefficients(start);
   const int n_kinematic = model_.num_unknowns() - model_.num_multipliers();
-  // Quasi-Newton first (the constraint geometric stiffness is O(h^2) against inertia); the full tangent only
-  // if convergence is slow.
-  constexpr int kQuasiNewtonIterations = 4;
   StepResult result;
   Eigen::VectorXd unknowns;
   do {
     unknowns = Predict(start, h);
     result.newton = SolveNewton(
         model_, system_, model_.solver().tol, model_.solver().max_iterations, NoiseFloor(start),
-        [&](int iteration) -> const StepContext& {
-          builder_.set_geometric_stiffness(iteration > kQuasiNewtonIterations);
+        [&](int iteration, bool with_tangent) -> const StepContext& {
+          // The first tangent leaves out the geometric stiffness of constraint forces and loads (O(h^2)
+          // against inertia); a tangent refreshed because convergence was slow includes it.
+          builder_.set_geometric_stiffness(with_tangent && iteration > 1);
           return builder_.Dynamic(start, unknowns, h, coefficients);
         },
         [&](const Eigen::VectorXd& increment) {
@@ -157,6 +159,7 @@ void Integrator::Commit(const State& start, const Eigen::VectorXd& unknowns, dou
   for (int k = 0; k < model_.num_variables(); ++k) end->q[k] = (*ctx.variables)[k].q_f;
   end->lambda = unknowns.tail(model_.num_multipliers());
   end->qdot = JointRates(model_, *end);
+  end->qddot_prev = (end->qdot - start.qdot) / h;
 
   StepWork work;
   for (const auto& element : model_.elements()) element->AddStepWork(ctx, &work);

@@ -48,31 +48,46 @@ double RoundOffFloor(double magnitude) {
 }
 
 NewtonReport SolveNewton(const Model& model, SparseSystem* system, double tol, int max_iterations, double noise_floor,
-                         const std::function<const StepContext&(int iteration)>& evaluate,
+                         const std::function<const StepContext&(int iteration, bool with_tangent)>& evaluate,
                          const std::function<double(const Eigen::VectorXd& increment)>& apply) {
+  // Simplified Newton: the tangent is assembled and factorised on the first iteration and again only when the
+  // observed contraction predicts more than this many further iterations.
+  constexpr double kMaxSimplifiedIterations = 3.0;
   NewtonReport report;
   const int n_kinematic = model.num_unknowns() - model.num_multipliers();
   Eigen::VectorXd increment;
-  bool increment_small = false;
+  bool refresh = true;
+  double previous_size = std::numeric_limits<double>::infinity();
   for (int iteration = 1; iteration <= max_iterations; ++iteration) {
     report.iterations = iteration;
-    system->Assemble(evaluate(iteration), true);
+    system->Assemble(evaluate(iteration, refresh), refresh);
     const ResidualCheck check = CheckResidual(model, *system);
     report.force_residual = check.force;
     report.constraint_residual = check.constraint;
     report.worst_unknown = check.worst;
     if (!std::isfinite(check.force) || !std::isfinite(check.constraint)) return report;
-    if (check.force <= tol && check.constraint <= kConstraintTolerance && increment_small) {
-      report.converged = true;
-      return report;
-    }
-    if (!system->Solve(&increment)) {
+    if (!system->Solve(&increment, refresh)) {
       report.singular = true;
       return report;
     }
+    const double size = increment.head(n_kinematic).cwiseAbs().maxCoeff();
+    if (!refresh && size >= previous_size) {
+      // The old tangent no longer contracts: go back to the last iterate and refresh it there.
+      refresh = true;
+      continue;
+    }
     const double reference = apply(increment);
-    increment_small =
-        increment.head(n_kinematic).cwiseAbs().maxCoeff() <= tol * (reference + kIncrementFloor) + noise_floor;
+    const bool residual_small = check.force <= tol && check.constraint <= kConstraintTolerance;
+    if (residual_small && size <= tol * (reference + kIncrementFloor) + noise_floor) {
+      report.converged = true;
+      return report;
+    }
+    // Refresh the tangent when the simplified iteration would need too many more iterations at its observed
+    // contraction rate (Hairer and Wanner, Solving ODEs II, sec. IV.8).
+    const double contraction = size / previous_size;
+    const double target = tol * (reference + kIncrementFloor) + noise_floor;
+    refresh = contraction >= 1.0 || std::log(target / size) / std::log(contraction) > kMaxSimplifiedIterations;
+    previous_size = size;
   }
   return report;
 }

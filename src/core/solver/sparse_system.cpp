@@ -118,9 +118,9 @@ bool SparseSystem::Factorise() {
   return klu_->numeric != nullptr && common.status == KLU_OK;
 }
 
-bool SparseSystem::Solve(Eigen::VectorXd* dx) {
+bool SparseSystem::Solve(Eigen::VectorXd* dx, bool refactorise) {
   auto start = std::chrono::steady_clock::now();
-  const bool factorised = Factorise();
+  const bool factorised = (refactorise || klu_->numeric == nullptr) ? Factorise() : true;
   timing_.factorisation += SecondsSince(start);
   if (!factorised) return false;
   start = std::chrono::steady_clock::now();

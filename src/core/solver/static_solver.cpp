@@ -20,7 +20,7 @@ StaticResult SolveStatic(const Model& model, SparseSystem* system, State* state)
     double travelled = 0;  // size of the motion within this load step, for the increment test
     result.last = SolveNewton(
         model, system, model.solver().tol, model.solver().max_iterations, RoundOffFloor(model.length_scale()),
-        [&](int) -> const StepContext& {
+        [&](int, bool) -> const StepContext& {
           unknowns.setZero();
           unknowns.tail(model.num_multipliers()) = state->lambda;
           return builder.Static(*state, unknowns, state->t, load_factor);
