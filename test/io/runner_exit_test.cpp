@@ -81,6 +81,13 @@ TEST(RunnerExit, UnknownKeyExitsWithTwoAndSuggests) {
   EXPECT_NE(out.stderr_text.find("did you mean 'dt'"), std::string::npos) << out.stderr_text;
 }
 
+TEST(RunnerExit, RhoInfBelowSchemeRangeExitsWithTwo) {
+  const std::string yaml = WriteYaml("low_rho.yaml", "solver: {rho_inf: 0.2}\n");
+  const RunOutcome out = RunRunner("--urdf " + Data("urdf/pendulum.urdf") + " --config " + yaml);
+  EXPECT_EQ(out.exit_status, kBadInputExit);
+  EXPECT_NE(out.stderr_text.find("solver.rho_inf: 0.2"), std::string::npos) << out.stderr_text;
+}
+
 TEST(RunnerExit, MissingArgumentsPrintUsageAndExitWithOne) {
   const RunOutcome out = RunRunner("--config");
   EXPECT_EQ(out.exit_status, 1);
