@@ -42,7 +42,9 @@ void ReadSolver(const Field& solver, SolverSpec* spec) {
   if (solver.Child("integrator").present()) {
     spec->integrator = ReadEnum<Integrator>(
         solver.Child("integrator"), "integrator",
-        {{"energy_decaying", Integrator::kEnergyDecaying}, {"energy_preserving", Integrator::kEnergyPreserving}});
+        {{"energy_decaying", Integrator::kEnergyDecaying},
+         {"energy_preserving", Integrator::kEnergyPreserving},
+         {"generalized_alpha", Integrator::kGeneralizedAlpha}});
   }
   OverlayNumber(solver, "rho_inf", Quantity{"a spectral radius rho_inf", Bound::kUnitInterval, ""}, &spec->rho_inf);
   OverlayNumber(solver, "t_end", Quantity{"an end time", Bound::kPositive, "s"}, &spec->t_end);

@@ -198,5 +198,11 @@ TEST(YamlOverlay, SourceNamesBothFiles) {
   EXPECT_EQ(spec.source, "hinge.urdf + hinge.yaml");
 }
 
+TEST(YamlOverlay, GeneralizedAlphaIntegratorSelected) {
+  const ModelSpec spec = test::LoadInline(kHingeUrdf, "solver: {integrator: generalized_alpha, rho_inf: 0.2}");
+  EXPECT_EQ(spec.solver.integrator, SolverSpec::Integrator::kGeneralizedAlpha);
+  EXPECT_EQ(spec.solver.rho_inf, 0.2);
+}
+
 }  // namespace
 }  // namespace flexmbd

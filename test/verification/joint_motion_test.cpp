@@ -7,6 +7,7 @@
 
 #include "case_builders.hpp"
 #include "flexmbd/solver/simulation.hpp"
+#include "flexmbd/solver/step_context_builder.hpp"
 
 namespace flexmbd {
 namespace {

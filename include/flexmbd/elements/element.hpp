@@ -22,8 +22,10 @@ using Vec6 = Eigen::Matrix<double, 6, 1>;
 
 /// Which analysis is asking.
 enum class AnalysisMode {
-  kDynamic,  ///< a time step from state i to state f
-  kStatic,   ///< equilibrium at the current iterate: start and end coincide (theta = 0)
+  kDynamic,   ///< a time step from state i to state f with mid-step (discrete-gradient) forces
+  kStatic,    ///< equilibrium at the current iterate: start and end coincide (theta = 0)
+  kEndPoint,  ///< a time step whose equations hold at its end (generalized-alpha): forces at the current
+              ///< end iterate as in kStatic, inertia and damping from the end velocities and accelerations
 };
 
 /// Integration coefficients of the dynamic scheme for one node (docs/theory.md, eq. (T3)):
@@ -44,10 +46,13 @@ struct NodeStep {
   Vec3 v_i, v_f, w_i, w_f;
   double dvf_ddx = 0;  ///< d v_f / d dx (scalar times identity)
   double dwf_dtheta = 0;
+  Vec3 vdot_f = Vec3::Zero(), wdot_f = Vec3::Zero();  ///< end accelerations (kEndPoint only)
+  double dacc = 0;     ///< d vdot_f / d dx = d wdot_f / d theta (kEndPoint only)
 };
 
-/// Builds the configuration part of a NodeStep from the start state and the increment (dx, theta). In static
-/// mode the start is moved to the end, so the node stands still at start + increment.
+/// Builds the configuration part of a NodeStep from the start state and the increment (dx, theta). In the
+/// modes that evaluate at the end (kStatic, kEndPoint) the start is moved to the end: the node stands at
+/// start + increment with theta = 0.
 NodeStep MakeNodeStep(const NodeState& start, const Vec6& increment, AnalysisMode mode);
 
 /// Fills the velocity part of a dynamic NodeStep from the scheme relation (theory eq. (T3)); uses the start
@@ -61,6 +66,7 @@ NodeStep PerturbNodeStep(const NodeStep& node, const Vec6& d, AnalysisMode mode)
 /// One joint variable's start and trial-end values.
 struct VariableStep {
   double q_i = 0, q_f = 0, qdot_i = 0;
+  double qdot_f = 0, dqdotf_dq = 0;  ///< end rate and its derivative (kEndPoint only)
 };
 
 /// What an element may read during one evaluation.
@@ -74,8 +80,10 @@ struct StepContext {
   const std::vector<VariableStep>* variables = nullptr;
   const Eigen::VectorXd* lambda = nullptr;  ///< trial multipliers (num_multipliers)
   bool geometric_stiffness = false;  ///< add the second-derivative terms of constraint forces to the tangent
-  /// d(mid-step value)/d(increment): 1/2 in dynamics (midpoint), 1 in statics (end value).
-  double mid_rate() const { return mode == AnalysisMode::kDynamic ? 0.5 : 1.0; }
+  /// True when forces are evaluated at the end configuration (start moved to the end, theta = 0).
+  bool at_end() const { return mode != AnalysisMode::kDynamic; }
+  /// d(mid-step value)/d(increment): 1/2 with mid-step forces, 1 at the end configuration.
+  double mid_rate() const { return at_end() ? 1.0 : 0.5; }
 };
 
 /// Energy terms of one element at one state.

@@ -96,10 +96,10 @@ struct LoadSpec {
 /// Solver settings (docs/config.md, "solver").
 struct SolverSpec {
   enum class Analysis { kDynamic, kStatic };
-  enum class Integrator { kEnergyDecaying, kEnergyPreserving };
+  enum class Integrator { kEnergyDecaying, kEnergyPreserving, kGeneralizedAlpha };
   Analysis analysis = Analysis::kDynamic;
   Integrator integrator = Integrator::kEnergyDecaying;
-  double rho_inf = 0.6;            ///< high-frequency velocity amplification of the energy-decaying scheme, in [0, 1]
+  double rho_inf = 0.6;            ///< high-frequency amplification per step: energy-decaying [1/3, 1], generalized-alpha [0, 1]
   double t_end = 1.0;              ///< [s]
   double dt = 1.0e-2;              ///< initial (and, without adaptivity, fixed) step [s]
   double dt_min = 1.0e-7;          ///< [s]

@@ -16,10 +16,13 @@ struct NodeState {
   Mat3 R = Mat3::Identity();        ///< orientation R_WN
   Vec3 v = Vec3::Zero();            ///< velocity in W [m/s]
   Vec3 w = Vec3::Zero();            ///< angular velocity, in the node frame [rad/s]
-  Vec3 a_prev = Vec3::Zero();       ///< mean linear acceleration over the last accepted step, in W [m/s^2]
-  Vec3 alpha_prev = Vec3::Zero();   ///< mean angular acceleration over the last accepted step, node frame [rad/s^2]
+  Vec3 a_prev = Vec3::Zero();       ///< linear acceleration of the last accepted step, in W [m/s^2]: its mean
+                                    ///< (energy-consistent schemes) or its end value (generalized-alpha)
+  Vec3 alpha_prev = Vec3::Zero();   ///< angular acceleration of the last accepted step, node frame [rad/s^2]
   Vec3 a_prev2 = Vec3::Zero();      ///< a_prev of the step before [m/s^2]
   Vec3 alpha_prev2 = Vec3::Zero();  ///< alpha_prev of the step before [rad/s^2]
+  Vec3 a_alg = Vec3::Zero();        ///< generalized-alpha algorithmic linear acceleration [m/s^2]
+  Vec3 alpha_alg = Vec3::Zero();    ///< generalized-alpha algorithmic angular acceleration [rad/s^2]
 };
 
 /// Everything that changes during a run.
@@ -28,7 +31,8 @@ struct State {
   std::vector<NodeState> nodes;     ///< (num_nodes)
   Eigen::VectorXd q;                ///< joint relative-motion variables [rad or m] (num_variables)
   Eigen::VectorXd qdot;             ///< their rates [rad/s or m/s] (num_variables)
-  Eigen::VectorXd qddot_prev;       ///< mean rate of change of qdot over the last accepted step (num_variables)
+  Eigen::VectorXd qddot_prev;       ///< rate of change of qdot over the last accepted step (num_variables)
+  Eigen::VectorXd qacc_alg;         ///< generalized-alpha algorithmic accelerations of the variables
   Eigen::VectorXd lambda;           ///< constraint multipliers [N, N m] (num_multipliers)
   int history_steps = 0;            ///< accepted steps whose accelerations are in a_prev (0, 1 or 2+)
   double h_prev = 0.0;              ///< size of the last accepted step [s]

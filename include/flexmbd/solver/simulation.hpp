@@ -7,7 +7,7 @@
 #include <memory>
 
 #include "flexmbd/model/model.hpp"
-#include "flexmbd/solver/integrator.hpp"
+#include "flexmbd/solver/time_integrator.hpp"
 #include "flexmbd/solver/output_sample.hpp"
 #include "flexmbd/solver/sparse_system.hpp"
 #include "flexmbd/solver/static_solver.hpp"
@@ -46,7 +46,7 @@ class Simulation {
   const Model& model_;
   State state_;
   SparseSystem system_;
-  Integrator integrator_;
+  std::unique_ptr<TimeIntegrator> integrator_;
   StepController controller_;
 };
 

@@ -24,6 +24,13 @@ class StepContextBuilder {
   /// at time t with the given load factor.
   const StepContext& Static(const State& iterate, const Eigen::VectorXd& unknowns, double t, double load_factor);
 
+  /// A step of size h ending at t_f whose equations hold at its end, at the end iterate `iterate` moved by the
+  /// increments in `unknowns`. The caller fills the end velocities and accelerations (nodes(), variables()).
+  StepContext& EndPoint(const State& iterate, const Eigen::VectorXd& unknowns, double t_f, double h);
+
+  std::vector<NodeStep>& nodes() { return nodes_; }
+  std::vector<VariableStep>& variables() { return variables_; }
+
   /// The state itself, as a static evaluation with no increment (for constraint checks and outputs).
   const StepContext& AtState(const State& state);
 

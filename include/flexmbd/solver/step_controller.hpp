@@ -6,7 +6,7 @@
 #include <string>
 
 #include "flexmbd/model/model_spec.hpp"
-#include "flexmbd/solver/integrator.hpp"
+#include "flexmbd/solver/time_integrator.hpp"
 
 namespace flexmbd {
 

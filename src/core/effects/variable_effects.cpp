@@ -37,13 +37,15 @@ void VariableDamper::AddResidual(const StepContext& ctx, Eigen::Ref<Eigen::Vecto
                                  Eigen::Ref<Eigen::VectorXd> magnitude) const {
   if (ctx.mode == AnalysisMode::kStatic) return;
   const VariableStep& q = (*ctx.variables)[variable_];
-  const double force = coefficient_ * (q.q_f - q.q_i) / ctx.h;
+  const double rate = ctx.mode == AnalysisMode::kEndPoint ? q.qdot_f : (q.q_f - q.q_i) / ctx.h;
+  const double force = coefficient_ * rate;
   r[0] += force;
   magnitude[0] += std::abs(force);
 }
 
 void VariableDamper::AddTangent(const StepContext& ctx, Eigen::Ref<Eigen::MatrixXd> J) const {
   if (ctx.mode == AnalysisMode::kDynamic) J(0, 0) += coefficient_ / ctx.h;
+  if (ctx.mode == AnalysisMode::kEndPoint) J(0, 0) += coefficient_ * (*ctx.variables)[variable_].dqdotf_dq;
 }
 
 void VariableDamper::AddStepWork(const StepContext& ctx, StepWork* work) const {

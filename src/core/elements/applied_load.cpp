@@ -10,7 +10,7 @@ AppliedLoad::AppliedLoad(int node, int first_unknown, const LoadSpec& spec, cons
 }
 
 Vec6 AppliedLoad::GeneralisedForce(const StepContext& ctx, const NodeStep& n) const {
-  const double t = ctx.mode == AnalysisMode::kStatic ? ctx.t_f : 0.5 * (ctx.t_i + ctx.t_f);
+  const double t = ctx.at_end() ? ctx.t_f : 0.5 * (ctx.t_i + ctx.t_f);
   const Vec3 value = ctx.load_factor * Evaluate(spec_.scale, t) * spec_.vector;
   const Mat3 R_mid = n.R_i * Exp(0.5 * n.theta);
   Vec6 q = Vec6::Zero();
@@ -35,7 +35,7 @@ void AppliedLoad::AddTangent(const StepContext& ctx, Eigen::Ref<Eigen::MatrixXd>
   // The load stiffness (a load that turns with the body, or acts at an offset) is O(h^2) against inertia in
   // dynamics: added there only when Newton asks for the full tangent, and always in statics. Forward
   // differences with a sqrt(eps) step.
-  if (ctx.mode == AnalysisMode::kDynamic && !ctx.geometric_stiffness) return;
+  if (ctx.mode != AnalysisMode::kStatic && !ctx.geometric_stiffness) return;
   constexpr double kStep = 1.5e-8;
   const NodeStep& n = (*ctx.nodes)[node_];
   const Vec6 base = GeneralisedForce(ctx, n);

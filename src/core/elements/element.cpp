@@ -7,7 +7,7 @@ NodeStep MakeNodeStep(const NodeState& start, const Vec6& increment, AnalysisMod
   const Vec3 dx = increment.head<3>();
   const Vec3 theta = increment.tail<3>();
   n.v_i = n.v_f = n.w_i = n.w_f = Vec3::Zero();
-  if (mode == AnalysisMode::kStatic) {
+  if (mode != AnalysisMode::kDynamic) {
     n.x_i = n.x_f = start.x + dx;
     n.R_i = n.R_f = start.R * Exp(theta);
     n.dx = n.theta = Vec3::Zero();
@@ -40,7 +40,7 @@ void SetNodeStepVelocities(const NodeState& start, double h, const NodeSchemeCoe
 NodeStep PerturbNodeStep(const NodeStep& node, const Vec6& d, AnalysisMode mode) {
   NodeState start;
   Vec6 increment = d;
-  if (mode == AnalysisMode::kStatic) {
+  if (mode != AnalysisMode::kDynamic) {
     start.x = node.x_f;
     start.R = node.R_f;
   } else {

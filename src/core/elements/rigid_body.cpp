@@ -14,6 +14,19 @@ void RigidBody::AddResidual(const StepContext& ctx, Eigen::Ref<Eigen::VectorXd> 
   r.head<3>() -= weight;
   magnitude.head<3>() += weight.cwiseAbs();
   if (ctx.mode == AnalysisMode::kStatic) return;
+  if (ctx.mode == AnalysisMode::kEndPoint) {
+    // Newton-Euler at the end of the step, rotation rows in the node frame there.
+    const Vec3 translational = mass_ * n.vdot_f;
+    const Vec3 rotational = inertia_ * n.wdot_f + n.w_f.cross(inertia_ * n.w_f);
+    r.head<3>() += translational;
+    r.tail<3>() += rotational;
+    // The accelerations come from differences of increments and velocities of size h |v|: their round-off
+    // scales with the momenta over h, as in the mid-step form.
+    magnitude.head<3>() += translational.cwiseAbs() + mass_ * (n.v_f.cwiseAbs() + n.v_i.cwiseAbs()) / ctx.h;
+    magnitude.tail<3>() += (inertia_ * n.wdot_f).cwiseAbs() + n.w_f.cross(inertia_ * n.w_f).cwiseAbs() +
+                           ((inertia_ * n.w_f).cwiseAbs() + (inertia_ * n.w_i).cwiseAbs()) / ctx.h;
+    return;
+  }
   const Mat3 E = Exp(n.theta);
   r.head<3>() += mass_ * (n.v_f - n.v_i) / ctx.h;
   r.tail<3>() += (E * (inertia_ * n.w_f) - inertia_ * n.w_i) / ctx.h;
@@ -25,6 +38,12 @@ void RigidBody::AddResidual(const StepContext& ctx, Eigen::Ref<Eigen::VectorXd> 
 void RigidBody::AddTangent(const StepContext& ctx, Eigen::Ref<Eigen::MatrixXd> J) const {
   if (ctx.mode == AnalysisMode::kStatic) return;
   const NodeStep& n = (*ctx.nodes)[node_];
+  if (ctx.mode == AnalysisMode::kEndPoint) {
+    J.topLeftCorner<3, 3>().diagonal().array() += mass_ * n.dacc;
+    J.bottomRightCorner<3, 3>() +=
+        n.dacc * inertia_ + n.dwf_dtheta * (Skew(n.w_f) * inertia_ - Skew(inertia_ * n.w_f));
+    return;
+  }
   J.topLeftCorner<3, 3>().diagonal().array() += mass_ * n.dvf_ddx / ctx.h;
   // d/dtheta [Exp(theta) J w_f] = Exp(theta) (J dw_f/dtheta - Skew(J w_f) T(theta)).
   const Mat3 E = Exp(n.theta);

@@ -142,7 +142,7 @@ void Joint::AddResidualAndTangent(const StepContext& ctx, Eigen::Ref<Eigen::Vect
       moved[k / 6] = PerturbNodeStep(sides[k / 6], d, ctx.mode);
     } else {
       q_f_moved[k - node_increments] += kFiniteDifferenceStep;
-      if (ctx.mode == AnalysisMode::kStatic) q_i_moved[k - node_increments] += kFiniteDifferenceStep;
+      if (ctx.at_end()) q_i_moved[k - node_increments] += kFiniteDifferenceStep;
     }
     const Evaluation moved_e = Evaluate(moved, q_i_moved, q_f_moved);
     J->block(0, k, n, 1) += (moved_e.G.transpose() * lambda - base) / kFiniteDifferenceStep;

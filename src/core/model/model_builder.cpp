@@ -7,7 +7,7 @@
 #include "flexmbd/elements/applied_load.hpp"
 #include "flexmbd/math/time_function.hpp"
 #include "flexmbd/model/model.hpp"
-#include "flexmbd/solver/integrator.hpp"
+#include "flexmbd/solver/energy_decaying_integrator.hpp"
 #include "flexmbd/solver/step_context_builder.hpp"
 
 namespace flexmbd {

@@ -20,7 +20,7 @@ Simulation::Simulation(const Model& model)
     : model_(model),
       state_(model.initial_state()),
       system_(model),
-      integrator_(model, &system_),
+      integrator_(MakeTimeIntegrator(model, &system_)),
       controller_(model.solver()) {}
 
 OutputSample Simulation::SampleAtState(double dt, int iterations) {
@@ -65,7 +65,7 @@ void Simulation::Run(const SampleSink& sink) {
 
 StepResult Simulation::TryStep(double h) {
   State end;
-  const StepResult result = integrator_.Step(state_, h, &end);
+  const StepResult result = integrator_->Step(state_, h, &end);
   if (result.status == StepStatus::kAccepted) state_ = std::move(end);
   return result;
 }
@@ -84,7 +84,7 @@ void Simulation::Integrate(double t_end, const SampleSink& sink) {
     const StepResult result = TryStep(h);
     const double h_next = controller_.Next(h, result);
     if (result.status == StepStatus::kAccepted) {
-      const OutputSample current = MakeSample(model_, state_, integrator_.last_context(), h, result.newton.iterations);
+      const OutputSample current = MakeSample(model_, state_, integrator_->last_context(), h, result.newton.iterations);
       if (sample_period == 0) {
         sink(current);
       } else {

@@ -22,7 +22,7 @@ void StepContextBuilder::Fill(const State& start, const Eigen::VectorXd& unknown
   for (int k = 0; k < model_.num_variables(); ++k) {
     VariableStep& v = variables_[k];
     v.q_f = start.q[k] + unknowns[model_.variable_unknown(k)];
-    v.q_i = mode == AnalysisMode::kStatic ? v.q_f : start.q[k];
+    v.q_i = mode == AnalysisMode::kDynamic ? start.q[k] : v.q_f;
     v.qdot_i = start.qdot[k];
   }
   lambda_ = unknowns.tail(model_.num_multipliers());
@@ -45,6 +45,16 @@ const StepContext& StepContextBuilder::Static(const State& iterate, const Eigen:
   ctx_.t_i = ctx_.t_f = t;
   ctx_.h = 1.0;
   ctx_.load_factor = load_factor;
+  return ctx_;
+}
+
+StepContext& StepContextBuilder::EndPoint(const State& iterate, const Eigen::VectorXd& unknowns, double t_f,
+                                          double h) {
+  Fill(iterate, unknowns, AnalysisMode::kEndPoint);
+  ctx_.t_i = t_f - h;
+  ctx_.t_f = t_f;
+  ctx_.h = h;
+  ctx_.load_factor = 1.0;
   return ctx_;
 }
 

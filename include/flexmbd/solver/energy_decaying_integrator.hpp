@@ -9,43 +9,25 @@
 /// a is alpha_inf where that product is >= 0 and 0 where it is not (the step is redone with a = 0 for a node
 /// whose product turns out negative), so the energy never increases. alpha_inf = 0 is energy preserving.
 
-#include <string>
 #include <vector>
 
 #include <Eigen/Core>
 
-#include "flexmbd/solver/newton.hpp"
 #include "flexmbd/solver/step_context_builder.hpp"
+#include "flexmbd/solver/time_integrator.hpp"
 
 namespace flexmbd {
-
-class Model;
-class SparseSystem;
-
-/// Outcome of one attempted step.
-enum class StepStatus { kAccepted, kRejectedError, kNewtonDiverged, kSingularMatrix };
-const char* StepStatusName(StepStatus status);
-
-struct StepResult {
-  StepStatus status = StepStatus::kAccepted;
-  double error = 0;  ///< local error estimate relative to the target (accept if <= 1)
-  NewtonReport newton;
-};
 
 /// alpha_inf of the scheme from the high-frequency velocity amplification rho_inf in [kMinRhoInf, 1].
 constexpr double kMinRhoInf = 1.0 / 3.0;
 double DissipationFromRhoInf(double rho_inf);
 
-class Integrator {
+class EnergyDecayingIntegrator : public TimeIntegrator {
  public:
-  Integrator(const Model& model, SparseSystem* system);
+  EnergyDecayingIntegrator(const Model& model, SparseSystem* system);
 
-  /// Attempts a step of size h from `start`. On kAccepted (or kRejectedError, for the caller to decide)
-  /// `end` holds the converged end state.
-  StepResult Step(const State& start, double h, State* end);
-
-  /// The context of the last converged step (for outputs such as joint efforts).
-  const StepContext& last_context() const { return builder_.context(); }
+  StepResult Step(const State& start, double h, State* end) override;
+  const StepContext& last_context() const override { return builder_.context(); }
 
  private:
   std::vector<NodeSchemeCoefficients> Coefficients(const State& start) const;
@@ -54,10 +36,6 @@ class Integrator {
   Eigen::VectorXd Predict(const State& start, double h) const;
   void Commit(const State& start, const Eigen::VectorXd& unknowns, double h,
               const std::vector<NodeSchemeCoefficients>& coefficients, State* end);
-  // Local error estimate of the step that led to `end`, relative to the target; h_before is the size of the
-  // step before it.
-  double ErrorEstimate(const State& end, double h_before) const;
-  double NoiseFloor(const State& start) const;
 
   const Model& model_;
   SparseSystem* system_;

@@ -1,4 +1,4 @@
-#include "flexmbd/solver/integrator.hpp"
+#include "flexmbd/solver/energy_decaying_integrator.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -9,39 +9,18 @@
 
 namespace flexmbd {
 namespace {
-// Velocity scale below which the error estimate is not normalised further [m/s or rad/s].
-constexpr double kVelocityFloor = 1.0e-6;
-// Trapezoidal-family local position error is h^3 |da/dt| / 12 (docs/theory.md, (T12)).
-constexpr double kLocalErrorConstant = 1.0 / 12.0;
-
 // The dissipation of one node's translation or rotation over a step is alpha (dv - h a_prev) . M dv (M the
 // node's mass, or its inertia tensor for rotations): it is used only where that product is >= 0, judged with
 // the previous step's values beforehand and checked after convergence.
 bool Dissipates(const Vec3& dv, const Vec3& dv_lagged, const Mat3& M) { return (dv - dv_lagged).dot(M * dv) >= 0.0; }
 }  // namespace
 
-const char* StepStatusName(StepStatus status) {
-  switch (status) {
-    case StepStatus::kAccepted: return "accepted";
-    case StepStatus::kRejectedError: return "local error above tolerance";
-    case StepStatus::kNewtonDiverged: return "Newton did not converge";
-    case StepStatus::kSingularMatrix: return "singular iteration matrix";
-  }
-  return "unknown";
-}
-
 double DissipationFromRhoInf(double rho_inf) {
   // Unresolved-mode limit of (T3)-(T4): rho (1 - rho) = 2 alpha (1 + rho)^2 (docs/theory.md).
   return rho_inf * (1.0 - rho_inf) / (2.0 * (1.0 + rho_inf) * (1.0 + rho_inf));
 }
 
-double Integrator::NoiseFloor(const State& start) const {
-  double magnitude = model_.length_scale();
-  if (start.q.size() > 0) magnitude = std::max(magnitude, start.q.cwiseAbs().maxCoeff());
-  return RoundOffFloor(magnitude);
-}
-
-Integrator::Integrator(const Model& model, SparseSystem* system)
+EnergyDecayingIntegrator::EnergyDecayingIntegrator(const Model& model, SparseSystem* system)
     : model_(model),
       system_(system),
       builder_(model),
@@ -52,7 +31,7 @@ Integrator::Integrator(const Model& model, SparseSystem* system)
   for (const RigidBody* body : model.rigid_bodies()) node_inertia_[body->node()] = body->inertia();
 }
 
-std::vector<NodeSchemeCoefficients> Integrator::Coefficients(const State& start) const {
+std::vector<NodeSchemeCoefficients> EnergyDecayingIntegrator::Coefficients(const State& start) const {
   std::vector<NodeSchemeCoefficients> c(model_.num_nodes());
   if (alpha_inf_ == 0.0 || start.history_steps < 1) return c;
   const double ratio = start.history_steps >= 2 ? 1.0 : 0.0;  // no a_prev2 before the second step
@@ -64,7 +43,7 @@ std::vector<NodeSchemeCoefficients> Integrator::Coefficients(const State& start)
   return c;
 }
 
-bool Integrator::DropEnergyGainingDissipation(const State& start, double h,
+bool EnergyDecayingIntegrator::DropEnergyGainingDissipation(const State& start, double h,
                                               std::vector<NodeSchemeCoefficients>* c) const {
   const StepContext& ctx = builder_.context();
   bool dropped = false;
@@ -84,7 +63,7 @@ bool Integrator::DropEnergyGainingDissipation(const State& start, double h,
   return dropped;
 }
 
-Eigen::VectorXd Integrator::Predict(const State& start, double h) const {
+Eigen::VectorXd EnergyDecayingIntegrator::Predict(const State& start, double h) const {
   Eigen::VectorXd x = Eigen::VectorXd::Zero(model_.num_unknowns());
   for (int k = 0; k < model_.num_nodes(); ++k) {
     const NodeState& n = start.nodes[k];
@@ -99,7 +78,7 @@ Eigen::VectorXd Integrator::Predict(const State& start, double h) const {
   return x;
 }
 
-StepResult Integrator::Step(const State& start, double h, State* end) {
+StepResult EnergyDecayingIntegrator::Step(const State& start, double h, State* end) {
   std::vector<NodeSchemeCoefficients> coefficients = Coefficients(start);
   const int n_kinematic = model_.num_unknowns() - model_.num_multipliers();
   StepResult result;
@@ -107,7 +86,7 @@ StepResult Integrator::Step(const State& start, double h, State* end) {
   do {
     unknowns = Predict(start, h);
     result.newton = SolveNewton(
-        model_, system_, model_.solver().tol, model_.solver().max_iterations, NoiseFloor(start),
+        model_, system_, model_.solver().tol, model_.solver().max_iterations, NoiseFloor(model_, start),
         [&](int iteration, bool with_tangent) -> const StepContext& {
           // The first tangent leaves out the geometric stiffness of constraint forces and loads (O(h^2)
           // against inertia); a tangent refreshed because convergence was slow includes it.
@@ -129,13 +108,13 @@ StepResult Integrator::Step(const State& start, double h, State* end) {
     builder_.Dynamic(start, unknowns, h, coefficients);
   } while (DropEnergyGainingDissipation(start, h, &coefficients));
   Commit(start, unknowns, h, coefficients, end);
-  result.error = ErrorEstimate(*end, start.h_prev);
+  result.error = LocalErrorEstimate(*end, start.h_prev, model_.solver().error_tol);
   const bool too_large = model_.solver().adaptive && result.error > 1.0;
   result.status = too_large ? StepStatus::kRejectedError : StepStatus::kAccepted;
   return result;
 }
 
-void Integrator::Commit(const State& start, const Eigen::VectorXd& unknowns, double h,
+void EnergyDecayingIntegrator::Commit(const State& start, const Eigen::VectorXd& unknowns, double h,
                         const std::vector<NodeSchemeCoefficients>& coefficients, State* end) {
   const StepContext& ctx = builder_.context();
   *end = start;
@@ -175,23 +154,6 @@ void Integrator::Commit(const State& start, const Eigen::VectorXd& unknowns, dou
   end->external_work += work.external;
   end->dissipated_physical += work.dissipated;
   end->dissipated_numerical += numerical;
-}
-
-double Integrator::ErrorEstimate(const State& end, double h_before) const {
-  if (end.history_steps < 2) return 0.0;
-  const double h = end.h_prev;
-  const double v_scale = std::max(kVelocityFloor, end.peak_speed);
-  const double w_scale = std::max(kVelocityFloor, end.peak_spin);
-  // Local position error h^3 |da/dt| / 12 with da/dt ~ (a_n - a_{n-1}) / ((h + h_before)/2), relative to the
-  // displacement h v_scale of a step at the run's peak speed (a slow phase is judged on the scale of the
-  // whole motion, not of its own, vanishing, speed).
-  const double weight = kLocalErrorConstant * 2.0 * h * h / (h + h_before);
-  double error = 0;
-  for (const NodeState& n : end.nodes) {
-    error = std::max(error, weight * (n.a_prev - n.a_prev2).norm() / v_scale);
-    error = std::max(error, weight * (n.alpha_prev - n.alpha_prev2).norm() / w_scale);
-  }
-  return error / model_.solver().error_tol;
 }
 
 }  // namespace flexmbd
