@@ -87,33 +87,35 @@ TEST(EnergyDecayingScheme, SecondOrderOnSmoothMotion) {
 }
 
 TEST(EnergyDecayingScheme, DampsUnresolvedModeAtRhoInf) {
-  // Mass-spring stepped at w h = 1000 from a velocity kick: the velocity of the unresolved mode must shrink by
-  // rho_inf per step (docs/theory.md, "High-frequency damping and rho_inf"). The scheme damps the kinetic part
-  // only; the mode's potential part (alternating position, here 1e-2 of the kick) stays, which sets a floor.
+  // Mass-spring stepped at w h = 1000 from a velocity kick: the unresolved mode's velocity (kinetic part,
+  // dissipated at the node) and displacement (potential part, dissipated in the spring) must both shrink by
+  // rho_inf per step (docs/theory.md, "High-frequency damping and rho_inf"), and the energy never rise.
   const double w = std::sqrt(kStiffness / kMass);
   constexpr double kRhoInf = 0.6;
   ModelSpec spec = MassSpring(SolverSpec::Integrator::kEnergyDecaying, 1000.0 / w, 0.0);
   spec.solver.rho_inf = kRhoInf;
   spec.solver.dt_max = spec.solver.dt;
-  spec.solver.t_end = 12 * spec.solver.dt;
+  spec.solver.t_end = 30 * spec.solver.dt;
   spec.joints[0].initial_velocity = {1.0};
   spec.bodies[0].v_WBo_W = Vec3(1.0, 0, 0);
   const Model model = BuildModel(spec);
   Simulation simulation(model);
-  std::vector<double> speed;
-  double first_energy = -1, last_energy = 0;
+  std::vector<double> speed, offset, energy;
   simulation.Run([&](const OutputSample& s) {
     speed.push_back(std::abs(s.velocity[0]));
-    if (first_energy < 0) first_energy = s.total();
-    last_energy = s.total();
+    offset.push_back(std::abs(s.position[0]));
+    energy.push_back(s.total());
   });
-  ASSERT_EQ(speed.size(), 13u);
-  // Geometric mean of the per-step ratio over steps 2..6, after the start-up step and the second root (~0.14)
-  // have died out and before the floor matters. The floor and O(1/(w h)) terms shift it by about 0.01; allow 0.03.
-  const double rate = std::pow(speed[6] / speed[2], 1.0 / 4.0);
-  constexpr double kRateTolerance = 0.03;
-  EXPECT_NEAR(rate, kRhoInf, kRateTolerance);
-  EXPECT_LT(last_energy, first_energy);
+  ASSERT_EQ(speed.size(), 31u);
+  // Geometric mean of the per-step ratio over steps 10..30, after the start-up steps (no acceleration
+  // history) and the second root (~0.14) have died out; O(1/(w h)) terms shift it by ~1e-3, the gating of the
+  // dissipation on single steps by ~1e-2.
+  constexpr double kRateTolerance = 0.02;
+  EXPECT_NEAR(std::pow(speed[30] / speed[10], 1.0 / 20.0), kRhoInf, kRateTolerance);
+  EXPECT_NEAR(std::pow(offset[30] / offset[10], 1.0 / 20.0), kRhoInf, kRateTolerance);
+  // The first steps have no history and preserve energy up to the Newton tolerance (1e-12 relative).
+  const double round_off = 1.0e-12 * energy[0];
+  for (size_t k = 1; k < energy.size(); ++k) EXPECT_LE(energy[k], energy[k - 1] + round_off) << "step " << k;
 }
 
 TEST(DrivenJoint, FollowsLawAndReportsInverseDynamicsTorque) {

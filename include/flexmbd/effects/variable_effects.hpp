@@ -1,7 +1,8 @@
 #pragma once
 /// @file
 /// Effects on one relative-motion variable q of a joint, each an element of its own (docs/theory.md, (T10)):
-///   spring  Q = -k (q_m - rest), q_m the mid-step value: the exact discrete gradient of k (q - rest)^2 / 2
+///   spring  Q = -k (q_m - rest + alpha (dq - dq_lagged)), q_m the mid-step value: the exact discrete gradient
+///           of k (q - rest)^2 / 2 plus the energy-decaying scheme's dissipation k alpha (dq - dq_lagged) dq >= 0
 ///   damper  Q = -c (q_f - q_i)/h: dissipates c dq^2/h >= 0 per step
 ///   drive   q_f = f(t_f), enforced by a multiplier lambda; the drive force on q is -lambda
 
@@ -17,6 +18,7 @@ class VariableSpring : public Element {
                    Eigen::Ref<Eigen::VectorXd> magnitude) const override;
   void AddTangent(const StepContext& ctx, Eigen::Ref<Eigen::MatrixXd> J) const override;
   void AddEnergy(const State& state, const Vec3& gravity, EnergyTally* tally) const override;
+  void AddStepWork(const StepContext& ctx, StepWork* work) const override;
 
  private:
   int variable_;

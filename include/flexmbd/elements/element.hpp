@@ -66,6 +66,8 @@ NodeStep PerturbNodeStep(const NodeStep& node, const Vec6& d, AnalysisMode mode)
 /// One joint variable's start and trial-end values.
 struct VariableStep {
   double q_i = 0, q_f = 0, qdot_i = 0;
+  double alpha = 0;      ///< dissipation coefficient of the energy-decaying scheme for springs on q (>= 0)
+  double dq_lagged = 0;  ///< the previous step's increment scaled to this step, (h / h_prev) dq_prev
   double qdot_f = 0, dqdotf_dq = 0;  ///< end rate and its derivative (kEndPoint only)
 };
 
@@ -96,6 +98,7 @@ struct EnergyTally {
 struct StepWork {
   double external = 0;    ///< by applied loads and drives [J]
   double dissipated = 0;  ///< by dampers (>= 0) [J]
+  double numerical = 0;   ///< by the integrator's dissipation in elastic elements (>= 0) [J]
 };
 
 /// Base of every element. Local unknowns are a list of global indices fixed at model build.

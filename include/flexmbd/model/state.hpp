@@ -32,6 +32,8 @@ struct State {
   Eigen::VectorXd q;                ///< joint relative-motion variables [rad or m] (num_variables)
   Eigen::VectorXd qdot;             ///< their rates [rad/s or m/s] (num_variables)
   Eigen::VectorXd qddot_prev;       ///< rate of change of qdot over the last accepted step (num_variables)
+  Eigen::VectorXd qddot_prev2;      ///< qddot_prev of the step before
+  Eigen::VectorXd dq_prev;          ///< increment of each variable over the last accepted step
   Eigen::VectorXd qacc_alg;         ///< generalized-alpha algorithmic accelerations of the variables
   Eigen::VectorXd lambda;           ///< constraint multipliers [N, N m] (num_multipliers)
   int history_steps = 0;            ///< accepted steps whose accelerations are in a_prev (0, 1 or 2+)

@@ -7,7 +7,9 @@
 /// so for a conservative system
 ///   E_f - E_i = - a m (v_f - v_i - h a_prev) . (v_f - v_i) - (same for rotation with J).
 /// a is alpha_inf where that product is >= 0 and 0 where it is not (the step is redone with a = 0 for a node
-/// whose product turns out negative), so the energy never increases. alpha_inf = 0 is energy preserving.
+/// whose product turns out negative), so the energy never increases. Springs on joint variables dissipate the
+/// same way on their stretch, k a (dq - dq_lagged) dq >= 0, which damps the potential part of unresolved modes.
+/// alpha_inf = 0 is energy preserving.
 
 #include <vector>
 
@@ -30,9 +32,15 @@ class EnergyDecayingIntegrator : public TimeIntegrator {
   const StepContext& last_context() const override { return builder_.context(); }
 
  private:
-  std::vector<NodeSchemeCoefficients> Coefficients(const State& start) const;
-  // Turns off the dissipation of nodes whose converged step would gain energy; true if any was turned off.
-  bool DropEnergyGainingDissipation(const State& start, double h, std::vector<NodeSchemeCoefficients>* c) const;
+  // The dissipation coefficient of each node (kinetic part) and of each joint variable (its springs).
+  struct Coefficients {
+    std::vector<NodeSchemeCoefficients> nodes;
+    std::vector<double> variables;
+  };
+  // Chosen before the step from the previous steps' accelerations.
+  Coefficients Choose(const State& start) const;
+  // Turns off the dissipation of nodes and variables whose converged step would gain energy; true if any was.
+  bool DropEnergyGainingDissipation(const State& start, double h, Coefficients* c) const;
   Eigen::VectorXd Predict(const State& start, double h) const;
   void Commit(const State& start, const Eigen::VectorXd& unknowns, double h,
               const std::vector<NodeSchemeCoefficients>& coefficients, State* end);

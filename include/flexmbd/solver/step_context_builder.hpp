@@ -36,6 +36,10 @@ class StepContextBuilder {
 
   const StepContext& context() const { return ctx_; }
 
+  /// Dissipation coefficients of the energy-decaying scheme for the springs on each variable, used by the
+  /// dynamic contexts built next (all zero unless set).
+  void set_variable_dissipation(const std::vector<double>& alpha) { variable_alpha_ = alpha; }
+
   /// Whether the contexts built next ask for the geometric stiffness of constraint forces.
   void set_geometric_stiffness(bool on) { ctx_.geometric_stiffness = on; }
 
@@ -46,6 +50,7 @@ class StepContextBuilder {
   std::vector<NodeStep> nodes_;
   std::vector<VariableStep> variables_;
   Eigen::VectorXd lambda_;
+  std::vector<double> variable_alpha_;
   StepContext ctx_;
 };
 

@@ -14,13 +14,19 @@ VariableSpring::VariableSpring(int variable, int variable_unknown, double stiffn
 void VariableSpring::AddResidual(const StepContext& ctx, Eigen::Ref<Eigen::VectorXd> r,
                                  Eigen::Ref<Eigen::VectorXd> magnitude) const {
   const VariableStep& q = (*ctx.variables)[variable_];
-  const double force = stiffness_ * (0.5 * (q.q_i + q.q_f) - rest_);
+  const double force = stiffness_ * (0.5 * (q.q_i + q.q_f) - rest_ + q.alpha * (q.q_f - q.q_i - q.dq_lagged));
   r[0] += force;
   magnitude[0] += std::abs(force);
 }
 
 void VariableSpring::AddTangent(const StepContext& ctx, Eigen::Ref<Eigen::MatrixXd> J) const {
-  J(0, 0) += ctx.mid_rate() * stiffness_;
+  J(0, 0) += (ctx.mid_rate() + (*ctx.variables)[variable_].alpha) * stiffness_;
+}
+
+void VariableSpring::AddStepWork(const StepContext& ctx, StepWork* work) const {
+  const VariableStep& q = (*ctx.variables)[variable_];
+  const double dq = q.q_f - q.q_i;
+  work->numerical += stiffness_ * q.alpha * (dq - q.dq_lagged) * dq;
 }
 
 void VariableSpring::AddEnergy(const State& state, const Vec3&, EnergyTally* tally) const {

@@ -31,34 +31,44 @@ EnergyDecayingIntegrator::EnergyDecayingIntegrator(const Model& model, SparseSys
   for (const RigidBody* body : model.rigid_bodies()) node_inertia_[body->node()] = body->inertia();
 }
 
-std::vector<NodeSchemeCoefficients> EnergyDecayingIntegrator::Coefficients(const State& start) const {
-  std::vector<NodeSchemeCoefficients> c(model_.num_nodes());
+EnergyDecayingIntegrator::Coefficients EnergyDecayingIntegrator::Choose(const State& start) const {
+  Coefficients c;
+  c.nodes.resize(model_.num_nodes());
+  c.variables.assign(model_.num_variables(), 0.0);
   if (alpha_inf_ == 0.0 || start.history_steps < 1) return c;
   const double ratio = start.history_steps >= 2 ? 1.0 : 0.0;  // no a_prev2 before the second step
   for (int k = 0; k < model_.num_nodes(); ++k) {
     const NodeState& n = start.nodes[k];
-    c[k].alpha_translation = Dissipates(n.a_prev, ratio * n.a_prev2, Mat3::Identity()) ? alpha_inf_ : 0.0;
-    c[k].alpha_rotation = Dissipates(n.alpha_prev, ratio * n.alpha_prev2, node_inertia_[k]) ? alpha_inf_ : 0.0;
+    c.nodes[k].alpha_translation = Dissipates(n.a_prev, ratio * n.a_prev2, Mat3::Identity()) ? alpha_inf_ : 0.0;
+    c.nodes[k].alpha_rotation = Dissipates(n.alpha_prev, ratio * n.alpha_prev2, node_inertia_[k]) ? alpha_inf_ : 0.0;
+  }
+  if (start.qddot_prev2.size() != model_.num_variables()) return c;
+  for (int k = 0; k < model_.num_variables(); ++k) {
+    const double a = start.qddot_prev[k], a_before = start.qddot_prev2[k];
+    c.variables[k] = (a - a_before) * a >= 0.0 ? alpha_inf_ : 0.0;
   }
   return c;
 }
 
-bool EnergyDecayingIntegrator::DropEnergyGainingDissipation(const State& start, double h,
-                                              std::vector<NodeSchemeCoefficients>* c) const {
+bool EnergyDecayingIntegrator::DropEnergyGainingDissipation(const State& start, double h, Coefficients* c) const {
   const StepContext& ctx = builder_.context();
   bool dropped = false;
+  auto drop_unless = [&dropped](bool dissipates, double* alpha) {
+    if (*alpha > 0 && !dissipates) {
+      *alpha = 0;
+      dropped = true;
+    }
+  };
   for (int k = 0; k < model_.num_nodes(); ++k) {
     const NodeStep& s = (*ctx.nodes)[k];
     const NodeState& n = start.nodes[k];
-    NodeSchemeCoefficients& ck = (*c)[k];
-    if (ck.alpha_translation > 0 && !Dissipates(s.v_f - s.v_i, h * n.a_prev, Mat3::Identity())) {
-      ck.alpha_translation = 0;
-      dropped = true;
-    }
-    if (ck.alpha_rotation > 0 && !Dissipates(s.w_f - s.w_i, h * n.alpha_prev, node_inertia_[k])) {
-      ck.alpha_rotation = 0;
-      dropped = true;
-    }
+    drop_unless(Dissipates(s.v_f - s.v_i, h * n.a_prev, Mat3::Identity()), &c->nodes[k].alpha_translation);
+    drop_unless(Dissipates(s.w_f - s.w_i, h * n.alpha_prev, node_inertia_[k]), &c->nodes[k].alpha_rotation);
+  }
+  for (int k = 0; k < model_.num_variables(); ++k) {
+    const VariableStep& v = (*ctx.variables)[k];
+    const double dq = v.q_f - v.q_i;
+    drop_unless((dq - v.dq_lagged) * dq >= 0.0, &c->variables[k]);
   }
   return dropped;
 }
@@ -79,7 +89,7 @@ Eigen::VectorXd EnergyDecayingIntegrator::Predict(const State& start, double h) 
 }
 
 StepResult EnergyDecayingIntegrator::Step(const State& start, double h, State* end) {
-  std::vector<NodeSchemeCoefficients> coefficients = Coefficients(start);
+  Coefficients coefficients = Choose(start);
   const int n_kinematic = model_.num_unknowns() - model_.num_multipliers();
   StepResult result;
   Eigen::VectorXd unknowns;
@@ -91,7 +101,8 @@ StepResult EnergyDecayingIntegrator::Step(const State& start, double h, State* e
           // The first tangent leaves out the geometric stiffness of constraint forces and loads (O(h^2)
           // against inertia); a tangent refreshed because convergence was slow includes it.
           builder_.set_geometric_stiffness(with_tangent && iteration > 1);
-          return builder_.Dynamic(start, unknowns, h, coefficients);
+          builder_.set_variable_dissipation(coefficients.variables);
+          return builder_.Dynamic(start, unknowns, h, coefficients.nodes);
         },
         [&](const Eigen::VectorXd& increment) {
           unknowns += increment;
@@ -105,9 +116,10 @@ StepResult EnergyDecayingIntegrator::Step(const State& start, double h, State* e
       result.status = StepStatus::kNewtonDiverged;
       return result;
     }
-    builder_.Dynamic(start, unknowns, h, coefficients);
+    builder_.set_variable_dissipation(coefficients.variables);
+    builder_.Dynamic(start, unknowns, h, coefficients.nodes);
   } while (DropEnergyGainingDissipation(start, h, &coefficients));
-  Commit(start, unknowns, h, coefficients, end);
+  Commit(start, unknowns, h, coefficients.nodes, end);
   result.error = LocalErrorEstimate(*end, start.h_prev, model_.solver().error_tol);
   const bool too_large = model_.solver().adaptive && result.error > 1.0;
   result.status = too_large ? StepStatus::kRejectedError : StepStatus::kAccepted;
@@ -138,7 +150,9 @@ void EnergyDecayingIntegrator::Commit(const State& start, const Eigen::VectorXd&
   for (int k = 0; k < model_.num_variables(); ++k) end->q[k] = (*ctx.variables)[k].q_f;
   end->lambda = unknowns.tail(model_.num_multipliers());
   end->qdot = JointRates(model_, *end);
+  end->qddot_prev2 = start.qddot_prev;
   end->qddot_prev = (end->qdot - start.qdot) / h;
+  end->dq_prev = end->q - start.q;
 
   StepWork work;
   for (const auto& element : model_.elements()) element->AddStepWork(ctx, &work);
@@ -153,7 +167,7 @@ void EnergyDecayingIntegrator::Commit(const State& start, const Eigen::VectorXd&
   }
   end->external_work += work.external;
   end->dissipated_physical += work.dissipated;
-  end->dissipated_numerical += numerical;
+  end->dissipated_numerical += numerical + work.numerical;
 }
 
 }  // namespace flexmbd

@@ -24,6 +24,7 @@ void StepContextBuilder::Fill(const State& start, const Eigen::VectorXd& unknown
     v.q_f = start.q[k] + unknowns[model_.variable_unknown(k)];
     v.q_i = mode == AnalysisMode::kDynamic ? start.q[k] : v.q_f;
     v.qdot_i = start.qdot[k];
+    v.alpha = v.dq_lagged = 0.0;
   }
   lambda_ = unknowns.tail(model_.num_multipliers());
 }
@@ -32,6 +33,11 @@ const StepContext& StepContextBuilder::Dynamic(const State& start, const Eigen::
                                                const std::vector<NodeSchemeCoefficients>& coefficients) {
   Fill(start, unknowns, AnalysisMode::kDynamic);
   for (int k = 0; k < model_.num_nodes(); ++k) SetNodeStepVelocities(start.nodes[k], h, coefficients[k], &nodes_[k]);
+  const bool has_history = start.dq_prev.size() == model_.num_variables() && start.h_prev > 0;
+  for (int k = 0; k < model_.num_variables(); ++k) {
+    variables_[k].alpha = k < static_cast<int>(variable_alpha_.size()) ? variable_alpha_[k] : 0.0;
+    variables_[k].dq_lagged = has_history ? h / start.h_prev * start.dq_prev[k] : 0.0;
+  }
   ctx_.t_i = start.t;
   ctx_.t_f = start.t + h;
   ctx_.h = h;
