@@ -34,9 +34,19 @@ runner="${FLEXMBD_WS}/devel/lib/flexmbd/flexmbd_run"
 main_command=("${runner}" --urdf "${urdf}" --config "${config}" --csv "${csv}")
 
 echo "run_main: ${main_command[*]}"
-"${main_command[@]}" </dev/null || die "case '${case_name}' failed (command: ${main_command[*]})"
-[[ -s "${csv}" ]] || die "case '${case_name}' wrote no CSV at ${csv}"
+rm -f "${csv}" "${out_dir}/${case_name}"_*.png
+run_status=0
+"${main_command[@]}" </dev/null || run_status=$?
+plot=(/usr/bin/python3 "${scripts}/plot_csv.py" "${csv}" --out-dir "${out_dir}")
 
+if ((run_status != 0)); then
+  # A failed run still flushes what it computed: plot that, then report the failure.
+  if [[ -s "${csv}" ]] && "${plot[@]}" 2>/dev/null; then
+    die "case '${case_name}' failed (runner exit status ${run_status}); partial output plotted in ${out_dir}"
+  fi
+  die "case '${case_name}' failed (runner exit status ${run_status}); no plottable output"
+fi
+[[ -s "${csv}" ]] || die "case '${case_name}' wrote no CSV at ${csv}"
 echo "run_main: plotting ${csv}"
-/usr/bin/python3 "${scripts}/plot_csv.py" "${csv}" --out-dir "${out_dir}" || die "plotting ${csv} failed"
+"${plot[@]}" || die "plotting ${csv} failed"
 echo "run_main: outputs in ${out_dir}"

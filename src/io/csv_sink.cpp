@@ -16,6 +16,7 @@ CsvSink::CsvSink(const Model& model, const std::string& path) : out_(path) {
   }
   for (const Joint* joint : model.joints()) {
     for (const char* axis : {"x", "y", "z"}) out_ << ",joint." << joint->name() << ".reaction_force_" << axis;
+    for (const char* axis : {"x", "y", "z"}) out_ << ",joint." << joint->name() << ".reaction_moment_" << axis;
   }
   out_ << ",energy.kinetic,energy.potential,energy.total,energy.external_work,energy.dissipated,"
           "energy.numerical_dissipation,solver.dt,solver.iterations\n";
@@ -24,7 +25,11 @@ CsvSink::CsvSink(const Model& model, const std::string& path) : out_(path) {
 void CsvSink::Write(const OutputSample& s) {
   out_ << s.t;
   for (int k = 0; k < s.position.size(); ++k) out_ << ',' << s.position[k] << ',' << s.velocity[k] << ',' << s.effort[k];
-  for (const Vec3& f : s.reaction_force_W) out_ << ',' << f.x() << ',' << f.y() << ',' << f.z();
+  for (size_t k = 0; k < s.reaction_force_W.size(); ++k) {
+    const Vec3& f = s.reaction_force_W[k];
+    const Vec3& m = s.reaction_moment[k];
+    out_ << ',' << f.x() << ',' << f.y() << ',' << f.z() << ',' << m.x() << ',' << m.y() << ',' << m.z();
+  }
   out_ << ',' << s.kinetic << ',' << s.potential << ',' << s.total() << ',' << s.external_work << ',' << s.dissipated
        << ',' << s.numerical_dissipation << ',' << s.dt << ',' << s.iterations << '\n';
 }

@@ -35,5 +35,29 @@ TEST(StaticAnalysis, PendulumWithTorsionalSpringBalancesGravity) {
   EXPECT_NEAR(phi, 1.8954942670339809, 1.0e-9);
 }
 
+TEST(StaticAnalysis, StaticFirstStartsDynamicsAtRest) {
+  // The same pendulum, with static_first and a dynamic run: started from the static equilibrium it must stay
+  // there. Reference: the equilibrium angle 1.8954942670339809 of k phi = m g l sin(phi).
+  const double m = 2.0, l = 0.5, g = 9.81, k = m * g * l / 2.0;
+  ModelSpec spec = test::Pendulum(m, l, 1.0e-2);
+  const Mat3 R_up = AxisAngle(Vec3::UnitY(), -M_PI / 2);
+  spec.joints[0].R_PJ = R_up;
+  spec.joints[0].effects[0].springs.push_back({k, 0.0});
+  spec.joints[0].initial_position = {1.0};
+  spec.bodies[0].R_WB = R_up * AxisAngle(Vec3::UnitY(), 1.0);
+  spec.solver.static_first = true;
+  spec.solver.load_steps = 1;
+  spec.solver.dt = 1.0e-2;
+  spec.solver.t_end = 2.0;
+  spec.solver.tol = 1.0e-12;
+  const Model model = BuildModel(spec);
+  Simulation simulation(model);
+  double worst_drift = 0;
+  simulation.Run([&](const OutputSample& s) { worst_drift = std::max(worst_drift, std::abs(s.position[0] - 1.8954942670339809)); });
+  // Equilibrium to Newton accuracy; the dynamics then see residual forces of order 1e-12 relative only.
+  constexpr double kDriftTolerance = 1.0e-9;
+  EXPECT_LT(worst_drift, kDriftTolerance);
+}
+
 }  // namespace
 }  // namespace flexmbd

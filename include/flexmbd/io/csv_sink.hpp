@@ -1,7 +1,8 @@
 #pragma once
 /// @file
 /// Writes output samples as CSV: a header row, then one row per sample. Columns: t, then per joint variable
-/// joint.<name>.position/.velocity/.effort, per joint joint.<name>.reaction_force_{x,y,z} (W), then
+/// joint.<name>.position/.velocity/.effort, per joint joint.<name>.reaction_force_{x,y,z} (W) and
+/// joint.<name>.reaction_moment_{x,y,z} (rotational multipliers), then
 /// energy.kinetic/.potential/.total/.external_work/.dissipated/.numerical_dissipation, solver.dt,
 /// solver.iterations.
 
