@@ -28,8 +28,16 @@ class Simulation {
   /// Static equilibrium from the current state. Throws SolverError if Newton fails.
   StaticResult SolveStaticEquilibrium();
 
-  /// Time stepping from the current state to t_end.
+  /// Time stepping from the current state to t_end: Begin, then AdvanceTo(t_end, t_end).
   void Integrate(double t_end, const SampleSink& sink);
+
+  /// Starts time stepping at the current state (after any static analysis) and emits its sample.
+  void Begin(const SampleSink& sink);
+
+  /// Takes steps until the state reaches t_until, emitting every sample due on the way. Steps are not cut to
+  /// land on t_until (the output never limits the step) except the last one before t_end. Call after Begin;
+  /// calls may follow one another (pause and resume between them). Throws SolverError when it cannot go on.
+  void AdvanceTo(double t_until, double t_end, const SampleSink& sink);
 
   /// Attempts one step of size h; on acceptance the state advances. Books the outcome.
   StepResult TryStep(double h);
@@ -48,6 +56,11 @@ class Simulation {
   SparseSystem system_;
   std::unique_ptr<TimeIntegrator> integrator_;
   StepController controller_;
+  // Time-stepping progress between AdvanceTo calls.
+  OutputSample previous_;   ///< sample at the last accepted step, the left end of interpolation
+  long next_sample_ = 1;    ///< index of the next sample time t_start_ + k / rate
+  double t_start_ = 0.0;    ///< time of the first sample [s]
+  double h_ = 0.0;          ///< size of the next step attempt [s]
 };
 
 }  // namespace flexmbd

@@ -71,15 +71,23 @@ StepResult Simulation::TryStep(double h) {
 }
 
 void Simulation::Integrate(double t_end, const SampleSink& sink) {
+  Begin(sink);
+  AdvanceTo(t_end, t_end, sink);
+}
+
+void Simulation::Begin(const SampleSink& sink) {
+  previous_ = SampleAtState(0.0, 0);
+  sink(previous_);
+  next_sample_ = 1;
+  t_start_ = state_.t;
+  h_ = model_.solver().dt;
+}
+
+void Simulation::AdvanceTo(double t_until, double t_end, const SampleSink& sink) {
   const SolverSpec& solver = model_.solver();
   const double sample_period = model_.output().rate_hz > 0 ? 1.0 / model_.output().rate_hz : 0.0;
-  OutputSample previous = SampleAtState(0.0, 0);
-  sink(previous);
-  long next_sample = 1;
-  const double t_start = state_.t;
-  double h = solver.dt;
-  while (state_.t < t_end - kTimeEpsilon * h) {
-    h = std::min(h, solver.dt_max);
+  while (state_.t < std::min(t_until, t_end) - kTimeEpsilon * h_) {
+    double h = std::min(h_, solver.dt_max);
     if (t_end - state_.t - h < kSliverFraction * h) h = t_end - state_.t;
     const StepResult result = TryStep(h);
     const double h_next = controller_.Next(h, result);
@@ -88,15 +96,15 @@ void Simulation::Integrate(double t_end, const SampleSink& sink) {
       if (sample_period == 0) {
         sink(current);
       } else {
-        for (double t = t_start + next_sample * sample_period; t <= current.t + kTimeEpsilon * h;
-             t = t_start + ++next_sample * sample_period) {
-          sink(Interpolate(previous, current, t));
+        for (double t = t_start_ + next_sample_ * sample_period; t <= current.t + kTimeEpsilon * h;
+             t = t_start_ + ++next_sample_ * sample_period) {
+          sink(Interpolate(previous_, current, t));
         }
       }
-      previous = current;
+      previous_ = current;
     }
     if (h_next < solver.dt_min) Fail("step size fell below dt_min", h_next, result);
-    h = h_next;
+    h_ = h_next;
   }
 }
 
