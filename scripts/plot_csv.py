@@ -6,6 +6,7 @@ The CSV's first row is a header and its first column is `t` (time, s). Columns a
   joint.<name>.velocity  -> <stem>_joint_velocity.png   (velocity [rad/s or m/s])
   joint.<name>.effort    -> <stem>_joint_effort.png     (effort [N m or N])
   joint.<name>.reaction_force_<x|y|z> -> <stem>_joint_reaction_force.png (force [N])
+  joint.<name>.reaction_moment_<x|y|z> -> <stem>_joint_reaction_moment.png (moment [N m])
   joint.<name>.<other>   -> <stem>_joint_<other>.png
   energy.<kind>          -> <stem>_energy.png           (energy [J])
   solver.dt              -> <stem>_solver_dt.png        (step size [s], log scale)
@@ -40,6 +41,7 @@ KNOWN_GROUPS = {
     "joint_velocity": ("Joint velocities", "velocity [rad/s or m/s]", False),
     "joint_effort": ("Joint efforts", "effort [N m or N]", False),
     "joint_reaction_force": ("Joint reaction forces (on the child, world frame)", "force [N]", False),
+    "joint_reaction_moment": ("Joint reaction moments (on the child)", "moment [N m]", False),
     "energy": ("Energy", "energy [J]", False),
     "solver_dt": ("Solver step size", "step size [s]", True),
     "solver_iterations": ("Newton iterations per step", "iterations", False),
