@@ -16,18 +16,22 @@ class Placer {
  public:
   Placer(const std::vector<BodyMount>& free_bodies, ModelSpec* spec) : spec_(spec) {
     for (size_t i = 0; i < spec->bodies.size(); ++i) body_index_[spec->bodies[i].name] = i;
+    for (size_t i = 0; i < spec->beams.size(); ++i) beam_index_[spec->beams[i].name] = i;
     for (const JointSpec& joint : spec->joints) {
-      FLEXMBD_DEMAND(body_index_.count(joint.child) == 1 && mount_of_.count(joint.child) == 0);
+      FLEXMBD_DEMAND(body_index_.count(joint.child) + beam_index_.count(joint.child) == 1 &&
+                     mount_of_.count(joint.child) == 0);
       mount_of_[joint.child] = Mount{&joint, nullptr};
     }
     for (const BodyMount& mount : free_bodies) {
-      FLEXMBD_DEMAND(body_index_.count(mount.body) == 1 && mount_of_.count(mount.body) == 0);
+      FLEXMBD_DEMAND(body_index_.count(mount.body) + beam_index_.count(mount.body) == 1 &&
+                     mount_of_.count(mount.body) == 0);
       mount_of_[mount.body] = Mount{nullptr, &mount};
     }
   }
 
   void PlaceAll() {
     for (const BodySpec& body : spec_->bodies) Place(body.name);
+    for (const BeamSpec& beam : spec_->beams) Place(beam.name);
   }
 
  private:
@@ -47,16 +51,26 @@ class Placer {
     const FrameMotion motion = mount.joint
                                    ? ChildMotion(Place(mount.joint->parent), *mount.joint)
                                    : CarryRigidly(Place(mount.free->parent), mount.free->R_PB, mount.free->p_PB);
-    BodySpec& spec = spec_->bodies[body_index_.at(body)];
-    spec.R_WB = motion.R_WF;
-    spec.p_WB = motion.p_WF;
-    spec.v_WBo_W = motion.v_WFo_W;
-    spec.w_WB_W = motion.w_WF_W;
+    const auto rigid = body_index_.find(body);
+    if (rigid != body_index_.end()) {
+      SetPose(motion, &spec_->bodies[rigid->second]);
+    } else {
+      SetPose(motion, &spec_->beams[beam_index_.at(body)]);
+    }
     return placed_[body] = motion;
   }
 
+  // Bodies and beams carry the same initial pose and velocity fields of their link frame.
+  template <class LinkSpec>
+  static void SetPose(const FrameMotion& motion, LinkSpec* spec) {
+    spec->R_WB = motion.R_WF;
+    spec->p_WB = motion.p_WF;
+    spec->v_WBo_W = motion.v_WFo_W;
+    spec->w_WB_W = motion.w_WF_W;
+  }
+
   ModelSpec* spec_;
-  std::map<std::string, size_t> body_index_;
+  std::map<std::string, size_t> body_index_, beam_index_;
   std::map<std::string, Mount> mount_of_;
   std::map<std::string, FrameMotion> placed_;
   std::set<std::string> visited_;

@@ -72,7 +72,10 @@ struct LinkFrame {
 // Builds the model by walking the URDF tree from its root.
 class UrdfWalker {
  public:
-  UrdfWalker(const urdf::ModelInterface& urdf, const std::string& name) : urdf_(urdf) { model_.name = name; }
+  UrdfWalker(const urdf::ModelInterface& urdf, const std::string& name, const std::set<std::string>& beam_links)
+      : urdf_(urdf), beam_links_(beam_links) {
+    model_.name = name;
+  }
 
   UrdfModel Walk() {
     const urdf::Link& root = *urdf_.getRoot();
@@ -83,6 +86,11 @@ class UrdfWalker {
 
  private:
   void AddRoot(const urdf::Link& root) {
+    if (beam_links_.count(root.name)) {
+      AddBeam(root);
+      model_.free_bodies.push_back(BodyMount{root.name, "", Mat3::Identity(), Vec3::Zero()});
+      return;
+    }
     if (root.name == "world" || !root.inertial) {
       frames_[root.name] = LinkFrame{};
       return;
@@ -105,24 +113,37 @@ class UrdfWalker {
     const urdf::Pose& origin = joint.parent_to_joint_origin_transform;
     const LinkFrame joint_frame{parent.body, parent.R * ToMat3(origin.rotation),
                                 parent.p + parent.R * ToVec3(origin.position)};
-    if (joint.type == urdf::Joint::FIXED && !child.inertial) {
+    const bool beam = beam_links_.count(child.name) > 0;
+    if (joint.type == urdf::Joint::FIXED && !child.inertial && !beam) {
       frames_[child.name] = joint_frame;
       model_.frame_joints[joint.name] = "it fixes link '" + child.name + "', which has no <inertial>, as a frame on " +
                                         (parent.body.empty() ? "the ground" : "body '" + parent.body + "'");
       return;
     }
-    if (!child.inertial) {
+    if (!child.inertial && !beam) {
       Fail("link '" + child.name + "' moves (joint '" + joint.name +
            "') but has no <inertial>; expected mass and inertia");
     }
-    model_.spec.bodies.push_back(MakeBody(child));
-    frames_[child.name] = LinkFrame{child.name};
+    if (beam) {
+      AddBeam(child);
+    } else {
+      model_.spec.bodies.push_back(MakeBody(child));
+      frames_[child.name] = LinkFrame{child.name};
+    }
     if (joint.type == urdf::Joint::FLOATING) {
       model_.free_bodies.push_back(BodyMount{child.name, parent.body, joint_frame.R, joint_frame.p});
       model_.frame_joints[joint.name] = "it is a floating joint: link '" + child.name + "' is a free body";
       return;
     }
     model_.spec.joints.push_back(MakeJoint(joint, child.name, joint_frame));
+  }
+
+  // A link named under `beams:`: the YAML gives its length, elements and section.
+  void AddBeam(const urdf::Link& link) {
+    BeamSpec beam;
+    beam.name = link.name;
+    model_.spec.beams.push_back(beam);
+    frames_[link.name] = LinkFrame{link.name};
   }
 
   BodySpec MakeBody(const urdf::Link& link) const {
@@ -200,14 +221,23 @@ class UrdfWalker {
   [[noreturn]] void Fail(const std::string& what) const { throw ConfigError(model_.name + ": " + what); }
 
   const urdf::ModelInterface& urdf_;
+  const std::set<std::string>& beam_links_;
   UrdfModel model_;
   std::map<std::string, LinkFrame> frames_;
 };
 }  // namespace
 
-UrdfModel ReadUrdf(const std::string& urdf_xml, const std::string& urdf_name) {
+UrdfModel ReadUrdf(const std::string& urdf_xml, const std::string& urdf_name,
+                   const std::set<std::string>& beam_links) {
   const urdf::ModelInterfaceSharedPtr urdf = ParseUrdf(urdf_xml, urdf_name);
-  return UrdfWalker(*urdf, urdf_name).Walk();
+  for (const std::string& beam : beam_links) {
+    if (!urdf->getLink(beam)) {
+      std::vector<std::string> links;
+      for (const auto& link : urdf->links_) links.push_back(link.first);
+      throw ConfigError(urdf_name + ": beams." + beam + ": " + NotFoundMessage("link", "links", beam, urdf_name, links));
+    }
+  }
+  return UrdfWalker(*urdf, urdf_name, beam_links).Walk();
 }
 
 void ResizeJointVariables(JointSpec* joint) {

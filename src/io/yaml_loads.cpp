@@ -7,13 +7,14 @@ namespace {
 const std::vector<std::string> kLoadKeys = {"body", "force", "moment", "frame", "point", "scale"};
 
 std::string ReadBodyName(const Field& field, const UrdfModel& model) {
-  const std::string name = ReadString(field, "a body name (a URDF link with <inertial>)");
+  const std::string name = ReadString(field, "a body or beam name (a URDF link with <inertial>, or under beams:)");
   std::vector<std::string> names;
-  for (const BodySpec& body : model.spec.bodies) {
-    if (body.name == name) return name;
-    names.push_back(body.name);
+  for (const BodySpec& body : model.spec.bodies) names.push_back(body.name);
+  for (const BeamSpec& beam : model.spec.beams) names.push_back(beam.name);
+  for (const std::string& known : names) {
+    if (known == name) return name;
   }
-  field.Fail(NotFoundMessage("body", "bodies", name, model.name, names));
+  field.Fail(NotFoundMessage("body or beam", "bodies and beams", name, model.name, names));
 }
 
 void ReadVector(const Field& entry, LoadSpec* load) {

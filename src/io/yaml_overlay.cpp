@@ -7,7 +7,8 @@ namespace io {
 
 void ApplyYamlOverlay(const YAML::Node& params, const std::string& params_name, UrdfModel* model) {
   const Field root(params, params_name);
-  CheckKeys(root, {"joints", "solver", "output", "loads"});
+  CheckKeys(root, {"beams", "joints", "solver", "output", "loads"});
+  ReadBeams(root.Child("beams"), model);
   ReadJoints(root.Child("joints"), model);
   ReadSolver(root.Child("solver"), &model->spec.solver);
   ReadOutput(root.Child("output"), &model->spec.output);

@@ -251,7 +251,7 @@ TEST(ConfigErrors, LoadWithForceAndMomentIsRejected) {
 TEST(ConfigErrors, LoadOnUnknownBodyListsBodies) {
   EXPECT_CONFIG_ERROR(
       Pendulum("loads: [{body: rdo, force: [1, 0, 0]}]"),
-      "pendulum.yaml: loads[0].body: no body 'rdo' in pendulum.urdf; bodies are: rod; did you mean 'rod'?");
+      "pendulum.yaml: loads[0].body: no body or beam 'rdo' in pendulum.urdf; bodies and beams are: rod; did you mean 'rod'?");
 }
 
 TEST(ConfigErrors, PointOnMomentIsRejected) {
@@ -262,7 +262,7 @@ TEST(ConfigErrors, PointOnMomentIsRejected) {
 TEST(ConfigErrors, NonMapDocumentIsRejected) {
   EXPECT_CONFIG_ERROR(
       Pendulum("just text"),
-      "pendulum.yaml: 'just text' is not a map; expected a map with keys joints, solver, output, loads");
+      "pendulum.yaml: 'just text' is not a map; expected a map with keys beams, joints, solver, output, loads");
 }
 
 }  // namespace

@@ -4,6 +4,7 @@
 /// later, after the YAML overlay has set the joints' initial motion (initial_placement.hpp).
 
 #include <map>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -31,10 +32,12 @@ struct UrdfModel {
   std::map<std::string, std::string> frame_joints;
 };
 
-/// Reads a URDF. Throws ConfigError naming `urdf_name` if urdfdom cannot parse it, if a link that moves
-/// has no <inertial>, if a mass is not positive or an inertia not positive semi-definite, or if a
-/// damping is negative.
-UrdfModel ReadUrdf(const std::string& urdf_xml, const std::string& urdf_name);
+/// Reads a URDF. The links named in `beam_links` become beams (BeamSpec with only name and frame set; their
+/// <inertial>, if any, is not used: the beam's section gives its mass). Throws ConfigError naming
+/// `urdf_name` if urdfdom cannot parse it, if a beam link is not in it, if a link that moves has no
+/// <inertial>, if a mass is not positive or an inertia not positive semi-definite, or if a damping is negative.
+UrdfModel ReadUrdf(const std::string& urdf_xml, const std::string& urdf_name,
+                   const std::set<std::string>& beam_links = {});
 
 /// Sizes a joint's initial_position, initial_velocity and effects to NumJointVariables(type), keeping the
 /// entries of the variables it already had and zero-filling new ones.

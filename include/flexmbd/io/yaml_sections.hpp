@@ -3,6 +3,7 @@
 /// Readers of the sections of the YAML extension parameters (docs/config.md). Each checks its keys against
 /// its own table, reads every value through yaml_fields.hpp and overwrites only what the YAML gives.
 
+#include <set>
 #include <string>
 #include <vector>
 
@@ -15,6 +16,12 @@ namespace io {
 
 /// `joints:` a map from URDF joint names to joint settings (type, axes, pitch, effects, initial motion).
 void ReadJoints(const Field& joints, UrdfModel* model);
+
+/// The link names under `beams:` (read before the URDF, which needs to know which links are beams).
+std::set<std::string> BeamLinkNames(const YAML::Node& params, const std::string& params_name);
+
+/// `beams:` a map from URDF link names to beam settings (length, elements, order, section).
+void ReadBeams(const Field& beams, UrdfModel* model);
 
 /// `solver:` settings, then the consistency dt_min <= dt <= dt_max.
 void ReadSolver(const Field& solver, SolverSpec* spec);

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "flexmbd/effects/variable_effects.hpp"
+#include "flexmbd/elements/beam_element.hpp"
 #include "flexmbd/elements/element.hpp"
 #include "flexmbd/elements/rigid_body.hpp"
 #include "flexmbd/joints/joint.hpp"
@@ -21,6 +22,14 @@ struct BodyInfo {
   std::string name;
   int node = -1;
   Vec3 p_NBo_N = Vec3::Zero();  ///< body (link) frame origin relative to the node, in the node frame [m]
+};
+
+/// A beam as the user named it: its nodes along the link's x axis and its elements.
+struct BeamInfo {
+  std::string name;
+  std::vector<int> nodes;                    ///< node indices from root to tip
+  std::vector<double> stations;              ///< their distance from the root [m]
+  std::vector<const BeamElement*> elements;  ///< from root to tip
 };
 
 class Model {
@@ -39,6 +48,7 @@ class Model {
   const std::vector<const Joint*>& joints() const { return joints_; }
   const std::vector<const RigidBody*>& rigid_bodies() const { return rigid_bodies_; }
   const std::vector<BodyInfo>& bodies() const { return bodies_; }
+  const std::vector<BeamInfo>& beams() const { return beams_; }
   /// Name of each joint variable: the joint name, with "/k" appended for the k-th of several.
   const std::vector<std::string>& variable_names() const { return variable_names_; }
 
@@ -49,7 +59,8 @@ class Model {
   /// Largest node distance from the origin in the initial state, at least 1 [m]: the scale of round-off.
   double length_scale() const { return length_scale_; }
 
-  /// Human-readable name of an unknown, e.g. "body link1 rot_y" or "joint B1 constraint 3".
+  /// Human-readable name of an unknown, e.g. "body link1 rot_y", "beam panel_2 node 3 rot_y" or
+  /// "joint B1 constraint 3".
   std::string DescribeUnknown(int unknown) const;
 
  private:
@@ -59,6 +70,8 @@ class Model {
   std::vector<const Joint*> joints_;
   std::vector<const RigidBody*> rigid_bodies_;
   std::vector<BodyInfo> bodies_;
+  std::vector<BeamInfo> beams_;
+  std::vector<std::string> node_names_;  ///< "body <name>" or "beam <name> node <k>", per node
   std::vector<std::string> variable_names_;
   std::vector<std::string> multiplier_names_;
   SolverSpec solver_;

@@ -80,6 +80,28 @@ struct JointSpec {
   std::vector<VariableEffectsSpec> effects;     ///< one entry per variable (may be empty)
 };
 
+/// Sectional properties of a beam, in the section frame (x along the beam axis).
+struct BeamSectionSpec {
+  /// 6x6 stiffness from (axial strain, shear strains y z, twist, curvatures about y z) to (axial force, shear
+  /// forces, torque, bending moments) [N, N m^2 ...]; full, with the couplings of composite sections.
+  Eigen::Matrix<double, 6, 6> stiffness = Eigen::Matrix<double, 6, 6>::Zero();
+  double mass_per_length = 0.0;            ///< [kg/m]
+  Vec3 inertia_per_length = Vec3::Zero();  ///< (torsional, about y, about z) mass moments per length [kg m]
+};
+
+/// A geometrically exact beam along the x axis of a link frame B, from the B origin (docs/config.md, "beams").
+struct BeamSpec {
+  std::string name;           ///< the URDF link it replaces
+  double length = 0.0;        ///< [m]
+  int elements = 1;           ///< number of elements, >= 1
+  int order = 3;              ///< shape-function order 1..3 (nodes per element = order + 1)
+  BeamSectionSpec section;
+  Vec3 p_WB = Vec3::Zero();        ///< initial position of the B origin [m]
+  Mat3 R_WB = Mat3::Identity();    ///< initial orientation of B
+  Vec3 v_WBo_W = Vec3::Zero();     ///< initial velocity of the B origin [m/s]
+  Vec3 w_WB_W = Vec3::Zero();      ///< initial angular velocity of B (rigid initial motion) [rad/s]
+};
+
 /// A force or moment applied to a body, scaled by a time function.
 struct LoadSpec {
   enum class Kind { kForce, kMoment };
@@ -95,7 +117,7 @@ struct LoadSpec {
 
 /// Solver settings (docs/config.md, "solver").
 struct SolverSpec {
-  enum class Analysis { kDynamic, kStatic };
+  enum class Analysis { kDynamic, kStatic, kEigen };
   enum class Integrator { kEnergyDecaying, kEnergyPreserving, kGeneralizedAlpha };
   Analysis analysis = Analysis::kDynamic;
   Integrator integrator = Integrator::kEnergyDecaying;
@@ -111,6 +133,16 @@ struct SolverSpec {
   int load_steps = 10;             ///< load increments of the static analysis
   bool static_first = false;       ///< run a static analysis and start the dynamics from it
   Vec3 gravity = Vec3(0.0, 0.0, -9.81);  ///< [m/s^2]
+  /// Eigen-analysis settings (docs/config.md, "solver.eigen"; docs/theory.md, "Eigen-analysis").
+  struct EigenSettings {
+    enum class Method { kAuto, kDense, kSparse };
+    int modes = 0;                 ///< modes reported, lowest first; 0 reports all (dense) or 10 (sparse)
+    bool static_first = false;     ///< linearise about the static equilibrium instead of the initial state
+    Method method = Method::kAuto; ///< dense below 2000 node and variable unknowns, sparse shift-invert above
+    double shift_hz = 0.0;         ///< sparse: seek the modes nearest this frequency [Hz]; 0 = the lowest
+    std::vector<double> sweep_velocity_scale;  ///< fan plot: factors on every initial velocity; empty for none
+  };
+  EigenSettings eigen;             ///< used when analysis is kEigen
 };
 
 /// Output settings (docs/config.md, "output").
@@ -124,6 +156,7 @@ struct OutputSpec {
 struct ModelSpec {
   std::string source;  ///< where it came from (file names), used in messages
   std::vector<BodySpec> bodies;
+  std::vector<BeamSpec> beams;
   std::vector<JointSpec> joints;
   std::vector<LoadSpec> loads;
   SolverSpec solver;

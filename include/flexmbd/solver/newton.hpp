@@ -34,10 +34,13 @@ double RoundOffFloor(double magnitude);
 /// @param noise_floor increments below this are round-off (see RoundOffFloor) whatever the tolerance.
 /// @param evaluate builds the StepContext for the current trial unknowns at a given iteration (1-based),
 /// saying whether the tangent will be assembled from it.
+/// @param reuse_tangent start from the system's current factorisation instead of assembling a tangent (it is
+/// refreshed as soon as the iteration contracts too slowly).
 /// @param apply applies a Newton increment to the trial unknowns and returns the size (max norm) of the
 /// kinematic part of the motion it is relative to, against which increments are judged small.
 NewtonReport SolveNewton(const Model& model, SparseSystem* system, double tol, int max_iterations, double noise_floor,
                          const std::function<const StepContext&(int iteration, bool with_tangent)>& evaluate,
-                         const std::function<double(const Eigen::VectorXd& increment)>& apply);
+                         const std::function<double(const Eigen::VectorXd& increment)>& apply,
+                         bool reuse_tangent = false);
 
 }  // namespace flexmbd

@@ -4,6 +4,7 @@
 /// element's local entries to their positions (assembly does not allocate), and its KLU factorisation:
 /// one symbolic analysis, then a numeric refactorisation per Newton iteration.
 
+#include <limits>
 #include <memory>
 #include <vector>
 
@@ -27,12 +28,21 @@ class SparseSystem {
 
   const Eigen::VectorXd& residual() const { return residual_; }
   const Eigen::VectorXd& magnitude() const { return magnitude_; }
+  /// Sum of |entries| of each row of the last assembled tangent: with the size of the unknowns it bounds the
+  /// round-off of the residual.
+  const Eigen::VectorXd& row_abs_sum() const { return row_abs_sum_; }
 
   /// Solves J dx = -residual, factorising the last assembled tangent first if `refactorise` (otherwise the
   /// previous factorisation is reused). Returns false if the matrix is singular.
   bool Solve(Eigen::VectorXd* dx, bool refactorise = true);
 
   int num_nonzeros() const { return static_cast<int>(values_.size()); }
+
+  /// What the current factorisation was made for (a dynamic step size), so a caller can reuse it for the
+  /// next solve of the same kind; NaN when it should not be reused. Set by the factorisation's user.
+  double factorisation_key() const { return factorisation_key_; }
+  void set_factorisation_key(double key) { factorisation_key_ = key; }
+  bool has_factorisation() const;
 
   /// Time spent in assembly, factorisation and solve since construction [s].
   struct Timing {
@@ -48,12 +58,13 @@ class SparseSystem {
   std::vector<int> column_start_, row_index_;
   std::vector<double> values_;
   std::vector<std::vector<int>> scatter_;  ///< per element: position of local (i, j) at i * n_local + j
-  Eigen::VectorXd residual_, magnitude_;
+  Eigen::VectorXd residual_, magnitude_, row_abs_sum_;
   Eigen::VectorXd local_r_, local_m_;
   Eigen::MatrixXd local_J_;
   struct KluFactorisation;
   std::unique_ptr<KluFactorisation> klu_;
   Timing timing_;
+  double factorisation_key_ = std::numeric_limits<double>::quiet_NaN();
 };
 
 }  // namespace flexmbd

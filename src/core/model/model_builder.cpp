@@ -5,6 +5,7 @@
 
 #include "flexmbd/common/error.hpp"
 #include "flexmbd/elements/applied_load.hpp"
+#include "flexmbd/model/beam_layout.hpp"
 #include "flexmbd/math/time_function.hpp"
 #include "flexmbd/model/model.hpp"
 #include "flexmbd/solver/energy_decaying_integrator.hpp"
@@ -44,7 +45,7 @@ NodeState NodeFromBody(const BodySpec& body) {
 
 std::string Model::DescribeUnknown(int unknown) const {
   static const char* kNodeDof[6] = {"x", "y", "z", "rot_x", "rot_y", "rot_z"};
-  if (unknown < 6 * num_nodes_) return "body " + bodies_[unknown / 6].name + " " + kNodeDof[unknown % 6];
+  if (unknown < 6 * num_nodes_) return node_names_[unknown / 6] + " " + kNodeDof[unknown % 6];
   if (unknown < 6 * num_nodes_ + num_variables_) return "joint variable " + variable_names_[unknown - 6 * num_nodes_];
   return multiplier_names_[unknown - 6 * num_nodes_ - num_variables_];
 }
@@ -78,20 +79,75 @@ Model BuildModel(const ModelSpec& spec) {
     auto rigid = std::make_unique<RigidBody>(node, model.node_unknown(node), body.mass, body.inertia_cm_B);
     model.rigid_bodies_.push_back(rigid.get());
     model.elements_.push_back(std::move(rigid));
+    model.node_names_.push_back("body " + body.name);
   }
 
-  auto attachment = [&](const std::string& joint, const std::string& body, const Vec3& p_BJ, const Mat3& R_BJ) {
+  // Beams: nodes along the link's x axis, lumped masses on them, elements between them.
+  std::map<std::string, int> beam_index;
+  for (const BeamSpec& beam : spec.beams) {
+    ValidateBeam(Prefix(spec), beam);
+    if (body_index.count(beam.name) || !beam_index.emplace(beam.name, static_cast<int>(model.beams_.size())).second) {
+      throw ConfigError(Prefix(spec) + "beams." + beam.name + ": the link is defined twice");
+    }
+    BeamInfo info;
+    info.name = beam.name;
+    info.stations = BeamStations(beam);
+    const std::vector<NodeState> nodes = BeamNodeStates(beam);
+    const std::vector<double> lumped = LumpedLengths(beam);
+    for (size_t k = 0; k < nodes.size(); ++k) {
+      const int node = model.num_nodes_++;
+      info.nodes.push_back(node);
+      model.initial_state_.nodes.push_back(nodes[k]);
+      model.length_scale_ = std::max(model.length_scale_, nodes[k].x.norm());
+      model.node_names_.push_back("beam " + beam.name + " node " + std::to_string(k));
+      const Mat3 inertia = lumped[k] * beam.section.inertia_per_length.asDiagonal().toDenseMatrix();
+      auto mass = std::make_unique<RigidBody>(node, model.node_unknown(node), lumped[k] * beam.section.mass_per_length,
+                                              inertia);
+      model.rigid_bodies_.push_back(mass.get());
+      model.elements_.push_back(std::move(mass));
+    }
+    for (int e = 0; e < beam.elements; ++e) {
+      const std::vector<int> element_nodes(info.nodes.begin() + e * beam.order,
+                                           info.nodes.begin() + (e + 1) * beam.order + 1);
+      auto element = std::make_unique<BeamElement>(beam.name + " element " + std::to_string(e), element_nodes,
+                                                   beam.length / beam.elements, beam.section);
+      info.elements.push_back(element.get());
+      model.elements_.push_back(std::move(element));
+    }
+    model.beams_.push_back(info);
+  }
+
+  // The node a link-frame point belongs to, and the point relative to that node (node frame).
+  auto locate = [&](const std::string& what, const std::string& link, const Vec3& p_B, int* node, Vec3* p_N) {
+    const auto body = body_index.find(link);
+    if (body != body_index.end()) {
+      *node = model.bodies_[body->second].node;
+      *p_N = p_B + model.bodies_[body->second].p_NBo_N;
+      return;
+    }
+    const auto beam = beam_index.find(link);
+    if (beam == beam_index.end()) throw ConfigError(Prefix(spec) + what + ": no body or beam '" + link + "'");
+    const BeamInfo& info = model.beams_[beam->second];
+    const int k = StationAt(info.stations, p_B.x(), info.stations.back());
+    if (k < 0) {
+      std::ostringstream msg;
+      msg << Prefix(spec) << what << ": x = " << p_B.x() << " m on beam '" << link
+          << "' is not at a node; expected one of the node positions";
+      for (double s : info.stations) msg << " " << s;
+      msg << " [m]";
+      throw ConfigError(msg.str());
+    }
+    *node = info.nodes[k];
+    *p_N = Vec3(0.0, p_B.y(), p_B.z());
+  };
+
+  auto attachment = [&](const std::string& joint, const std::string& link, const Vec3& p_BJ, const Mat3& R_BJ) {
     Joint::Attachment side;
     side.R_NJ = R_BJ;
     side.p_NJ = p_BJ;
-    if (body.empty()) return side;
-    const auto it = body_index.find(body);
-    if (it == body_index.end()) {
-      throw ConfigError(Prefix(spec) + "joint '" + joint + "': no body '" + body + "'");
-    }
-    side.node = model.bodies_[it->second].node;
+    if (link.empty()) return side;
+    locate("joint '" + joint + "'", link, p_BJ, &side.node, &side.p_NJ);
     side.first_unknown = model.node_unknown(side.node);
-    side.p_NJ = p_BJ + model.bodies_[it->second].p_NBo_N;
     return side;
   };
 
@@ -161,11 +217,10 @@ Model BuildModel(const ModelSpec& spec) {
   }
 
   for (const LoadSpec& load : spec.loads) {
-    const auto it = body_index.find(load.body);
-    if (it == body_index.end()) throw ConfigError(Prefix(spec) + "load on unknown body '" + load.body + "'");
-    const BodyInfo& body = model.bodies_[it->second];
-    model.elements_.push_back(std::make_unique<AppliedLoad>(body.node, model.node_unknown(body.node), load,
-                                                            load.p_BoP_B + body.p_NBo_N));
+    int node = -1;
+    Vec3 p_NP;
+    locate("load on '" + load.body + "'", load.body, load.p_BoP_B, &node, &p_NP);
+    model.elements_.push_back(std::make_unique<AppliedLoad>(node, model.node_unknown(node), load, p_NP));
   }
 
   // The initial poses must satisfy every joint.

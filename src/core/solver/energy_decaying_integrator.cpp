@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "flexmbd/model/model.hpp"
 #include "flexmbd/solver/joint_rates.hpp"
@@ -95,19 +96,24 @@ StepResult EnergyDecayingIntegrator::Step(const State& start, double h, State* e
   Eigen::VectorXd unknowns;
   do {
     unknowns = Predict(start, h);
+    int tangents = 0;
     result.newton = SolveNewton(
         model_, system_, model_.solver().tol, model_.solver().max_iterations, NoiseFloor(model_, start),
-        [&](int iteration, bool with_tangent) -> const StepContext& {
-          // The first tangent leaves out the geometric stiffness of constraint forces and loads (O(h^2)
-          // against inertia); a tangent refreshed because convergence was slow includes it.
-          builder_.set_geometric_stiffness(with_tangent && iteration > 1);
+        [&](int, bool with_tangent) -> const StepContext& {
+          // The first tangent assembled in a step leaves out the geometric stiffness of constraint forces and
+          // loads (O(h^2) against inertia); one assembled because that one converged slowly includes it.
+          tangents += with_tangent ? 1 : 0;
+          builder_.set_geometric_stiffness(with_tangent && tangents > 1);
           builder_.set_variable_dissipation(coefficients.variables);
           return builder_.Dynamic(start, unknowns, h, coefficients.nodes);
         },
         [&](const Eigen::VectorXd& increment) {
           unknowns += increment;
           return unknowns.head(n_kinematic).cwiseAbs().maxCoeff();
-        });
+        },
+        system_->factorisation_key() == h);
+    // The factorisation now belongs to a step of this size, and may serve the next one of the same size.
+    system_->set_factorisation_key(result.newton.converged ? h : std::numeric_limits<double>::quiet_NaN());
     if (result.newton.singular) {
       result.status = StepStatus::kSingularMatrix;
       return result;

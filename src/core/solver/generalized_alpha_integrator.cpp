@@ -1,6 +1,7 @@
 #include "flexmbd/solver/generalized_alpha_integrator.hpp"
 
 #include <algorithm>
+#include <limits>
 
 #include "flexmbd/model/model.hpp"
 #include "flexmbd/solver/joint_rates.hpp"
@@ -111,6 +112,7 @@ StepResult GeneralizedAlphaIntegrator::Step(const State& given_start, double h, 
         unknowns.tail(model_.num_multipliers()) += increment.tail(model_.num_multipliers());
         return nv > 0 ? std::max(reference, dq.cwiseAbs().maxCoeff()) : reference;
       });
+  system_->set_factorisation_key(std::numeric_limits<double>::quiet_NaN());  // not a reusable dynamic tangent
   if (result.newton.singular || !result.newton.converged) {
     result.status = result.newton.singular ? StepStatus::kSingularMatrix : StepStatus::kNewtonDiverged;
     return result;

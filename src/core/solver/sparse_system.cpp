@@ -58,6 +58,7 @@ SparseSystem::SparseSystem(const Model& model) : model_(model), n_(model.num_unk
   }
   residual_.resize(n_);
   magnitude_.resize(n_);
+  row_abs_sum_ = Eigen::VectorXd::Zero(n_);
   local_r_.resize(max_local);
   local_m_.resize(max_local);
   local_J_.resize(max_local, max_local);
@@ -97,6 +98,10 @@ void SparseSystem::Assemble(const StepContext& ctx, bool with_tangent) {
       for (int j = 0; j < m; ++j) values_[positions[i * m + j]] += J(i, j);
     }
   }
+  if (with_tangent) {
+    row_abs_sum_.setZero();
+    for (size_t p = 0; p < values_.size(); ++p) row_abs_sum_[row_index_[p]] += std::abs(values_[p]);
+  }
   timing_.assembly += SecondsSince(start);
 }
 
@@ -117,6 +122,8 @@ bool SparseSystem::Factorise() {
   klu_->numeric = klu_factor(column_start_.data(), row_index_.data(), values_.data(), klu_->symbolic, &common);
   return klu_->numeric != nullptr && common.status == KLU_OK;
 }
+
+bool SparseSystem::has_factorisation() const { return klu_->numeric != nullptr; }
 
 bool SparseSystem::Solve(Eigen::VectorXd* dx, bool refactorise) {
   auto start = std::chrono::steady_clock::now();

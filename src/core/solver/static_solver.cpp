@@ -1,5 +1,7 @@
 #include "flexmbd/solver/static_solver.hpp"
 
+#include <limits>
+
 #include "flexmbd/model/model.hpp"
 #include "flexmbd/solver/joint_rates.hpp"
 #include "flexmbd/solver/sparse_system.hpp"
@@ -36,6 +38,7 @@ StaticResult SolveStatic(const Model& model, SparseSystem* system, State* state)
           travelled = std::max(travelled, increment.head(model.num_unknowns() - model.num_multipliers()).cwiseAbs().maxCoeff());
           return travelled;
         });
+    system->set_factorisation_key(std::numeric_limits<double>::quiet_NaN());  // a static tangent: not reusable
     result.iterations += result.last.iterations;
     if (!result.last.converged) return result;
   }

@@ -1,0 +1,29 @@
+#pragma once
+/// @file
+/// Where a beam's nodes are and how its mass is lumped on them (docs/theory.md, "Beams", (B6)).
+
+#include <string>
+#include <vector>
+
+#include "flexmbd/model/model_spec.hpp"
+#include "flexmbd/model/state.hpp"
+
+namespace flexmbd {
+
+/// Node positions along the beam from its root [m]: elements * order + 1 equally spaced stations.
+std::vector<double> BeamStations(const BeamSpec& beam);
+
+/// Initial node states: on the straight axis of the link frame, frames parallel to it, rigid initial motion.
+std::vector<NodeState> BeamNodeStates(const BeamSpec& beam);
+
+/// Share of the beam length lumped on each node: the integral of its shape function (row sums of the
+/// consistent mass matrix), summed over the elements it belongs to [m]. The shares add up to the length.
+std::vector<double> LumpedLengths(const BeamSpec& beam);
+
+/// Index of the station at distance s from the root, or -1 if none is within tolerance of it.
+int StationAt(const std::vector<double>& stations, double s, double length);
+
+/// Checks a beam's data; throws ConfigError naming the beam, the field and the expected form.
+void ValidateBeam(const std::string& source_prefix, const BeamSpec& beam);
+
+}  // namespace flexmbd

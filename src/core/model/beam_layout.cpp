@@ -1,0 +1,94 @@
+#include "flexmbd/model/beam_layout.hpp"
+
+#include <cmath>
+#include <sstream>
+
+#include <Eigen/Eigenvalues>
+
+#include "flexmbd/common/error.hpp"
+
+namespace flexmbd {
+namespace {
+// Stations closer than this fraction of the beam length are the same point (round-off of URDF origins).
+constexpr double kStationTolerance = 1.0e-9;
+
+// Integral over [-1, 1] of the Lagrange shape function of node k (equally spaced nodes), by Gauss-Legendre
+// with enough points to be exact for its degree.
+double ShapeIntegral(int order, int k) {
+  static const double kPoints[] = {-0.8611363115940526, -0.3399810435848563, 0.3399810435848563,
+                                   0.8611363115940526};
+  static const double kWeights[] = {0.3478548451374538, 0.6521451548625461, 0.6521451548625461,
+                                    0.3478548451374538};
+  double integral = 0.0;
+  for (int g = 0; g < 4; ++g) {
+    double N = 1.0;
+    for (int j = 0; j <= order; ++j) {
+      if (j == k) continue;
+      const double xi_j = -1.0 + 2.0 * j / order, xi_k = -1.0 + 2.0 * k / order;
+      N *= (kPoints[g] - xi_j) / (xi_k - xi_j);
+    }
+    integral += kWeights[g] * N;
+  }
+  return integral;
+}
+}  // namespace
+
+std::vector<double> BeamStations(const BeamSpec& beam) {
+  const int n = beam.elements * beam.order + 1;
+  std::vector<double> s(n);
+  for (int k = 0; k < n; ++k) s[k] = beam.length * k / (n - 1);
+  return s;
+}
+
+std::vector<NodeState> BeamNodeStates(const BeamSpec& beam) {
+  std::vector<NodeState> nodes;
+  for (double s : BeamStations(beam)) {
+    NodeState n;
+    const Vec3 r = beam.R_WB * Vec3(s, 0, 0);
+    n.x = beam.p_WB + r;
+    n.R = beam.R_WB;
+    n.v = beam.v_WBo_W + beam.w_WB_W.cross(r);
+    n.w = beam.R_WB.transpose() * beam.w_WB_W;
+    nodes.push_back(n);
+  }
+  return nodes;
+}
+
+std::vector<double> LumpedLengths(const BeamSpec& beam) {
+  std::vector<double> lengths(beam.elements * beam.order + 1, 0.0);
+  const double element_length = beam.length / beam.elements;
+  for (int e = 0; e < beam.elements; ++e) {
+    for (int k = 0; k <= beam.order; ++k) lengths[e * beam.order + k] += 0.5 * element_length * ShapeIntegral(beam.order, k);
+  }
+  return lengths;
+}
+
+int StationAt(const std::vector<double>& stations, double s, double length) {
+  for (size_t k = 0; k < stations.size(); ++k) {
+    if (std::abs(stations[k] - s) <= kStationTolerance * length) return static_cast<int>(k);
+  }
+  return -1;
+}
+
+void ValidateBeam(const std::string& prefix, const BeamSpec& beam) {
+  auto fail = [&](const std::string& field, const std::string& what) {
+    throw ConfigError(prefix + "beams." + beam.name + "." + field + ": " + what);
+  };
+  if (!(beam.length > 0.0)) fail("length", std::to_string(beam.length) + " is not positive; expected a length > 0 [m]");
+  if (beam.elements < 1) fail("elements", std::to_string(beam.elements) + " is below 1; expected a whole number >= 1");
+  if (beam.order < 1 || beam.order > 3) fail("order", std::to_string(beam.order) + " is not 1, 2 or 3");
+  const auto& C = beam.section.stiffness;
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix<double, 6, 6>> eig(0.5 * (C + C.transpose()));
+  if (!(eig.eigenvalues().minCoeff() > 0.0)) {
+    std::ostringstream msg;
+    msg << "section stiffness is not positive definite (smallest eigenvalue " << eig.eigenvalues().minCoeff()
+        << "); expected EA, GA2, GA3, GJ, EI2, EI3 > 0 and couplings that keep the 6x6 matrix positive definite";
+    fail("section", msg.str());
+  }
+  if (!(beam.section.mass_per_length > 0.0)) fail("section.m", "mass per length is not positive; expected m > 0 [kg/m]");
+  if ((beam.section.inertia_per_length.array() < 0.0).any()) {
+    fail("section.m_ii", "a mass moment per length is negative; expected values >= 0 [kg m]");
+  }
+}
+
+}  // namespace flexmbd

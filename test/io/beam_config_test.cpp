@@ -1,0 +1,92 @@
+// Beams from URDF + YAML (src/io/yaml_beams.cpp, urdf_reader.cpp, initial_placement.cpp). Reference: the
+// values written in test/data/{urdf,yaml}/beam_arm.*.
+
+#include <gtest/gtest.h>
+
+#include "flexmbd/io/config_loader.hpp"
+#include "flexmbd/model/model.hpp"
+#include "io_test_util.hpp"
+
+namespace flexmbd {
+namespace {
+using test::ConfigErrorOf;
+using test::DataPath;
+using test::LoadDataUrdf;
+
+// Poses are products of a few exact numbers.
+constexpr double kTolerance = 1.0e-12;
+
+const char kArmYaml[] = R"(
+beams:
+  arm:
+    length: 1.0
+    elements: 2
+    section: {EA: 1.0e7, GA2: 4.0e6, GA3: 4.0e6, GJ: 50.0, EI2: 80.0, EI3: 100.0, m: 2.5, m_ii: [0.002, 0.001, 0.001]}
+)";
+
+TEST(BeamConfig, BeamReadFromYamlAndPlacedByTheUrdf) {
+  const ModelSpec spec = LoadModelSpec(DataPath("urdf/beam_arm.urdf"), DataPath("yaml/beam_arm.yaml"));
+  ASSERT_EQ(spec.beams.size(), 1u);
+  const BeamSpec& beam = spec.beams[0];
+  EXPECT_EQ(beam.name, "arm");
+  EXPECT_EQ(beam.elements, 2);
+  EXPECT_EQ(beam.order, 3);
+  EXPECT_EQ(beam.section.stiffness(5, 5), 100.0);
+  EXPECT_EQ(beam.section.stiffness(0, 1), 0.0);
+  EXPECT_EQ(beam.section.mass_per_length, 2.5);
+  EXPECT_NEAR((beam.p_WB - Vec3(0, 0, 1)).norm(), 0.0, kTolerance);
+  EXPECT_EQ(spec.bodies.size(), 1u);  // the tip only: the beam link is not a rigid body
+}
+
+TEST(BeamConfig, JointAtTheTipNodeBuildsAModel) {
+  const Model model = BuildModel(LoadModelSpec(DataPath("urdf/beam_arm.urdf"), DataPath("yaml/beam_arm.yaml")));
+  ASSERT_EQ(model.beams().size(), 1u);
+  EXPECT_EQ(model.beams()[0].nodes.size(), 7u);   // 2 cubic elements
+  EXPECT_EQ(model.num_nodes(), 8);                 // and the tip body (node 0: bodies come first)
+  EXPECT_EQ(model.DescribeUnknown(6 * 3 + 4), "beam arm node 2 rot_y");
+}
+
+TEST(BeamConfig, JointNotOnANodeListsTheNodes) {
+  const std::string urdf = test::ReadDataText("urdf/beam_arm.urdf");
+  std::string moved = urdf;
+  moved.replace(moved.find("xyz=\"1.0 0 0\""), 13, "xyz=\"0.4 0 0\"");
+  const std::string message = ConfigErrorOf([&] {
+    BuildModel(LoadModelSpecFromStrings(moved, "beam_arm.urdf", YAML::Load(kArmYaml), "arm.yaml"));
+  });
+  EXPECT_NE(message.find("joint 'tip_hinge': x = 0.4 m on beam 'arm' is not at a node"), std::string::npos)
+      << message;
+  EXPECT_NE(message.find("0.5"), std::string::npos) << message;
+}
+
+TEST(BeamConfig, NegativeSectionStiffnessNamesTheField) {
+  std::string yaml = kArmYaml;
+  yaml.replace(yaml.find("EI3: 100.0"), 10, "EI3: -1.0");
+  const std::string message = ConfigErrorOf([&] { LoadDataUrdf("beam_arm.urdf", yaml, "arm.yaml"); });
+  EXPECT_NE(message.find("arm.yaml: beams.arm.section.EI3: -1.0 is negative; expected a stiffness EI3 > 0 [N m^2]"), std::string::npos) << message;
+}
+
+TEST(BeamConfig, ZeroElementsIsRejected) {
+  std::string yaml = kArmYaml;
+  yaml.replace(yaml.find("elements: 2"), 11, "elements: 0");
+  const std::string message = ConfigErrorOf([&] { LoadDataUrdf("beam_arm.urdf", yaml, "arm.yaml"); });
+  EXPECT_NE(message.find("arm.yaml: beams.arm.elements: 0"), std::string::npos) << message;
+}
+
+TEST(BeamConfig, UnknownBeamLinkListsLinks) {
+  std::string yaml = kArmYaml;
+  yaml.replace(yaml.find("  arm:"), 6, "  boom:");
+  const std::string message = ConfigErrorOf([&] { LoadDataUrdf("beam_arm.urdf", yaml, "arm.yaml"); });
+  EXPECT_NE(message.find("beams.boom"), std::string::npos) << message;
+  EXPECT_NE(message.find("arm"), std::string::npos) << message;
+}
+
+TEST(BeamConfig, NotPositiveDefiniteCouplingIsRejectedAtModelBuild) {
+  ModelSpec spec = LoadDataUrdf("beam_arm.urdf", kArmYaml, "arm.yaml");
+  spec.beams[0].section.stiffness(0, 5) = spec.beams[0].section.stiffness(5, 0) = 1.0e6;  // |C05| > sqrt(C00 C55)
+  const std::string message = ConfigErrorOf([&] { BuildModel(spec); });
+  EXPECT_NE(message.find("beams.arm.section: section stiffness is not positive definite"), std::string::npos)
+      << message;
+}
+
+}  // namespace
+}  // namespace flexmbd
