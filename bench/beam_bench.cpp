@@ -4,6 +4,8 @@
 
 #include <benchmark/benchmark.h>
 
+#include "step_bench.hpp"
+
 #include "flexmbd/model/model.hpp"
 #include "flexmbd/solver/simulation.hpp"
 
@@ -34,21 +36,7 @@ flexmbd::ModelSpec Cantilever(int elements) {
 }
 
 void BM_CantileverStep(benchmark::State& state) {
-  const flexmbd::Model model = flexmbd::BuildModel(Cantilever(static_cast<int>(state.range(0))));
-  flexmbd::Simulation simulation(model);
-  long steps = 0, iterations = 0;
-  for (auto _ : state) {
-    const flexmbd::StepResult result = simulation.TryStep(model.solver().dt);
-    if (result.status != flexmbd::StepStatus::kAccepted) state.SkipWithError("step not accepted");
-    ++steps;
-    iterations += result.newton.iterations;
-  }
-  const flexmbd::SparseSystem::Timing& t = simulation.system().timing();
-  state.counters["assembly_ms_per_step"] = 1e3 * t.assembly / steps;
-  state.counters["factorisation_ms_per_step"] = 1e3 * t.factorisation / steps;
-  state.counters["solve_ms_per_step"] = 1e3 * t.solve / steps;
-  state.counters["unknowns"] = model.num_unknowns();
-  state.counters["newton_iterations_per_step"] = static_cast<double>(iterations) / steps;
+  flexmbd::bench::TimeSteps(state, Cantilever(static_cast<int>(state.range(0))));
 }
 BENCHMARK(BM_CantileverStep)->Arg(10)->Arg(100)->Arg(1000)->Unit(benchmark::kMillisecond)->Iterations(5);
 

@@ -3,6 +3,8 @@
 
 #include <benchmark/benchmark.h>
 
+#include "step_bench.hpp"
+
 #include <string>
 
 #include "flexmbd/model/model.hpp"
@@ -40,22 +42,7 @@ flexmbd::ModelSpec Chain(int links) {
 }
 
 void BM_PendulumChainStep(benchmark::State& state) {
-  const flexmbd::Model model = flexmbd::BuildModel(Chain(static_cast<int>(state.range(0))));
-  flexmbd::Simulation simulation(model);
-  long steps = 0, iterations = 0;
-  for (auto _ : state) {
-    const flexmbd::StepResult result = simulation.TryStep(model.solver().dt);
-    if (result.status != flexmbd::StepStatus::kAccepted) state.SkipWithError("step not accepted");
-    ++steps;
-    iterations += result.newton.iterations;
-  }
-  const flexmbd::SparseSystem::Timing& t = simulation.system().timing();
-  state.counters["assembly_us_per_step"] = 1e6 * t.assembly / steps;
-  state.counters["factorisation_us_per_step"] = 1e6 * t.factorisation / steps;
-  state.counters["solve_us_per_step"] = 1e6 * t.solve / steps;
-  state.counters["unknowns"] = model.num_unknowns();
-  state.counters["nonzeros"] = simulation.system().num_nonzeros();
-  state.counters["newton_iterations_per_step"] = static_cast<double>(iterations) / steps;
+  flexmbd::bench::TimeSteps(state, Chain(static_cast<int>(state.range(0))));
 }
 BENCHMARK(BM_PendulumChainStep)->Arg(20)->Arg(40)->Arg(80)->Unit(benchmark::kMicrosecond);
 

@@ -6,7 +6,10 @@ namespace io {
 namespace {
 const std::vector<std::string> kSolverKeys = {"analysis",       "integrator", "rho_inf",      "t_end",  "dt",
                                               "dt_min",         "dt_max",     "adaptive",     "tol",    "error_tol",
-                                              "max_iterations", "load_steps", "static_first", "gravity"};
+                                              "max_iterations", "load_steps", "static_first", "gravity",
+                                              "eigen"};
+const std::vector<std::string> kEigenKeys = {"modes", "static_first", "method", "shift_hz", "sweep"};
+const std::vector<std::string> kSweepKeys = {"velocity_scale"};
 const std::vector<std::string> kOutputKeys = {"rate_hz", "csv", "bag"};
 
 // "0.01", or "0.01 (default)" if the key was not given.
@@ -29,6 +32,32 @@ void CheckStepBounds(const Field& solver, const SolverSpec& spec) {
                             ValueText(solver, "dt_min", spec.dt_min) + range);
   }
 }
+
+// `solver.eigen:` the eigen-analysis settings (docs/config.md, "solver.eigen").
+void ReadEigen(const Field& eigen, SolverSpec::EigenSettings* spec) {
+  using Method = SolverSpec::EigenSettings::Method;
+  CheckKeys(eigen, kEigenKeys);
+  OverlayInteger(eigen, "modes", Quantity{"a number of modes (0: all)", Bound::kNonNegative, ""}, &spec->modes);
+  OverlayBool(eigen, "static_first", &spec->static_first);
+  if (eigen.Child("method").present()) {
+    spec->method = ReadEnum<Method>(eigen.Child("method"), "eigen method",
+                                    {{"auto", Method::kAuto}, {"dense", Method::kDense}, {"sparse", Method::kSparse}});
+  }
+  OverlayNumber(eigen, "shift_hz", Quantity{"a target frequency", Bound::kNonNegative, "Hz"}, &spec->shift_hz);
+  const Field sweep = eigen.Child("sweep");
+  if (!sweep.present()) return;
+  CheckKeys(sweep, kSweepKeys);
+  RequireKey(sweep, "velocity_scale", "the factors on the initial velocities, e.g. [0.0, 0.5, 1.0]");
+  spec->sweep_velocity_scale =
+      ReadNumberList(sweep.Child("velocity_scale"), Quantity{"a velocity factor", Bound::kAny, ""});
+  if (spec->sweep_velocity_scale.empty()) {
+    sweep.Child("velocity_scale").Fail("an empty list; expected at least one velocity factor");
+  }
+  if (spec->static_first) {
+    eigen.Child("static_first").Fail(
+        "true cannot go with a sweep of velocities (the static solution is at rest); expected false");
+  }
+}
 }  // namespace
 
 void ReadSolver(const Field& solver, SolverSpec* spec) {
@@ -36,8 +65,9 @@ void ReadSolver(const Field& solver, SolverSpec* spec) {
   using Integrator = SolverSpec::Integrator;
   CheckKeys(solver, kSolverKeys);
   if (solver.Child("analysis").present()) {
-    spec->analysis = ReadEnum<Analysis>(solver.Child("analysis"), "analysis",
-                                        {{"dynamic", Analysis::kDynamic}, {"static", Analysis::kStatic}});
+    spec->analysis = ReadEnum<Analysis>(
+        solver.Child("analysis"), "analysis",
+        {{"dynamic", Analysis::kDynamic}, {"static", Analysis::kStatic}, {"eigen", Analysis::kEigen}});
   }
   if (solver.Child("integrator").present()) {
     spec->integrator = ReadEnum<Integrator>(
@@ -60,6 +90,7 @@ void ReadSolver(const Field& solver, SolverSpec* spec) {
   OverlayInteger(solver, "load_steps", Quantity{"a number of load steps", Bound::kAtLeastOne, ""}, &spec->load_steps);
   OverlayBool(solver, "static_first", &spec->static_first);
   OverlayVec3(solver, "gravity", Quantity{"a gravity acceleration", Bound::kAny, "m/s^2"}, &spec->gravity);
+  if (solver.Child("eigen").present()) ReadEigen(solver.Child("eigen"), &spec->eigen);
   CheckStepBounds(solver, *spec);
 }
 

@@ -2,6 +2,7 @@
 // Hand-written ModelSpecs shared by the verification tests (no files involved, so the tests check the core
 // alone).
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -54,6 +55,35 @@ inline ModelSpec DoublePendulum(double m, double arm, double i_cm) {
   second.p_WB = Vec3(2 * arm, 0, 0);
   spec.bodies.push_back(second);
   spec.joints.push_back(RevoluteY("elbow", "link", "link2", Vec3(2 * arm, 0, 0)));
+  return spec;
+}
+
+// Mass-spring: a body of mass m on a prismatic joint along x with a spring k, released from x = amplitude at
+// rest (x = A cos(w t), w = sqrt(k/m)); gravity is across the slide. Fixed step dt up to t_end, tol 1e-12.
+inline ModelSpec MassSpring(double m, double k, double amplitude, SolverSpec::Integrator integrator, double dt,
+                            double t_end) {
+  ModelSpec spec;
+  spec.source = "mass-spring (test)";
+  BodySpec body = ArmBody("mass", m, 0.0, 0.01);
+  body.p_WB = Vec3(amplitude, 0, 0);
+  spec.bodies.push_back(body);
+  JointSpec joint;
+  joint.name = "slider";
+  joint.type = JointType::kPrismatic;
+  joint.child = "mass";
+  joint.axis_J = Vec3::UnitX();
+  joint.initial_position = {amplitude};
+  joint.effects.resize(1);
+  joint.effects[0].springs.push_back({k, 0.0});
+  spec.joints.push_back(joint);
+  spec.solver.gravity = Vec3(0, 0, -9.81);
+  spec.solver.integrator = integrator;
+  spec.solver.adaptive = false;
+  spec.solver.dt = dt;
+  spec.solver.dt_max = std::max(dt, spec.solver.dt_max);
+  spec.solver.t_end = t_end;
+  spec.solver.tol = 1.0e-12;
+  spec.output.rate_hz = 0;
   return spec;
 }
 

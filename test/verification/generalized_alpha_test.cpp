@@ -14,31 +14,12 @@ namespace {
 
 constexpr double kMass = 2.0, kStiffness = 50.0, kAmplitude = 0.1;  // [kg], [N/m], [m]
 
-// Body on a prismatic joint along x with a spring, released from x = kAmplitude: x = A cos(w t).
+// The mass-spring of test::MassSpring without gravity, stepped by generalized-alpha.
 ModelSpec MassSpring(double dt, double t_end, double rho_inf) {
-  ModelSpec spec;
-  spec.source = "mass-spring (test)";
-  BodySpec body = test::ArmBody("mass", kMass, 0.0, 0.01);
-  body.p_WB = Vec3(kAmplitude, 0, 0);
-  spec.bodies.push_back(body);
-  JointSpec joint;
-  joint.name = "slider";
-  joint.type = JointType::kPrismatic;
-  joint.child = "mass";
-  joint.axis_J = Vec3::UnitX();
-  joint.initial_position = {kAmplitude};
-  joint.effects.resize(1);
-  joint.effects[0].springs.push_back({kStiffness, 0.0});
-  spec.joints.push_back(joint);
-  spec.solver.integrator = SolverSpec::Integrator::kGeneralizedAlpha;
+  ModelSpec spec = test::MassSpring(kMass, kStiffness, kAmplitude, SolverSpec::Integrator::kGeneralizedAlpha, dt, t_end);
   spec.solver.rho_inf = rho_inf;
   spec.solver.gravity = Vec3::Zero();
-  spec.solver.adaptive = false;
-  spec.solver.dt = dt;
   spec.solver.dt_max = dt;
-  spec.solver.t_end = t_end;
-  spec.solver.tol = 1.0e-12;
-  spec.output.rate_hz = 0;
   return spec;
 }
 

@@ -15,33 +15,8 @@ namespace {
 
 constexpr double kMass = 2.0, kStiffness = 50.0, kAmplitude = 0.1;  // [kg], [N/m], [m]
 
-// Body on a prismatic joint along x with a spring, released from x = kAmplitude: x = A cos(w t), w = sqrt(k/m).
 ModelSpec MassSpring(SolverSpec::Integrator integrator, double dt, double t_end) {
-  ModelSpec spec;
-  spec.source = "mass-spring (test)";
-  BodySpec body = test::ArmBody("mass", kMass, 0.0, 0.01);
-  body.p_WB = Vec3(kAmplitude, 0, 0);
-  spec.bodies.push_back(body);
-  JointSpec joint;
-  joint.name = "slider";
-  joint.type = JointType::kPrismatic;
-  joint.child = "mass";
-  joint.axis_J = Vec3::UnitX();
-  joint.p_CJ = Vec3::Zero();
-  joint.initial_position = {kAmplitude};
-  joint.effects.resize(1);
-  joint.effects[0].springs.push_back({kStiffness, 0.0});
-  // The child frame coincides with the joint frame at q = 0, so the body origin sits at x = q.
-  joint.p_CJ = Vec3(0, 0, 0);
-  spec.joints.push_back(joint);
-  spec.solver.gravity = Vec3(0, 0, -9.81);
-  spec.solver.integrator = integrator;
-  spec.solver.adaptive = false;
-  spec.solver.dt = dt;
-  spec.solver.t_end = t_end;
-  spec.solver.tol = 1.0e-12;
-  spec.output.rate_hz = 0;
-  return spec;
+  return test::MassSpring(kMass, kStiffness, kAmplitude, integrator, dt, t_end);
 }
 
 double FinalPosition(const ModelSpec& spec, long* steps = nullptr) {

@@ -1,0 +1,88 @@
+#pragma once
+// Internal pieces of the eigen-analysis shared by its source files (not part of the public interface).
+
+#include <Eigen/Core>
+#include <Eigen/QR>
+#include <Eigen/SparseCore>
+#include <complex>
+#include <memory>
+#include <vector>
+
+#include "flexmbd/solver/eigen_analysis.hpp"
+
+namespace flexmbd {
+namespace eigen_internal {
+
+/// Null space of the constraint Jacobian B (m x n) from a column-pivoted QR of B^T = Q R P^T: the first
+/// `rank` columns of Q span the range of B^T, the others (Z) the motions that keep the constraints.
+class ConstraintNullSpace {
+ public:
+  ConstraintNullSpace(const Eigen::MatrixXd& B, int num_kinematic);
+  const Eigen::MatrixXd& Z() const { return Z_; }
+  int rank() const { return rank_; }
+  /// The smallest-norm x with B x = c (c consistent with B when rows of B are dependent).
+  Eigen::VectorXd MinimumNormSolution(const Eigen::VectorXd& c) const;
+
+ private:
+  int n_ = 0, rank_ = 0;
+  Eigen::MatrixXd Z_;
+  Eigen::MatrixXd Q1_;    ///< range of B^T (n x rank)
+  Eigen::MatrixXd R1t_;   ///< leading rank x rank block of R, transposed (lower triangular)
+  Eigen::VectorXi perm_;  ///< column permutation of B^T: B^T P
+};
+
+/// W with W^T Mr W = I for the mass matrix Mr = Z^T M Z of the constrained motions. Throws SolverError if Mr
+/// is not positive definite, naming the unknown that moves most in the motion without inertia.
+Eigen::MatrixXd MassNormalisingBasis(const Model& model, const Eigen::MatrixXd& Mr, const Eigen::MatrixXd& Z);
+
+/// Sparse LU by KLU (one analysis and factorisation) of a square matrix, for repeated solves.
+class KluLu {
+ public:
+  KluLu();
+  ~KluLu();
+  KluLu(const KluLu&) = delete;
+  KluLu& operator=(const KluLu&) = delete;
+  /// Returns false if the matrix is singular.
+  bool Factorise(const Eigen::SparseMatrix<double>& A);
+  bool Factorise(const Eigen::SparseMatrix<std::complex<double>>& A);
+  /// Solves A x = b in place with the last factorisation (of the same scalar type).
+  bool Solve(Eigen::VectorXd* b) const;
+  bool Solve(Eigen::VectorXcd* b) const;
+  /// Reciprocal condition estimate of the last factorisation.
+  double rcond() const;
+
+  struct Data;
+
+ private:
+  std::unique_ptr<Data> data_;
+};
+
+/// One eigenvalue s of the first-order problem with its shape y in the coordinates of LinearisedSystem.
+struct RawMode {
+  std::complex<double> s;
+  Eigen::VectorXcd x;
+};
+
+/// Turns the eigenvalues of an analysis into modes (theory (E5)): one mode per conjugate pair (the root with
+/// Im s > 0) and per real root. A root is rigid-body when |s| <= max(options.rigid_tolerance * scale, floor)
+/// [1/s], `scale` the model's frequency scale, or when both |s| and the stiffness and velocity terms its shape
+/// engages (|x|^T |K| |x| and |x|^T |D| |x| over x^H M x) are at round-off level against scale. Rigid roots
+/// give one mode each in a symmetric problem (`symmetric`: one root omega^2 per degree of freedom), else half
+/// as many, rounded up (a rigid motion is a double root of the first-order problem), with shapes spanning the
+/// roots' vectors. Sorted rigid first, then by frequency, and cut to options.num_modes.
+void ClassifyModes(const LinearisedSystem& system, const std::vector<RawMode>& all, bool symmetric, double scale,
+                   double floor, const EigenOptions& options, EigenResult* result);
+
+/// The rigid-body test of ClassifyModes for one root.
+bool IsRigidRoot(const LinearisedSystem& system, const RawMode& mode, double scale, double floor,
+                 const EigenOptions& options);
+
+/// Every mode by null-space elimination and a dense eigensolver.
+EigenResult SolveDense(const Model& model, const LinearisedSystem& system, const EigenOptions& options);
+
+/// The lowest modes (or those near options.shift_hz) by shift-invert Arnoldi on the constrained quadratic
+/// pencil (theory (E6)); by SolveDense when the Krylov space would span most of the constrained space.
+EigenResult SolveSparse(const Model& model, const LinearisedSystem& system, const EigenOptions& options);
+
+}  // namespace eigen_internal
+}  // namespace flexmbd

@@ -1,0 +1,102 @@
+// From eigenvalues and vectors to reported modes (docs/theory.md, eq. (E5)): conjugate pairs, rigid-body
+// modes, normalisation and order.
+
+#include <Eigen/Dense>
+#include <Eigen/SVD>
+#include <algorithm>
+#include <cmath>
+
+#include "eigen_internal.hpp"
+
+namespace flexmbd {
+namespace eigen_internal {
+namespace {
+// Rigid-body roots come out of the arithmetic at three kinds of round-off level (theory (E5)):
+// - the eigensolver's, ~1e-12 of the frequency scale with the shifted inverse: caught by rigid_tolerance;
+// - the round-off of the stiffness terms the shape engages, x^H K x ~ 1e-17 |x|^T |K| |x| (a free beam, whose
+//   rigid motions cancel large element terms): below kCancellation. Elastic modes of stiff finite-element
+//   models cancel too, but far less (1e-10 for a 40-element Timoshenko beam with GA L^2 / EI = 1e6);
+// - a shape that engages nothing but round-off, |x|^T |K| |x| / x^H M x below kIdle scale^2 (a free joint
+//   between loaded bodies, whose root is the round-off of the reduced matrices, ~1e-16 scale^2).
+// Only roots below kResolved of the scale are candidates for the last two.
+constexpr double kCancellation = 1.0e-14, kIdle = 1.0e-14, kResolved = 1.0e-4;
+
+}  // namespace
+
+bool IsRigidRoot(const LinearisedSystem& system, const RawMode& mode, double scale, double floor,
+                 const EigenOptions& options) {
+  const double limit = std::max(options.rigid_tolerance * scale, floor);
+  const double s = std::abs(mode.s);
+  if (s <= limit) return true;
+  if (s > kResolved * scale) return false;
+  const Eigen::VectorXd magnitude = mode.x.cwiseAbs(), re = mode.x.real(), im = mode.x.imag();
+  const double inertia = re.dot(system.M * re) + im.dot(system.M * im);
+  if (!(inertia > 0)) return false;
+  const double terms =
+      magnitude.dot(system.K.cwiseAbs() * magnitude) + s * magnitude.dot(system.D.cwiseAbs() * magnitude);
+  return s * s * inertia <= kCancellation * terms || terms <= kIdle * scale * scale * inertia;
+}
+
+namespace {
+
+// The shape over the kinematic unknowns (x = T y), scaled so that its largest component is 1.
+Eigen::VectorXcd Normalised(const LinearisedSystem& system, const Eigen::VectorXcd& y) {
+  const Eigen::VectorXd re = system.T * y.real(), im = system.T * y.imag();
+  const Eigen::VectorXcd x =
+      re.cast<std::complex<double>>() + std::complex<double>(0, 1) * im.cast<std::complex<double>>();
+  Eigen::Index k = 0;
+  if (x.size() == 0 || x.cwiseAbs().maxCoeff(&k) == 0.0) return x;
+  return x / x[k];
+}
+
+}  // namespace
+
+void ClassifyModes(const LinearisedSystem& system, const std::vector<RawMode>& all, bool symmetric, double scale,
+                   double floor, const EigenOptions& options, EigenResult* result) {
+  std::vector<const RawMode*> rigid;
+  std::vector<Mode> modes;
+  for (const RawMode& raw : all) {
+    if (IsRigidRoot(system, raw, scale, floor, options)) {
+      rigid.push_back(&raw);
+      continue;
+    }
+    if (raw.s.imag() < 0) continue;  // the conjugate of a root with Im s > 0
+    Mode mode;
+    mode.eigenvalue = raw.s;
+    const double magnitude = std::abs(raw.s);
+    mode.frequency_hz = magnitude / (2 * M_PI);
+    mode.damped_frequency_hz = std::abs(raw.s.imag()) / (2 * M_PI);
+    mode.damping_ratio = -raw.s.real() / magnitude + 0.0;  // + 0.0: no negative zero in tables
+    mode.shape = Normalised(system, raw.x);
+    modes.push_back(std::move(mode));
+  }
+  if (!rigid.empty()) {
+    // Shapes of the rigid-body modes: the leading directions spanned by the zero roots' vectors.
+    const int count = static_cast<int>(rigid.size());
+    const int num_rigid = symmetric ? count : (count + 1) / 2;
+    Eigen::MatrixXd vectors(rigid.front()->x.size(), 2 * count);
+    for (int i = 0; i < count; ++i) {
+      vectors.col(2 * i) = rigid[i]->x.real();
+      vectors.col(2 * i + 1) = rigid[i]->x.imag();
+    }
+    const Eigen::BDCSVD<Eigen::MatrixXd> svd(vectors, Eigen::ComputeThinU);
+    for (int i = 0; i < num_rigid; ++i) {
+      Mode mode;
+      mode.eigenvalue = 0.0;
+      mode.rigid_body = true;
+      mode.shape = Normalised(system, svd.matrixU().col(i).cast<std::complex<double>>());
+      modes.push_back(std::move(mode));
+    }
+  }
+  std::stable_sort(modes.begin(), modes.end(), [](const Mode& a, const Mode& b) {
+    if (a.rigid_body != b.rigid_body) return a.rigid_body;
+    return a.frequency_hz < b.frequency_hz;
+  });
+  result->num_rigid_body =
+      static_cast<int>(std::count_if(modes.begin(), modes.end(), [](const Mode& m) { return m.rigid_body; }));
+  if (options.num_modes > 0 && static_cast<int>(modes.size()) > options.num_modes) modes.resize(options.num_modes);
+  result->modes = std::move(modes);
+}
+
+}  // namespace eigen_internal
+}  // namespace flexmbd
