@@ -7,10 +7,13 @@ source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
 PACKAGES=(
   # ROS 1 (Debian's own packaging: no /opt/ros, catkin lives in /usr)
   ros-base-dev libroscpp-dev librosbag-dev librostest-dev
-  python3-rostest python3-roslaunch python3-rosmaster python3-rosbag python3-rospy
-  catkin python3-catkin-pkg ros-message-generation
+  python3-rostest python3-roslaunch python3-rosmaster python3-rosbag python3-rospy rosout
+  catkin python3-catkin-pkg ros-message-generation ros-message-runtime
   ros-std-msgs libstd-msgs-dev ros-sensor-msgs libsensor-msgs-dev ros-geometry-msgs libgeometry-msgs-dev
   ros-std-srvs libstd-srvs-dev
+  # messages of the node's topics: /tf, ~markers, /clock
+  ros-tf2-msgs libtf2-msgs-dev ros-visualization-msgs libvisualization-msgs-dev
+  ros-rosgraph-msgs libros-rosgraph-msgs-dev
   # core and io libraries
   liburdfdom-dev libeigen3-dev libsuitesparse-dev libyaml-cpp-dev
   # tests and benchmarks

@@ -130,40 +130,45 @@ def plot_group(time, series, key, out_path):
     plt.close(figure)
 
 
+def plot_columns(header, columns, out_dir, stem):
+    """Plots columns named as in the CSV (header[0] is 't') to <out_dir>/<stem>_<group>.png; returns the paths.
+
+    Shared with plot_bag.py, which turns a bag into the same columns. Raises CsvError if a file cannot be
+    written."""
+    try:
+        os.makedirs(out_dir, exist_ok=True)
+    except OSError as exc:
+        raise CsvError("cannot create output folder %s: %s" % (out_dir, exc))
+    groups = {}
+    for name, values in zip(header[1:], columns[1:]):
+        key, label = group_key(name)
+        groups.setdefault(key, []).append((label, values))
+    paths = []
+    for key, series in groups.items():
+        out_path = os.path.join(out_dir, "%s_%s.png" % (stem, safe_file_part(key)))
+        try:
+            plot_group(columns[0], series, key, out_path)
+        except OSError as exc:
+            raise CsvError("cannot write %s: %s" % (out_path, exc))
+        paths.append(out_path)
+    return paths
+
+
 def main(argv):
     parser = argparse.ArgumentParser(description="Plot a flexmbd CSV output file to PNG files.")
     parser.add_argument("csv", help="CSV file written by flexmbd_run --csv")
     parser.add_argument("--out-dir", "-o", help="folder for the PNG files (default: the CSV's folder)")
     args = parser.parse_args(argv[1:])
 
+    out_dir = args.out_dir or os.path.dirname(os.path.abspath(args.csv))
+    stem = os.path.splitext(os.path.basename(args.csv))[0]
     try:
         header, columns = read_csv(args.csv)
+        for path in plot_columns(header, columns, out_dir, stem):
+            print(path)
     except CsvError as exc:
         print("error: plot_csv.py: %s" % exc, file=sys.stderr)
         return 1
-
-    out_dir = args.out_dir or os.path.dirname(os.path.abspath(args.csv))
-    try:
-        os.makedirs(out_dir, exist_ok=True)
-    except OSError as exc:
-        print("error: plot_csv.py: cannot create output folder %s: %s" % (out_dir, exc), file=sys.stderr)
-        return 1
-    stem = os.path.splitext(os.path.basename(args.csv))[0]
-
-    groups = {}
-    for name, values in zip(header[1:], columns[1:]):
-        key, label = group_key(name)
-        groups.setdefault(key, []).append((label, values))
-
-    time = columns[0]
-    for key, series in groups.items():
-        out_path = os.path.join(out_dir, "%s_%s.png" % (stem, safe_file_part(key)))
-        try:
-            plot_group(time, series, key, out_path)
-        except OSError as exc:
-            print("error: plot_csv.py: cannot write %s: %s" % (out_path, exc), file=sys.stderr)
-            return 1
-        print(out_path)
     return 0
 
 

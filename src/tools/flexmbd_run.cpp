@@ -1,22 +1,29 @@
 // Command-line runner: runs a case without roscore.
-//   flexmbd_run --urdf F --config F [--csv F]
+//   flexmbd_run --urdf F --config F [--csv F] [--bag F]
+// --csv and --bag override output.csv and output.bag; the bag is the one the node writes (docs/ros.md).
 // Exit status: 0 success, 1 usage error, 2 bad input (ConfigError), 3 the run failed (SolverError).
 
 #include <cstdio>
-#include <memory>
+#include <optional>
 #include <string>
+#include <vector>
 
 #include "flexmbd/common/error.hpp"
 #include "flexmbd/io/config_loader.hpp"
-#include "flexmbd/io/csv_sink.hpp"
+#include "flexmbd/ros/sample_fan_out.hpp"
+#include "flexmbd/ros/text_file.hpp"
+#include "flexmbd/ros/world_frame.hpp"
+#include "flexmbd/solver/eigen_analysis.hpp"
 #include "flexmbd/solver/simulation.hpp"
+#include "flexmbd/solver/sparse_system.hpp"
+#include "flexmbd/solver/static_solver.hpp"
 
 namespace {
 
-constexpr char kUsage[] = "usage: flexmbd_run --urdf FILE --config FILE [--csv FILE]\n";
+constexpr char kUsage[] = "usage: flexmbd_run --urdf FILE --config FILE [--csv FILE] [--bag FILE]\n";
 
 struct Arguments {
-  std::string urdf, config, csv;
+  std::string urdf, config, csv, bag;
 };
 
 bool Parse(int argc, char** argv, Arguments* args) {
@@ -27,6 +34,7 @@ bool Parse(int argc, char** argv, Arguments* args) {
     if (flag == "--urdf") args->urdf = value;
     else if (flag == "--config") args->config = value;
     else if (flag == "--csv") args->csv = value;
+    else if (flag == "--bag") args->bag = value;
     else return false;
   }
   return !args->urdf.empty();
@@ -40,6 +48,48 @@ void PrintSummary(const flexmbd::Simulation& simulation, const flexmbd::OutputSa
               last.kinetic, last.potential, last.external_work, last.dissipated, last.numerical_dissipation);
 }
 
+// solver.analysis: eigen. Linearises about the initial state (or its static equilibrium) and prints the mode
+// table, or a fan-plot table for a sweep of velocity factors.
+void RunEigen(const flexmbd::Model& model) {
+  using Method = flexmbd::SolverSpec::EigenSettings::Method;
+  const flexmbd::SolverSpec::EigenSettings& settings = model.solver().eigen;
+  flexmbd::EigenOptions options;
+  options.num_modes = settings.modes;
+  options.shift_hz = settings.shift_hz;
+  options.method = settings.method == Method::kDense    ? flexmbd::EigenMethod::kDense
+                   : settings.method == Method::kSparse ? flexmbd::EigenMethod::kSparse
+                                                        : flexmbd::EigenMethod::kAuto;
+  flexmbd::State state = model.initial_state();
+  if (settings.static_first) {
+    // From consistent multipliers: with zero ones the first static tangent of a hanging body has no joint
+    // geometric stiffness and is singular.
+    state = flexmbd::WithConsistentMotion(model, state);
+    flexmbd::SparseSystem system(model);
+    const flexmbd::StaticResult result = flexmbd::SolveStatic(model, &system, &state);
+    if (!result.converged) {
+      std::string what = "static analysis failed in load step " + std::to_string(result.load_steps) + " of " +
+                         std::to_string(model.solver().load_steps);
+      if (result.last.worst_unknown >= 0) {
+        what += "; worst residual at " + model.DescribeUnknown(result.last.worst_unknown);
+      }
+      throw flexmbd::SolverError(what);
+    }
+  }
+  if (!settings.sweep_velocity_scale.empty()) {
+    const std::vector<flexmbd::SweepPoint> points =
+        flexmbd::EigenSweep(model, settings.sweep_velocity_scale,
+                            [&](double factor) { return flexmbd::ScaleVelocities(state, factor); }, options);
+    std::printf("flexmbd_run: eigen-analysis sweep of %zu velocity factors (%s)\n", points.size(),
+                points.empty() ? "" : points.front().result.method.c_str());
+    std::fputs(flexmbd::FormatFanPlot(points, "velocity_scale", settings.modes).c_str(), stdout);
+    return;
+  }
+  const flexmbd::EigenResult result = flexmbd::EigenAnalysis(model, state, options);
+  std::printf("flexmbd_run: eigen-analysis at t = %.6g s (%s): %d degrees of freedom, %d rigid-body modes\n",
+              state.t, result.method.c_str(), result.num_dof, result.num_rigid_body);
+  std::fputs(flexmbd::FormatModeTable(result).c_str(), stdout);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -48,26 +98,44 @@ int main(int argc, char** argv) {
     std::fputs(kUsage, stderr);
     return 1;
   }
-  std::unique_ptr<flexmbd::CsvSink> csv;
   try {
     flexmbd::ModelSpec spec = flexmbd::LoadModelSpec(args.urdf, args.config);
     if (!args.csv.empty()) spec.output.csv = args.csv;
+    if (!args.bag.empty()) spec.output.bag = args.bag;
     const flexmbd::Model model = flexmbd::BuildModel(spec);
-    if (!model.output().csv.empty()) csv = std::make_unique<flexmbd::CsvSink>(model, model.output().csv);
+    if (model.solver().analysis == flexmbd::SolverSpec::Analysis::kEigen) {
+      try {
+        RunEigen(model);
+      } catch (const flexmbd::SolverError& e) {
+        std::fprintf(stderr, "flexmbd_run: eigen-analysis failed: %s\n", e.what());
+        return 3;
+      }
+      return 0;
+    }
+    const flexmbd::ros::RecordingFiles files{model.output().bag, flexmbd::ros::BagCompression::kNone,
+                                             model.output().csv};
+    flexmbd::ros::SampleFanOut outputs(model, files, flexmbd::ros::DefaultTopicNames());
+    std::optional<flexmbd::ros::SampleConverter> converter;  // only a bag needs messages
+    if (!files.bag.empty()) {
+      const std::string urdf_xml = flexmbd::ros::ReadTextFile(args.urdf, "URDF file");
+      converter.emplace(model, flexmbd::ros::WorldFrameName(urdf_xml, model));
+    }
     flexmbd::Simulation simulation(model);
     flexmbd::OutputSample last;
     try {
       simulation.Run([&](const flexmbd::OutputSample& sample) {
-        if (csv) csv->Write(sample);
+        const flexmbd::ros::SampleMessages messages =
+            converter ? converter->Convert(sample, simulation.state()) : flexmbd::ros::SampleMessages();
+        outputs.Write(sample, messages);
         last = sample;
       });
     } catch (const flexmbd::SolverError& e) {
-      if (csv) csv->Close();
+      outputs.Close();
       std::fprintf(stderr, "flexmbd_run: run failed: %s\n", e.what());
       std::printf("flexmbd_run: %s\n", simulation.statistics().Summary().c_str());
       return 3;
     }
-    if (csv) csv->Close();
+    outputs.Close();
     PrintSummary(simulation, last);
   } catch (const flexmbd::ConfigError& e) {
     std::fprintf(stderr, "flexmbd_run: %s\n", e.what());

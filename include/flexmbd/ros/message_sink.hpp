@@ -1,0 +1,19 @@
+#pragma once
+/// @file
+/// Where the messages of a sample go: topics or a bag.
+
+#include "flexmbd/ros/sample_converter.hpp"
+
+namespace flexmbd {
+namespace ros {
+
+class MessageSink {
+ public:
+  virtual ~MessageSink() = default;
+  virtual void Write(const SampleMessages& messages) = 0;
+  /// Flushes and releases what the sink holds; Write is not called afterwards.
+  virtual void Close() {}
+};
+
+}  // namespace ros
+}  // namespace flexmbd

@@ -1,0 +1,45 @@
+#pragma once
+/// @file
+/// One conversion per sample: SampleConverter turns an OutputSample (and the state it was taken in) into
+/// the messages that every sink (topics, bag) receives.
+
+#include <cstdint>
+#include <optional>
+#include <string>
+
+#include "flexmbd/ros/message_conversions.hpp"
+
+namespace flexmbd {
+namespace ros {
+
+/// The messages of one output sample.
+struct SampleMessages {
+  sensor_msgs::JointState joint_state;
+  Energy energy;
+  JointReactions reactions;
+  SolverStep solver;
+  /// Link frames at the state's time. A sample is interpolated inside the step that ends at the state, so
+  /// transforms are stamped with the state's own time (exact poses) and sent once per such step: stamps
+  /// then bracket every sample time, and tf interpolates between them.
+  std::optional<tf2_msgs::TFMessage> transforms;
+};
+
+class SampleConverter {
+ public:
+  /// @param model must outlive the converter. @param world_frame parent frame of the link transforms.
+  SampleConverter(const Model& model, std::string world_frame);
+
+  /// Messages of `sample`, taken while the simulation is at `state` (state.t >= sample.t). Their header.seq
+  /// is the sample's index in the run (0 first): what roscpp's publisher numbers them on the wire, so that a
+  /// bag holds the bytes a subscriber receives.
+  SampleMessages Convert(const OutputSample& sample, const State& state);
+
+ private:
+  const Model& model_;
+  std::string world_frame_;
+  uint32_t next_seq_ = 0;
+  std::optional<double> last_transform_time_;  ///< state time of the last transforms sent [s]
+};
+
+}  // namespace ros
+}  // namespace flexmbd

@@ -1,0 +1,58 @@
+#pragma once
+/// @file
+/// One conversion, several sinks: SampleFanOut hands the messages of each sample to every message sink
+/// (topics, bag) and the sample itself to the CSV.
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "flexmbd/io/csv_sink.hpp"
+#include "flexmbd/ros/bag_sink.hpp"
+#include "flexmbd/ros/message_sink.hpp"
+
+namespace flexmbd {
+namespace ros {
+
+/// Files that record every sample of a run; an empty path means none.
+struct RecordingFiles {
+  std::string bag;
+  BagCompression bag_compression = BagCompression::kNone;
+  std::string csv;
+};
+
+class SampleFanOut {
+ public:
+  /// Opens the recording files (the node and the runner share this, so they write the same bag and CSV).
+  /// `model` must outlive the fan-out. Throws ConfigError naming a path that cannot be opened.
+  SampleFanOut(const Model& model, RecordingFiles files, TopicNames topics);
+
+  /// Adds a sink that lives across runs (the topics).
+  void AddLiveSink(std::unique_ptr<MessageSink> sink);
+
+  /// Writes `sample` to the CSV and `messages` (its conversion) to the message sinks; `messages` may be empty
+  /// when there is none (no bag, no topics).
+  void Write(const OutputSample& sample, const SampleMessages& messages);
+
+  /// Closes the recording files and opens them again, empty, for a new run from the initial state.
+  void RestartRecordings();
+
+  /// Closes the recording files: they are complete and readable afterwards; later samples are not recorded.
+  void CloseRecordings();
+
+  /// Closes every sink.
+  void Close();
+
+ private:
+  void OpenRecordings();
+
+  const Model& model_;
+  RecordingFiles files_;
+  TopicNames topics_;
+  std::vector<std::unique_ptr<MessageSink>> live_sinks_;
+  std::unique_ptr<BagSink> bag_;
+  std::unique_ptr<CsvSink> csv_;
+};
+
+}  // namespace ros
+}  // namespace flexmbd

@@ -1,0 +1,38 @@
+#pragma once
+/// @file
+/// Names of the topics that carry the samples, the same on the wire and in a bag (docs/ros.md).
+
+#include <string>
+
+namespace flexmbd {
+namespace ros {
+
+// Topic names as the node advertises them: joint_states in the node's namespace, /tf and /clock global,
+// the others in the node's private namespace.
+constexpr char kJointStatesTopic[] = "joint_states";
+constexpr char kTfTopic[] = "/tf";
+constexpr char kClockTopic[] = "/clock";
+constexpr char kEnergyTopic[] = "energy";
+constexpr char kReactionsTopic[] = "reactions";
+constexpr char kSolverTopic[] = "solver";
+constexpr char kMarkersTopic[] = "markers";
+
+/// Fully resolved topic names.
+struct TopicNames {
+  std::string joint_states;  ///< sensor_msgs/JointState
+  std::string energy;        ///< flexmbd/Energy
+  std::string reactions;     ///< flexmbd/JointReactions
+  std::string solver;        ///< flexmbd/SolverStep
+  std::string tf;            ///< tf2_msgs/TFMessage
+  std::string markers;       ///< visualization_msgs/MarkerArray
+};
+
+/// The node's name in the launch files; the runner records its bags under this name.
+constexpr char kDefaultNodeName[] = "/flexmbd";
+
+/// The names of the node kDefaultNodeName in the root namespace, without remapping: /joint_states,
+/// /flexmbd/energy, ... (what the runner writes to its bags).
+TopicNames DefaultTopicNames();
+
+}  // namespace ros
+}  // namespace flexmbd

@@ -1,0 +1,42 @@
+#pragma once
+/// @file
+/// Publishes the messages of each sample on the node's topics (docs/ros.md). roscpp queues every message per
+/// subscriber and sends it from its own thread, so publishing never waits for a subscriber.
+
+#include <ros/ros.h>
+
+#include <functional>
+
+#include "flexmbd/ros/message_sink.hpp"
+#include "flexmbd/ros/topic_names.hpp"
+
+namespace flexmbd {
+namespace ros {
+
+/// The topic names of the node with handles `node` and `private_node` ("~"), after remapping.
+TopicNames ResolveTopicNames(const ::ros::NodeHandle& node, const ::ros::NodeHandle& private_node);
+
+class TopicPublisher : public MessageSink {
+ public:
+  /// Advertises `joint_states` and `/tf` in `node`'s namespace, `~energy`, `~reactions`, `~solver` and the
+  /// latched `~markers` (published once, here) in `private_node`'s, and `/clock` if `publish_clock`.
+  /// `on_connect` is called (from a spinner thread) whenever a subscriber connects to a sample topic.
+  TopicPublisher(::ros::NodeHandle& node, ::ros::NodeHandle& private_node,
+                 const visualization_msgs::MarkerArray& markers, bool publish_clock,
+                 const std::function<void()>& on_connect);
+
+  /// Publishes while ROS is up (after a shutdown it does nothing); the clock follows the sample time.
+  void Write(const SampleMessages& messages) override;
+
+  /// Fewest subscribers over the sample topics (joint_states, ~energy, ~reactions, ~solver).
+  int MinSampleSubscribers() const;
+
+  /// True if any topic has a subscriber.
+  bool HasSubscribers() const;
+
+ private:
+  ::ros::Publisher joint_states_, energy_, reactions_, solver_, tf_, markers_, clock_;
+};
+
+}  // namespace ros
+}  // namespace flexmbd

@@ -1,0 +1,119 @@
+#!/usr/bin/python3
+"""Plots a bag written by flexmbd_node (~bag) or flexmbd_run (--bag): one PNG per group of quantities.
+
+The bag's sample topics (docs/ros.md) are turned into the columns of the runner's CSV (joint.<name>.position,
+energy.kinetic, solver.dt, ...) and plotted exactly as plot_csv.py plots a CSV, so both give the same figures:
+  <stem>_joint_position.png, <stem>_joint_velocity.png, <stem>_joint_effort.png,
+  <stem>_joint_reaction_force.png, <stem>_joint_reaction_moment.png, <stem>_energy.png,
+  <stem>_solver_dt.png, <stem>_solver_iterations.png
+
+Usage: plot_bag.py BAG [--out-dir DIR]   (DIR defaults to the bag's folder)
+Prints the path of every PNG written. Needs python3-rosbag and python3-matplotlib (no roscore).
+"""
+
+import argparse
+import os
+import sys
+
+import plot_csv  # the CSV plotter beside this file: same grouping, same figures
+
+try:
+    import rosbag
+except ImportError:  # reported in main, with the package to install
+    rosbag = None
+
+
+class BagError(Exception):
+    pass
+
+
+SAMPLE_TYPES = {
+    "joint_states": "sensor_msgs/JointState",
+    "energy": "flexmbd/Energy",
+    "reactions": "flexmbd/JointReactions",
+    "solver": "flexmbd/SolverStep",
+}
+# the CSV's energy columns, in its order; total = kinetic + potential
+ENERGY_FIELDS = ("kinetic", "potential", "total", "external_work", "dissipated", "numerical_dissipation")
+
+
+def find_sample_topics(bag):
+    """Returns {kind: topic} for the sample topics, found by message type (any node name)."""
+    found = {}
+    for topic, info in bag.get_type_and_topic_info().topics.items():
+        for kind, msg_type in SAMPLE_TYPES.items():
+            if info.msg_type == msg_type:
+                if kind in found:
+                    raise BagError("two %s topics (%s, %s): expected one node's samples"
+                                   % (msg_type, found[kind], topic))
+                found[kind] = topic
+    missing = [SAMPLE_TYPES[kind] for kind in SAMPLE_TYPES if kind not in found]
+    if missing:
+        raise BagError("no topic of type %s: not a flexmbd bag" % ", ".join(missing))
+    return found
+
+
+def read_columns(path):
+    """Returns (header, columns) as plot_csv.read_csv does for the runner's CSV of the same run."""
+    if rosbag is None:
+        raise BagError("python3-rosbag is not installed (run scripts/install_deps.sh)")
+    try:
+        bag = rosbag.Bag(path)
+    except (OSError, rosbag.ROSBagException) as exc:
+        raise BagError("%s: cannot read the bag: %s" % (path, exc))
+    with bag:
+        topics = find_sample_topics(bag)
+        messages = {kind: [m for _, m, _ in bag.read_messages(topics=[topic])] for kind, topic in topics.items()}
+    counts = {kind: len(values) for kind, values in messages.items()}
+    if len(set(counts.values())) != 1 or counts["joint_states"] == 0:
+        raise BagError("%s: the sample topics hold different numbers of messages: %s" % (path, counts))
+
+    columns = {"t": [m.header.stamp.to_sec() for m in messages["joint_states"]]}
+
+    def add(name, value):
+        columns.setdefault(name, []).append(value)
+
+    for joint_state in messages["joint_states"]:
+        for k, name in enumerate(joint_state.name):
+            add("joint.%s.position" % name, joint_state.position[k])
+            add("joint.%s.velocity" % name, joint_state.velocity[k])
+            add("joint.%s.effort" % name, joint_state.effort[k])
+    for reactions in messages["reactions"]:
+        for k, name in enumerate(reactions.name):
+            for axis in "xyz":
+                add("joint.%s.reaction_force_%s" % (name, axis), getattr(reactions.force[k], axis))
+            for axis in "xyz":
+                add("joint.%s.reaction_moment_%s" % (name, axis), getattr(reactions.moment[k], axis))
+    for energy in messages["energy"]:
+        for field in ENERGY_FIELDS:
+            add("energy." + field, energy.kinetic + energy.potential if field == "total" else getattr(energy, field))
+    for step in messages["solver"]:
+        add("solver.dt", step.dt)
+        add("solver.iterations", step.iterations)
+    header = list(columns)
+    return header, [columns[name] for name in header]
+
+
+def main(argv):
+    parser = argparse.ArgumentParser(description="Plot a flexmbd bag to PNG files.")
+    parser.add_argument("bag", help="bag written by flexmbd_node (~bag) or flexmbd_run --bag")
+    parser.add_argument("--out-dir", "-o", help="folder for the PNG files (default: the bag's folder)")
+    args = parser.parse_args(argv[1:])
+    try:
+        header, columns = read_columns(args.bag)
+    except BagError as exc:
+        print("error: plot_bag.py: %s" % exc, file=sys.stderr)
+        return 1
+    out_dir = args.out_dir or os.path.dirname(os.path.abspath(args.bag))
+    stem = os.path.splitext(os.path.basename(args.bag))[0]
+    try:
+        for path in plot_csv.plot_columns(header, columns, out_dir, stem):
+            print(path)
+    except plot_csv.CsvError as exc:
+        print("error: plot_bag.py: %s" % exc, file=sys.stderr)
+        return 1
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv))

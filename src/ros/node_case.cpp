@@ -1,0 +1,58 @@
+#include "flexmbd/ros/node_case.hpp"
+
+#include "flexmbd/common/error.hpp"
+#include "flexmbd/io/config_loader.hpp"
+#include "flexmbd/ros/param_tree.hpp"
+#include "flexmbd/ros/text_file.hpp"
+#include "flexmbd/ros/world_frame.hpp"
+
+namespace flexmbd {
+namespace ros {
+namespace {
+
+constexpr char kRobotDescription[] = "robot_description";
+
+struct UrdfSource {
+  std::string xml;
+  std::string name;  ///< in messages: the file, or the parameter
+};
+
+UrdfSource ReadUrdf(const ::ros::NodeHandle& node, const NodeSettings& settings) {
+  if (!settings.urdf_file.empty()) return UrdfSource{ReadTextFile(settings.urdf_file, "URDF file"), settings.urdf_file};
+  std::string key;
+  std::string xml;
+  if (!node.searchParam(kRobotDescription, key) || !node.getParam(key, xml)) {
+    throw ConfigError(node.resolveName(kRobotDescription) +
+                      ": not set (or not text); expected the URDF document in the robot_description parameter, "
+                      "or a URDF file path in ~urdf_file");
+  }
+  return UrdfSource{xml, key};
+}
+
+YAML::Node ReadExtensionParameters(const ::ros::NodeHandle& private_node) {
+  XmlRpc::XmlRpcValue tree;
+  if (!private_node.getParam(private_node.getNamespace(), tree)) return YAML::Node();
+  return ToYamlWithout(tree, private_node.getNamespace(), NodeSettingNames());
+}
+
+}  // namespace
+
+NodeCase LoadNodeCase(const ::ros::NodeHandle& node, const ::ros::NodeHandle& private_node) {
+  NodeSettings settings = ReadNodeSettings(private_node);
+  const UrdfSource urdf = ReadUrdf(node, settings);
+  ModelSpec spec =
+      LoadModelSpecFromStrings(urdf.xml, urdf.name, ReadExtensionParameters(private_node), private_node.getNamespace());
+  if (spec.solver.analysis == SolverSpec::Analysis::kEigen) {
+    throw ConfigError(private_node.getNamespace() +
+                      ": solver.analysis: eigen is not a run the node can publish; expected dynamic or static "
+                      "(flexmbd_run prints eigen-analyses)");
+  }
+  if (settings.rate_hz) spec.output.rate_hz = *settings.rate_hz;
+  RecordingFiles files{settings.bag.value_or(spec.output.bag), settings.bag_compression, spec.output.csv};
+  Model model = BuildModel(spec);
+  std::string world_frame = WorldFrameName(urdf.xml, model);
+  return NodeCase{std::move(settings), std::move(model), std::move(world_frame), std::move(files)};
+}
+
+}  // namespace ros
+}  // namespace flexmbd

@@ -1,0 +1,44 @@
+#include "flexmbd/ros/sample_fan_out.hpp"
+
+namespace flexmbd {
+namespace ros {
+
+SampleFanOut::SampleFanOut(const Model& model, RecordingFiles files, TopicNames topics)
+    : model_(model), files_(std::move(files)), topics_(std::move(topics)) {
+  OpenRecordings();
+}
+
+void SampleFanOut::AddLiveSink(std::unique_ptr<MessageSink> sink) { live_sinks_.push_back(std::move(sink)); }
+
+void SampleFanOut::Write(const OutputSample& sample, const SampleMessages& messages) {
+  for (const auto& sink : live_sinks_) sink->Write(messages);
+  if (bag_) bag_->Write(messages);
+  if (csv_) csv_->Write(sample);
+}
+
+void SampleFanOut::RestartRecordings() {
+  CloseRecordings();
+  OpenRecordings();
+}
+
+void SampleFanOut::Close() {
+  for (const auto& sink : live_sinks_) sink->Close();
+  CloseRecordings();
+}
+
+void SampleFanOut::OpenRecordings() {
+  if (!files_.bag.empty()) {
+    bag_ = std::make_unique<BagSink>(files_.bag, files_.bag_compression, topics_, ToBodyMarkers(model_));
+  }
+  if (!files_.csv.empty()) csv_ = std::make_unique<CsvSink>(model_, files_.csv);
+}
+
+void SampleFanOut::CloseRecordings() {
+  if (bag_) bag_->Close();
+  if (csv_) csv_->Close();
+  bag_.reset();
+  csv_.reset();
+}
+
+}  // namespace ros
+}  // namespace flexmbd

@@ -1,0 +1,256 @@
+#include "flexmbd/ros/simulator_node.hpp"
+
+#include <std_srvs/Trigger.h>
+
+#include <iomanip>
+#include <limits>
+#include <sstream>
+#include <utility>
+
+#include "flexmbd/common/error.hpp"
+#include "flexmbd/ros/stop_signal.hpp"
+
+namespace flexmbd {
+namespace ros {
+namespace {
+
+// While it waits (pause, pace, subscribers), the loop checks ros::ok() (SIGINT, SIGTERM, rosnode kill) at
+// least this often.
+constexpr std::chrono::milliseconds kPollPeriod(20);
+// roscpp drops the messages it has queued for a subscriber when the node shuts down, and cannot say when
+// the queues are empty: at the end of a run the node stays this long for its subscribers to take them
+// (a full 10000-sample queue drains in about 0.25 s on loopback; bench/node/README.md).
+constexpr std::chrono::milliseconds kDrainTime(500);
+// Samples the writer thread collects before it is woken when the run goes as fast as it can (paced runs
+// wake it for every sample): one wake-up then serves many samples.
+constexpr size_t kUnpacedWakeBatch = 64;
+
+std::string FormatTime(double t) {
+  std::ostringstream text;
+  text << std::setprecision(std::numeric_limits<double>::max_digits10) << t;
+  return text.str();
+}
+
+}  // namespace
+
+SimulatorNode::SimulatorNode(::ros::NodeHandle node, ::ros::NodeHandle private_node)
+    : node_(std::move(node)),
+      private_node_(std::move(private_node)),
+      case_(LoadNodeCase(node_, private_node_)),
+      pacer_(case_.settings.real_time_factor),
+      outputs_(std::make_unique<SampleFanOut>(case_.model, case_.files, ResolveTopicNames(node_, private_node_))) {
+  if (case_.settings.publish) {
+    bool use_sim_time = false;
+    ::ros::param::get("/use_sim_time", use_sim_time);
+    auto publisher = std::make_unique<TopicPublisher>(node_, private_node_, ToBodyMarkers(case_.model), use_sim_time,
+                                                      [this] { control_.Notify(); });
+    publisher_ = publisher.get();
+    outputs_->AddLiveSink(std::move(publisher));
+  }
+  writer_ = std::make_unique<AsyncSampleWriter>(outputs_.get(),
+                                                case_.settings.real_time_factor > 0.0 ? 1 : kUnpacedWakeBatch);
+  const std::pair<const char*, RunControl::Command> services[] = {{"pause", RunControl::Command::kPause},
+                                                                  {"resume", RunControl::Command::kResume},
+                                                                  {"step", RunControl::Command::kStep},
+                                                                  {"reset", RunControl::Command::kReset}};
+  for (const auto& [name, command] : services) {
+    const RunControl::Command posted = command;
+    services_.push_back(private_node_.advertiseService<std_srvs::Trigger::Request, std_srvs::Trigger::Response>(
+        name, [this, posted](std_srvs::Trigger::Request&, std_srvs::Trigger::Response& response) {
+          const RunControl::Reply reply = control_.Request(posted);
+          response.success = reply.success;
+          response.message = reply.message;
+          return true;
+        }));
+  }
+}
+
+int SimulatorNode::Run() {
+  ::ros::AsyncSpinner spinner(1);  // services and connection callbacks, beside the run loop
+  spinner.start();
+  const SolverSpec& solver = case_.model.solver();
+  ROS_INFO_STREAM("flexmbd: " << case_.model.source() << ": " << case_.model.bodies().size() << " bodies, "
+                              << case_.model.num_variables() << " joint variables, t_end = " << solver.t_end << " s, "
+                              << case_.model.output().rate_hz << " samples/s (0: every step), "
+                              << "real_time_factor " << case_.settings.real_time_factor
+                              << (case_.files.bag.empty() ? "" : ", bag " + case_.files.bag));
+  int status = kExitSuccess;
+  try {
+    StartRun();
+    while (::ros::ok() && !StopRequested()) {
+      if (computed_to_end_ && pending_.empty()) ReportEnd();  // first, so that no command sees open files
+      ServeCommand();
+      if (paused_ && !step_in_progress_) {
+        Wait(Clock::now() + kPollPeriod);
+      } else if (!pending_.empty()) {
+        SendNext();
+      } else if (!computed_to_end_) {
+        AdvanceOneChunk();
+      } else if (case_.settings.keep_alive) {
+        Wait(Clock::now() + kPollPeriod);
+      } else {
+        break;
+      }
+    }
+    if (computed_to_end_ && pending_.empty()) LetSubscribersDrain();
+  } catch (const SolverError& error) {
+    FlushPending();
+    ROS_FATAL_STREAM("flexmbd: run failed: " << error.what());
+    ROS_INFO_STREAM("flexmbd: " << simulation_->statistics().Summary());
+    status = kExitRunFailed;
+  }
+  if (StopRequested() || !::ros::ok()) {
+    FlushPending();  // record what was computed
+    ROS_INFO_STREAM("flexmbd: stopped at t = " << simulation_->state().t << " s after " << samples_sent_
+                                               << " samples sent");
+  }
+  control_.Close();
+  writer_->Flush();
+  outputs_->Close();
+  spinner.stop();
+  return status;
+}
+
+void SimulatorNode::StartRun() {
+  if (simulation_) {  // a reset: the files restart with the run
+    writer_->Flush();
+    outputs_->RestartRecordings();
+  }
+  pending_.clear();
+  last_sent_t_.reset();
+  samples_sent_ = 0;
+  computed_to_end_ = false;
+  reported_end_ = false;
+  anchor_pace_ = true;
+  converter_ = std::make_unique<SampleConverter>(case_.model, case_.world_frame);
+  simulation_ = std::make_unique<Simulation>(case_.model);
+  const SolverSpec& solver = case_.model.solver();
+  if (solver.analysis == SolverSpec::Analysis::kStatic) {
+    simulation_->Run(collect_);
+    computed_to_end_ = true;
+    return;
+  }
+  if (solver.static_first) simulation_->SolveStaticEquilibrium();
+  simulation_->Begin(collect_);
+}
+
+void SimulatorNode::Collect(const OutputSample& sample) {
+  pending_.push_back(PendingSample{sample, converter_->Convert(sample, simulation_->state())});
+}
+
+void SimulatorNode::AdvanceOneChunk() {
+  // About one step per chunk (the size of the last one; dt at first), so that commands, the pace and
+  // shutdown are served between steps. The core never cuts a step to land on `until`, so chunking does not
+  // change the results.
+  const SolverSpec& solver = case_.model.solver();
+  const State& state = simulation_->state();
+  const double chunk = state.h_prev > 0.0 ? state.h_prev : solver.dt;
+  const double until = std::min(state.t + chunk, solver.t_end);
+  simulation_->AdvanceTo(until, solver.t_end, collect_);
+  computed_to_end_ = until >= solver.t_end;
+}
+
+void SimulatorNode::ServeCommand() {
+  const std::optional<RunControl::Command> command = control_.Take();
+  if (!command) return;
+  if (std::optional<RunControl::Reply> reply = Execute(*command)) control_.Answer(std::move(*reply));
+}
+
+std::optional<RunControl::Reply> SimulatorNode::Execute(RunControl::Command command) {
+  switch (command) {
+    case RunControl::Command::kPause:
+      paused_ = true;
+      writer_->Flush();  // the reply names the last sample published
+      return RunControl::Reply{true, "paused after " + LastSampleText()};
+    case RunControl::Command::kResume:
+      paused_ = false;
+      anchor_pace_ = true;
+      return RunControl::Reply{true, "resumed after " + LastSampleText()};
+    case RunControl::Command::kStep:
+      if (computed_to_end_ && pending_.empty()) return RunEndedReply();
+      paused_ = true;
+      step_in_progress_ = true;
+      return std::nullopt;  // answered when the sample is sent
+    case RunControl::Command::kReset:
+      StartRun();
+      return RunControl::Reply{
+          true, "reset to the initial state; the next sample is at t = " + FormatTime(simulation_->state().t) + " s"};
+  }
+  return std::nullopt;
+}
+
+bool SimulatorNode::SubscribersReady() {
+  subscribers_ready_ =
+      subscribers_ready_ || !publisher_ || publisher_->MinSampleSubscribers() >= case_.settings.wait_for_subscribers;
+  return subscribers_ready_;
+}
+
+void SimulatorNode::SendNext() {
+  if (!SubscribersReady()) {
+    Wait(Clock::now() + kPollPeriod);
+    return;
+  }
+  const double t = pending_.front().sample.t;
+  const Clock::time_point now = Clock::now();
+  if (anchor_pace_) {
+    pacer_.Anchor(t, now);
+    anchor_pace_ = false;
+  }
+  const Clock::time_point due = step_in_progress_ ? now : pacer_.Due(t);
+  if (now < due) {
+    Wait(due);
+    return;
+  }
+  writer_->Submit(std::move(pending_.front().sample), std::move(pending_.front().messages));
+  pending_.pop_front();
+  if (samples_sent_++ == 0) first_sent_wall_ = now;
+  last_sent_t_ = t;
+  if (step_in_progress_) {
+    step_in_progress_ = false;
+    writer_->Flush();  // the reply comes once the sample is published
+    control_.Answer(RunControl::Reply{true, "sent " + LastSampleText()});
+  }
+}
+
+void SimulatorNode::FlushPending() {
+  for (PendingSample& next : pending_) writer_->Submit(std::move(next.sample), std::move(next.messages));
+  pending_.clear();
+  writer_->Flush();
+}
+
+void SimulatorNode::ReportEnd() {
+  if (step_in_progress_) {  // the last chunk ended the run without a sample for the step
+    step_in_progress_ = false;
+    control_.Answer(RunEndedReply());
+  }
+  if (reported_end_) return;
+  reported_end_ = true;
+  writer_->Flush();
+  outputs_->CloseRecordings();  // the files are complete: readable while the node stays up
+  const std::chrono::duration<double> wall = Clock::now() - first_sent_wall_;
+  ROS_INFO_STREAM("flexmbd: finished at t = " << simulation_->state().t << " s; " << samples_sent_
+                                              << " samples sent in " << wall.count() << " s wall time");
+  ROS_INFO_STREAM("flexmbd: " << simulation_->statistics().Summary());
+}
+
+void SimulatorNode::LetSubscribersDrain() {
+  if (!publisher_ || !publisher_->HasSubscribers()) return;
+  const Clock::time_point until = Clock::now() + kDrainTime;
+  while (Clock::now() < until && ::ros::ok() && !StopRequested()) Wait(until);
+}
+
+void SimulatorNode::Wait(Clock::time_point until) {
+  writer_->Wake();  // what was released is written while the loop waits
+  control_.WaitUntil(std::min(until, Clock::now() + kPollPeriod));
+}
+
+RunControl::Reply SimulatorNode::RunEndedReply() const {
+  return RunControl::Reply{false, "the run has ended after " + LastSampleText() + "; call ~reset to start over"};
+}
+
+std::string SimulatorNode::LastSampleText() const {
+  return last_sent_t_ ? "the sample at t = " + FormatTime(*last_sent_t_) + " s" : "no sample yet";
+}
+
+}  // namespace ros
+}  // namespace flexmbd

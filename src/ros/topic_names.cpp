@@ -1,0 +1,17 @@
+#include "flexmbd/ros/topic_names.hpp"
+
+namespace flexmbd {
+namespace ros {
+
+TopicNames DefaultTopicNames() {
+  const std::string private_prefix = std::string(kDefaultNodeName) + "/";
+  return TopicNames{std::string("/") + kJointStatesTopic,
+                    private_prefix + kEnergyTopic,
+                    private_prefix + kReactionsTopic,
+                    private_prefix + kSolverTopic,
+                    kTfTopic,
+                    private_prefix + kMarkersTopic};
+}
+
+}  // namespace ros
+}  // namespace flexmbd

@@ -1,0 +1,75 @@
+#include "flexmbd/ros/topic_publisher.hpp"
+
+#include <rosgraph_msgs/Clock.h>
+
+#include <algorithm>
+
+namespace flexmbd {
+namespace ros {
+namespace {
+
+// Messages queued per subscriber before the oldest is dropped: at real_time_factor 0 the solver produces
+// samples in bursts far faster than a subscriber takes them, and a whole short run fits in the queue.
+constexpr uint32_t kSampleQueueSize = 10000;
+constexpr uint32_t kClockQueueSize = 100;
+
+template <typename Message>
+::ros::Publisher AdvertiseSamples(::ros::NodeHandle& handle, const std::string& topic,
+                                  const std::function<void()>& on_connect) {
+  return handle.advertise<Message>(topic, kSampleQueueSize,
+                                   [on_connect](const ::ros::SingleSubscriberPublisher&) { on_connect(); });
+}
+
+}  // namespace
+
+TopicNames ResolveTopicNames(const ::ros::NodeHandle& node, const ::ros::NodeHandle& private_node) {
+  return TopicNames{node.resolveName(kJointStatesTopic),
+                    private_node.resolveName(kEnergyTopic),
+                    private_node.resolveName(kReactionsTopic),
+                    private_node.resolveName(kSolverTopic),
+                    node.resolveName(kTfTopic),
+                    private_node.resolveName(kMarkersTopic)};
+}
+
+TopicPublisher::TopicPublisher(::ros::NodeHandle& node, ::ros::NodeHandle& private_node,
+                               const visualization_msgs::MarkerArray& markers, bool publish_clock,
+                               const std::function<void()>& on_connect)
+    : joint_states_(AdvertiseSamples<sensor_msgs::JointState>(node, kJointStatesTopic, on_connect)),
+      energy_(AdvertiseSamples<Energy>(private_node, kEnergyTopic, on_connect)),
+      reactions_(AdvertiseSamples<JointReactions>(private_node, kReactionsTopic, on_connect)),
+      solver_(AdvertiseSamples<SolverStep>(private_node, kSolverTopic, on_connect)),
+      tf_(node.advertise<tf2_msgs::TFMessage>(kTfTopic, kSampleQueueSize)),
+      markers_(private_node.advertise<visualization_msgs::MarkerArray>(kMarkersTopic, 1, /*latch=*/true)) {
+  if (publish_clock) clock_ = node.advertise<rosgraph_msgs::Clock>(kClockTopic, kClockQueueSize);
+  markers_.publish(markers);
+}
+
+void TopicPublisher::Write(const SampleMessages& messages) {
+  if (!::ros::ok()) return;
+  if (clock_) {
+    rosgraph_msgs::Clock clock;
+    clock.clock = messages.joint_state.header.stamp;
+    clock_.publish(clock);
+  }
+  if (messages.transforms) tf_.publish(*messages.transforms);
+  joint_states_.publish(messages.joint_state);
+  energy_.publish(messages.energy);
+  reactions_.publish(messages.reactions);
+  solver_.publish(messages.solver);
+}
+
+bool TopicPublisher::HasSubscribers() const {
+  for (const ::ros::Publisher* publisher :
+       {&joint_states_, &energy_, &reactions_, &solver_, &tf_, &markers_, &clock_}) {
+    if (*publisher && publisher->getNumSubscribers() > 0) return true;
+  }
+  return false;
+}
+
+int TopicPublisher::MinSampleSubscribers() const {
+  return static_cast<int>(std::min({joint_states_.getNumSubscribers(), energy_.getNumSubscribers(),
+                                    reactions_.getNumSubscribers(), solver_.getNumSubscribers()}));
+}
+
+}  // namespace ros
+}  // namespace flexmbd

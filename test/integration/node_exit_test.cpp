@@ -1,0 +1,95 @@
+// How the node ends (src/nodes/flexmbd_node.cpp): bad input -> exit 2 with one line naming the parameter or
+// file and the expected form; SIGINT in the middle of a run -> exit 0 with a readable bag holding every
+// sample so far; a solver failure -> exit 3 with a readable bag.
+
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+
+#include "helpers/bag_samples.hpp"
+#include "helpers/node_process.hpp"
+#include "helpers/sample_recorder.hpp"
+#include "helpers/temp_dir.hpp"
+
+namespace flexmbd {
+namespace test {
+namespace {
+
+constexpr int kBadInputExit = 2;
+constexpr int kRunFailedExit = 3;
+constexpr double kSamplePeriod = 0.01;
+constexpr double kEndTime = 2.0;
+// Stamps are nanoseconds.
+constexpr double kStampResolution = 1.0e-9;
+// Bound on start-up, loading and shutdown on a loaded 2-core machine; met in well under a second.
+constexpr std::chrono::seconds kTimeout(30);
+
+bool Contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
+
+TEST(NodeExit, BadParameterExitsWithTwoNamingTheParameter) {
+  // Reference: docs/config.md, "Errors": the loader's message, with the node's namespace as its source.
+  NodeProcess node("flexmbd_bad_param", {});
+  EXPECT_EQ(node.WaitForExit(kTimeout), std::optional<int>(kBadInputExit));
+  EXPECT_TRUE(Contains(node.Output(),
+                       "/flexmbd_bad_param: joints.elbow.spring.k: -3 is negative; "
+                       "expected a stiffness >= 0 [N m/rad]"))
+      << node.Output();
+}
+
+TEST(NodeExit, BadNodeSettingExitsWithTwoNamingTheSetting) {
+  NodeProcess node("flexmbd_bad_setting", {"_real_time_factor:=-1.0"});
+  EXPECT_EQ(node.WaitForExit(kTimeout), std::optional<int>(kBadInputExit));
+  EXPECT_TRUE(Contains(node.Output(),
+                       "/flexmbd_bad_setting/real_time_factor: '-1' is not a finite number >= 0; "
+                       "expected a factor >= 0 (0 = as fast as possible, 1 = wall-clock pace)"))
+      << node.Output();
+}
+
+TEST(NodeExit, MissingUrdfFileExitsWithTwoNamingTheFile) {
+  NodeProcess node("flexmbd_missing_urdf", {"_urdf_file:=/nonexistent/arm.urdf"});
+  EXPECT_EQ(node.WaitForExit(kTimeout), std::optional<int>(kBadInputExit));
+  EXPECT_TRUE(Contains(node.Output(), "cannot open URDF file '/nonexistent/arm.urdf': No such file or directory"))
+      << node.Output();
+}
+
+TEST(NodeExit, SigintMidRunLeavesAReadableBagWithEverySampleSoFar) {
+  // Reference: the samples received on topics before the interrupt; the bag must hold them and continue the
+  // sequence t = k / rate_hz without gaps, and end before t_end (the run was cut short).
+  const TempDir dir("flexmbd_node_exit");
+  const std::string bag = dir.File("interrupted.bag");
+  SampleRecorder recorder("flexmbd_interrupted");
+  NodeProcess node("flexmbd_interrupted", {"_bag:=" + bag, "_real_time_factor:=1.0", "_wait_for_subscribers:=1"});
+  ASSERT_TRUE(recorder.WaitForTime(0.3, kTimeout)) << node.Output();
+  node.Interrupt();
+  ASSERT_EQ(node.WaitForExit(kTimeout), std::optional<int>(0)) << node.Output();
+  EXPECT_EQ(std::system(("rosbag info " + bag + " > /dev/null").c_str()), 0) << "rosbag info cannot read " << bag;
+
+  const Samples recorded = ReadBagSamples(bag, "flexmbd_interrupted");
+  const Samples received = recorder.Snapshot();
+  ASSERT_GE(recorded.joint_states.size(), received.joint_states.size());
+  for (size_t k = 0; k < recorded.joint_states.size(); ++k) {
+    EXPECT_NEAR(TimeOf(recorded.joint_states[k]), k * kSamplePeriod, kStampResolution) << "sample " << k;
+  }
+  for (size_t k = 0; k < received.joint_states.size(); ++k) {
+    EXPECT_EQ(recorded.joint_states[k], received.joint_states[k]) << "sample " << k;
+  }
+  EXPECT_EQ(recorded.energy.size(), recorded.joint_states.size());
+  EXPECT_LT(TimeOf(recorded.joint_states.back()), kEndTime);
+}
+
+TEST(NodeExit, SolverFailureExitsWithThreeAndClosesTheBag) {
+  // Reference: test/integration/data/failing_run.yaml fails at its second step (t = 0.01 s) with the step
+  // below dt_min: the bag holds the samples before the failure, t = 0 and 0.01 s.
+  const TempDir dir("flexmbd_node_exit");
+  const std::string bag = dir.File("failing.bag");
+  NodeProcess node("flexmbd_failing", {"_bag:=" + bag});
+  EXPECT_EQ(node.WaitForExit(kTimeout), std::optional<int>(kRunFailedExit));
+  EXPECT_TRUE(Contains(node.Output(), "run failed: step size fell below dt_min")) << node.Output();
+  const Samples recorded = ReadBagSamples(bag, "flexmbd_failing");
+  ASSERT_EQ(recorded.joint_states.size(), 2u);
+  EXPECT_NEAR(TimeOf(recorded.joint_states[1]), kSamplePeriod, kStampResolution);
+}
+
+}  // namespace
+}  // namespace test
+}  // namespace flexmbd
