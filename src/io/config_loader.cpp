@@ -1,26 +1,14 @@
 #include "flexmbd/io/config_loader.hpp"
 
-#include <cerrno>
-#include <cstring>
-#include <fstream>
-#include <sstream>
-
 #include "flexmbd/common/error.hpp"
 #include "flexmbd/io/initial_placement.hpp"
+#include "flexmbd/io/text_file.hpp"
 #include "flexmbd/io/urdf_reader.hpp"
 #include "flexmbd/io/yaml_overlay.hpp"
 #include "flexmbd/io/yaml_sections.hpp"
 
 namespace flexmbd {
 namespace {
-std::string ReadTextFile(const std::string& path, const std::string& what) {
-  std::ifstream file(path);
-  if (!file) throw ConfigError("cannot open " + what + " '" + path + "': " + std::strerror(errno));
-  std::ostringstream text;
-  text << file.rdbuf();
-  return text.str();
-}
-
 YAML::Node ParseYaml(const std::string& text, const std::string& name) {
   try {
     return YAML::Load(text);

@@ -3,7 +3,7 @@
 #include "flexmbd/common/error.hpp"
 #include "flexmbd/io/config_loader.hpp"
 #include "flexmbd/ros/param_tree.hpp"
-#include "flexmbd/ros/text_file.hpp"
+#include "flexmbd/io/text_file.hpp"
 #include "flexmbd/ros/world_frame.hpp"
 
 namespace flexmbd {

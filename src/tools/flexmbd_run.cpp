@@ -11,7 +11,7 @@
 #include "flexmbd/common/error.hpp"
 #include "flexmbd/io/config_loader.hpp"
 #include "flexmbd/ros/sample_fan_out.hpp"
-#include "flexmbd/ros/text_file.hpp"
+#include "flexmbd/io/text_file.hpp"
 #include "flexmbd/ros/world_frame.hpp"
 #include "flexmbd/solver/eigen_analysis.hpp"
 #include "flexmbd/solver/simulation.hpp"
@@ -117,7 +117,7 @@ int main(int argc, char** argv) {
     flexmbd::ros::SampleFanOut outputs(model, files, flexmbd::ros::DefaultTopicNames());
     std::optional<flexmbd::ros::SampleConverter> converter;  // only a bag needs messages
     if (!files.bag.empty()) {
-      const std::string urdf_xml = flexmbd::ros::ReadTextFile(args.urdf, "URDF file");
+      const std::string urdf_xml = flexmbd::ReadTextFile(args.urdf, "URDF file");
       converter.emplace(model, flexmbd::ros::WorldFrameName(urdf_xml, model));
     }
     flexmbd::Simulation simulation(model);

@@ -10,7 +10,7 @@
 
 #include "flexmbd/common/error.hpp"
 #include "flexmbd/io/config_loader.hpp"
-#include "flexmbd/ros/text_file.hpp"
+#include "flexmbd/io/text_file.hpp"
 #include "ros_test_util.hpp"
 
 namespace flexmbd {

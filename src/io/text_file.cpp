@@ -1,4 +1,4 @@
-#include "flexmbd/ros/text_file.hpp"
+#include "flexmbd/io/text_file.hpp"
 
 #include <cerrno>
 #include <cstring>
@@ -8,7 +8,6 @@
 #include "flexmbd/common/error.hpp"
 
 namespace flexmbd {
-namespace ros {
 
 std::string ReadTextFile(const std::string& path, const std::string& what) {
   std::ifstream file(path);
@@ -18,5 +17,4 @@ std::string ReadTextFile(const std::string& path, const std::string& what) {
   return text.str();
 }
 
-}  // namespace ros
 }  // namespace flexmbd

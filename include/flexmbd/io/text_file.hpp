@@ -5,11 +5,9 @@
 #include <string>
 
 namespace flexmbd {
-namespace ros {
 
-/// Contents of the file at `path`. Throws ConfigError "cannot open <what> '<path>': <reason>" (the loader's
-/// wording) if it cannot be read.
+/// Contents of the file at `path`. Throws ConfigError "cannot open <what> '<path>': <reason>"
+/// if it cannot be read.
 std::string ReadTextFile(const std::string& path, const std::string& what);
 
-}  // namespace ros
 }  // namespace flexmbd
