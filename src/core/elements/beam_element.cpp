@@ -6,6 +6,7 @@
 #include <unsupported/Eigen/AutoDiff>
 
 #include "flexmbd/common/error.hpp"
+#include "flexmbd/math/so3_generic.hpp"
 
 namespace flexmbd {
 namespace {
@@ -20,72 +21,9 @@ using M3 = Eigen::Matrix<T, 3, 3>;
 template <class T>
 using V6 = Eigen::Matrix<T, 6, 1>;
 
-double ValueOf(double x) { return x; }
-double ValueOf(const AutoDiff& x) { return x.value(); }
-
-// Below this squared angle the trigonometric ratios use their series: at 0.25 (0.5 rad) the first omitted
-// terms are below 3e-15 relative, while the closed forms above it lose at most 6 eps / 0.25 to cancellation.
-constexpr double kSeriesLimitSquared = 0.25;
-
-// sum_k (-1)^k x2^k / (2k + first)!, seven terms.
-template <class T>
-T AlternatingSeries(const T& x2, int first) {
-  double factorial = 1.0;
-  for (int j = 2; j <= first; ++j) factorial *= j;
-  T term = T(1.0 / factorial), sum = T(0.0);
-  for (int k = 0; k < 7; ++k) {
-    sum += term;
-    term *= -x2 / double((2 * k + first + 1) * (2 * k + first + 2));
-  }
-  return sum;
-}
-
-template <class T>
-M3<T> SkewOf(const V3<T>& a) {
-  M3<T> S;
-  S << T(0.0), -a.z(), a.y(), a.z(), T(0.0), -a.x(), -a.y(), a.x(), T(0.0);
-  return S;
-}
-
-// Rodrigues: I + sin(x)/x K + (1 - cos x)/x^2 K^2.
-template <class T>
-M3<T> ExpOf(const V3<T>& v) {
-  using std::cos;
-  using std::sin;
-  using std::sqrt;
-  const T x2 = v.squaredNorm();
-  T a, b;
-  if (ValueOf(x2) < kSeriesLimitSquared) {
-    a = AlternatingSeries(x2, 1);
-    b = AlternatingSeries(x2, 2);
-  } else {
-    const T x = sqrt(x2);
-    a = sin(x) / x;
-    b = (1.0 - cos(x)) / x2;
-  }
-  const M3<T> K = SkewOf<T>(v);
-  return M3<T>::Identity() + a * K + b * (K * K);
-}
-
-// Right Jacobian: I - (1 - cos x)/x^2 K + (x - sin x)/x^3 K^2.
-template <class T>
-M3<T> RightJacobianOf(const V3<T>& v) {
-  using std::cos;
-  using std::sin;
-  using std::sqrt;
-  const T x2 = v.squaredNorm();
-  T b, c;
-  if (ValueOf(x2) < kSeriesLimitSquared) {
-    b = AlternatingSeries(x2, 2);
-    c = AlternatingSeries(x2, 3);
-  } else {
-    const T x = sqrt(x2);
-    b = (1.0 - cos(x)) / x2;
-    c = (x - sin(x)) / (x2 * x);
-  }
-  const M3<T> K = SkewOf<T>(v);
-  return M3<T>::Identity() - b * K + c * (K * K);
-}
+using so3::ExpOf;
+using so3::RightJacobianOf;
+using so3::ValueOf;
 
 // Rotation vector of R (angle below pi/2 in a beam element): a = axial(R) = sin(angle) n, psi = angle/sin * a.
 template <class T>

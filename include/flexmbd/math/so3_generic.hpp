@@ -1,0 +1,93 @@
+#pragma once
+/// @file
+/// The rotation formulas of so3.hpp written once for any scalar type: double, or Eigen's AutoDiffScalar where
+/// an element differentiates through rotations. so3.cpp instantiates them for double.
+
+#include <cmath>
+
+#include <Eigen/Core>
+
+namespace flexmbd {
+namespace so3 {
+
+template <class T>
+using Vector3 = Eigen::Matrix<T, 3, 1>;
+template <class T>
+using Matrix3 = Eigen::Matrix<T, 3, 3>;
+
+/// The value of a scalar, for branching on it (an AutoDiffScalar's value; a double itself).
+inline double ValueOf(double x) { return x; }
+template <class T>
+double ValueOf(const T& x) {
+  return x.value();
+}
+
+/// Below this squared angle the trigonometric ratios use their series: at 0.25 (0.5 rad) the first omitted
+/// terms are below 1e-16 relative, and the closed forms above it lose at most 6 eps / 0.25 to cancellation.
+constexpr double kSeriesLimitSquared = 0.25;
+
+/// sum_k (-1)^k x2^k / (2k + first)!, seven terms.
+template <class T>
+T AlternatingSeries(const T& x2, int first) {
+  double factorial = 1.0;
+  for (int j = 2; j <= first; ++j) factorial *= j;
+  T term = T(1.0 / factorial), sum = T(0.0);
+  for (int k = 0; k < 7; ++k) {
+    sum += term;
+    term *= -x2 / double((2 * k + first + 1) * (2 * k + first + 2));
+  }
+  return sum;
+}
+
+template <class T>
+Matrix3<T> SkewOf(const Vector3<T>& a) {
+  Matrix3<T> S;
+  S << T(0.0), -a.z(), a.y(), a.z(), T(0.0), -a.x(), -a.y(), a.x(), T(0.0);
+  return S;
+}
+
+/// sin(x)/x and (1 - cos x)/x^2 of x2 = x^2; the latter as sinc(x/2)^2 / 2 (no cancellation).
+template <class T>
+void SinRatios(const T& x2, T* sin_ratio, T* cos_ratio) {
+  using std::sin;
+  using std::sqrt;
+  if (ValueOf(x2) < kSeriesLimitSquared) {
+    *sin_ratio = AlternatingSeries(x2, 1);
+    *cos_ratio = AlternatingSeries(x2, 2);
+    return;
+  }
+  const T x = sqrt(x2);
+  *sin_ratio = sin(x) / x;
+  const T half = sin(0.5 * x) / (0.5 * x);
+  *cos_ratio = 0.5 * half * half;
+}
+
+/// Rodrigues: I + sin(x)/x K + (1 - cos x)/x^2 K^2.
+template <class T>
+Matrix3<T> ExpOf(const Vector3<T>& v) {
+  T a, b;
+  SinRatios(T(v.squaredNorm()), &a, &b);
+  const Matrix3<T> K = SkewOf<T>(v);
+  return Matrix3<T>::Identity() + a * K + b * (K * K);
+}
+
+/// Right Jacobian: I - (1 - cos x)/x^2 K + (x - sin x)/x^3 K^2.
+template <class T>
+Matrix3<T> RightJacobianOf(const Vector3<T>& v) {
+  using std::sin;
+  using std::sqrt;
+  const T x2 = v.squaredNorm();
+  T a, b, c;
+  SinRatios(x2, &a, &b);
+  if (ValueOf(x2) < kSeriesLimitSquared) {
+    c = AlternatingSeries(x2, 3);
+  } else {
+    const T x = sqrt(x2);
+    c = (x - sin(x)) / (x2 * x);
+  }
+  const Matrix3<T> K = SkewOf<T>(v);
+  return Matrix3<T>::Identity() - b * K + c * (K * K);
+}
+
+}  // namespace so3
+}  // namespace flexmbd
