@@ -32,6 +32,19 @@ struct BeamInfo {
   std::vector<const BeamElement*> elements;  ///< from root to tip
 };
 
+/// A stop (backlash) as the user named it.
+struct StopInfo {
+  std::string joint;  ///< joint name
+  std::string stop;   ///< "lower", "upper", or the name given in YAML
+  int variable = -1;  ///< the joint variable it acts on
+};
+
+/// A frictional joint as the user named it.
+struct FrictionInfo {
+  std::string joint;
+  int variable = -1;
+};
+
 class Model {
  public:
   int num_nodes() const { return num_nodes_; }
@@ -49,6 +62,8 @@ class Model {
   const std::vector<const RigidBody*>& rigid_bodies() const { return rigid_bodies_; }
   const std::vector<BodyInfo>& bodies() const { return bodies_; }
   const std::vector<BeamInfo>& beams() const { return beams_; }
+  const std::vector<StopInfo>& stops() const { return stops_; }
+  const std::vector<FrictionInfo>& frictions() const { return frictions_; }
   /// Name of each joint variable: the joint name, with "/k" appended for the k-th of several.
   const std::vector<std::string>& variable_names() const { return variable_names_; }
 
@@ -71,6 +86,8 @@ class Model {
   std::vector<const RigidBody*> rigid_bodies_;
   std::vector<BodyInfo> bodies_;
   std::vector<BeamInfo> beams_;
+  std::vector<StopInfo> stops_;
+  std::vector<FrictionInfo> frictions_;
   std::vector<std::string> node_names_;  ///< "body <name>" or "beam <name> node <k>", per node
   std::vector<std::string> variable_names_;
   std::vector<std::string> multiplier_names_;

@@ -12,6 +12,23 @@ namespace flexmbd {
 
 class Model;
 
+/// One stop of a joint (backlash) at a sample.
+struct StopSample {
+  bool in_contact = false;
+  double force = 0;     ///< contact force, >= 0 [N]
+  double torque = 0;    ///< its generalised force on the joint variable [N m, or N on a prismatic joint]
+  double approach = 0;  ///< penetration of a deformable stop, > 0 in contact; 0 for a rigid stop [m]
+};
+
+/// The friction of one joint at a sample.
+struct FrictionSample {
+  bool sticking = false;
+  double torque = 0;         ///< friction force on the joint variable [N m, or N on a prismatic joint]
+  double normal_force = 0;   ///< radial reaction plus preload [N]
+  double slip_velocity = 0;  ///< relative velocity at the races, radius times the variable's rate [m/s]
+  double work = 0;           ///< cumulative energy dissipated by this joint's friction [J]
+};
+
 struct OutputSample {
   double t = 0;                  ///< [s]
   Eigen::VectorXd position;      ///< joint variables [rad or m] (num_variables)
@@ -19,6 +36,8 @@ struct OutputSample {
   Eigen::VectorXd effort;        ///< force transmitted along each variable by its spring, damper and drive [N m or N]
   std::vector<Vec3> reaction_force_W;   ///< per joint: force on the child from the parent, in W [N]
   std::vector<Vec3> reaction_moment;    ///< per joint: rotational multipliers (moment on the child) [N m]
+  std::vector<StopSample> stops;         ///< per stop, in Model::stops() order
+  std::vector<FrictionSample> friction;  ///< per frictional joint, in Model::frictions() order
   double kinetic = 0;            ///< [J]
   double potential = 0;          ///< gravity and springs [J]
   double external_work = 0;      ///< cumulative work of applied loads and drives [J]
