@@ -18,6 +18,11 @@ CsvSink::CsvSink(const Model& model, const std::string& path) : out_(path) {
     for (const char* axis : {"x", "y", "z"}) out_ << ",joint." << joint->name() << ".reaction_force_" << axis;
     for (const char* axis : {"x", "y", "z"}) out_ << ",joint." << joint->name() << ".reaction_moment_" << axis;
   }
+  for (const StopInfo& stop : model.stops()) {
+    for (const char* column : {"in_contact", "force", "torque", "approach"}) {
+      out_ << ",stop." << stop.joint << '.' << stop.stop << '.' << column;
+    }
+  }
   out_ << ",energy.kinetic,energy.potential,energy.total,energy.external_work,energy.dissipated,"
           "energy.numerical_dissipation,solver.dt,solver.iterations\n";
 }
@@ -29,6 +34,9 @@ void CsvSink::Write(const OutputSample& s) {
     const Vec3& f = s.reaction_force_W[k];
     const Vec3& m = s.reaction_moment[k];
     out_ << ',' << f.x() << ',' << f.y() << ',' << f.z() << ',' << m.x() << ',' << m.y() << ',' << m.z();
+  }
+  for (const StopSample& stop : s.stops) {
+    out_ << ',' << stop.in_contact << ',' << stop.force << ',' << stop.torque << ',' << stop.approach;
   }
   out_ << ',' << s.kinetic << ',' << s.potential << ',' << s.total() << ',' << s.external_work << ',' << s.dissipated
        << ',' << s.numerical_dissipation << ',' << s.dt << ',' << s.iterations << '\n';

@@ -185,6 +185,7 @@ class UrdfWalker {
     joint.axis2_J = DefaultSecondAxis(joint.axis_J);
     ResizeJointVariables(&joint);
     AddUrdfDamper(urdf_joint, &joint);
+    ReadUrdfLimits(urdf_joint, &joint);
     try {
       MakeJointKinematics(joint);
     } catch (const ConfigError& error) {
@@ -216,6 +217,15 @@ class UrdfWalker {
            " is negative; expected a damping >= 0 [" + unit + "]");
     }
     if (damping > 0.0) joint->effects[0].dampers = {DamperSpec{damping}};
+  }
+
+  // <limit> of a revolute or prismatic joint: the stop positions of a backlash block that gives none.
+  static void ReadUrdfLimits(const urdf::Joint& urdf_joint, JointSpec* joint) {
+    const bool bounded = urdf_joint.type == urdf::Joint::REVOLUTE || urdf_joint.type == urdf::Joint::PRISMATIC;
+    if (!bounded || !urdf_joint.limits || !(urdf_joint.limits->lower < urdf_joint.limits->upper)) return;
+    joint->has_limits = true;
+    joint->limit_lower = urdf_joint.limits->lower;
+    joint->limit_upper = urdf_joint.limits->upper;
   }
 
   [[noreturn]] void Fail(const std::string& what) const { throw ConfigError(model_.name + ": " + what); }

@@ -16,9 +16,9 @@ namespace {
 // time function's arithmetic separates equal inputs.
 constexpr double kDriveStartTolerance = 1.0e-9;
 
-const std::vector<std::string> kJointKeys = {"type",   "axis",    "axis2", "pitch",    "spring",
-                                             "damper", "initial", "drive", "variables"};
-const std::vector<std::string> kVariableKeys = {"spring", "damper", "initial", "drive"};
+const std::vector<std::string> kJointKeys = {"type",    "axis",  "axis2",    "pitch",   "spring",  "damper",
+                                             "initial", "drive", "backlash", "variables"};
+const std::vector<std::string> kVariableKeys = {"spring", "damper", "initial", "drive", "backlash"};
 
 // Names of the relative-motion variables, in order (joint_kinematics.hpp).
 std::vector<std::string> VariableNames(JointType type) {
@@ -39,13 +39,7 @@ std::string JointLabel(const JointSpec& joint) {
   return std::string(JointTypeName(joint.type)) + " joint '" + joint.name + "'";
 }
 
-// Units and description of one variable, from whether the kinematics rotate about it.
-struct VariableUnits {
-  Measure measure;
-  std::string position;   ///< "rad" or "m"
-  std::string stiffness;  ///< "N m/rad" or "N/m"
-  std::string damping;    ///< "N m s/rad" or "N s/m"
-};
+}  // namespace
 
 VariableUnits UnitsOf(const JointSpec& joint, int variable) {
   const JointKinematics kinematics = MakeJointKinematics(joint);
@@ -56,6 +50,8 @@ VariableUnits UnitsOf(const JointSpec& joint, int variable) {
   if (angular) return {{true, description}, "rad", "N m/rad", "N m s/rad"};
   return {{false, description}, "m", "N/m", "N s/m"};
 }
+
+namespace {
 
 JointSpec* FindJoint(const Field& field, const std::string& name, UrdfModel* model) {
   std::vector<std::string> names;
@@ -177,13 +173,15 @@ void ReadVariable(const std::vector<Field>& sources, int variable, JointSpec* jo
   if (damper.present()) effects.dampers = {ReadDamper(damper, units)};
   const Field drive = Pick(sources, "drive");
   if (drive.present()) effects.drives = {ReadTimeFunction(drive, units.position, units.measure)};
+  const Field backlash = Pick(sources, "backlash");
+  if (backlash.present()) effects.stops = ReadBacklash(backlash, *joint, units);
   ReadInitial(Pick(sources, "initial"), drive, units, variable, joint);
 }
 
 std::vector<Field> ReadVariableList(const Field& field, const JointSpec& joint) {
   const Field list = field.Child("variables");
   const std::vector<Field> entries =
-      ListEntries(list, "a list of per-variable settings {spring, damper, initial, drive}");
+      ListEntries(list, "a list of per-variable settings {spring, damper, initial, drive, backlash}");
   const std::vector<std::string> names = VariableNames(joint.type);
   if (entries.size() > names.size()) {
     list.Fail("has " + std::to_string(entries.size()) + " entries; the " + JointLabel(joint) + " has " +

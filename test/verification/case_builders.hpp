@@ -87,5 +87,44 @@ inline ModelSpec MassSpring(double m, double k, double amplitude, SolverSpec::In
   return spec;
 }
 
+// A mass m on a prismatic joint along x starting at x = 0 with speed v0, no spring; gravity across the slide.
+// Energy-preserving scheme, adaptive steps, every step sampled.
+inline ModelSpec Slider(double m, double v0, double t_end) {
+  ModelSpec spec = MassSpring(m, 0.0, 0.0, SolverSpec::Integrator::kEnergyPreserving, 1.0e-3, t_end);
+  spec.source = "slider (test)";
+  spec.joints[0].effects[0].springs.clear();
+  spec.joints[0].initial_velocity = {v0};
+  spec.bodies[0].v_WBo_W = Vec3(v0, 0, 0);
+  spec.solver.adaptive = true;
+  spec.solver.dt_max = 1.0e-2;
+  return spec;
+}
+
+// A rotor of isotropic inertia j about its centre of mass on a revolute joint about y at the origin, spinning
+// at omega0; gravity acts through the axis and does no work. Energy-preserving scheme, adaptive steps.
+inline ModelSpec Rotor(double j, double omega0, double t_end) {
+  ModelSpec spec = Pendulum(1.0, 0.0, j);
+  spec.source = "rotor (test)";
+  spec.joints[0].initial_velocity = {omega0};
+  spec.bodies[0].w_WB_W = Vec3(0, omega0, 0);
+  spec.solver.integrator = SolverSpec::Integrator::kEnergyPreserving;
+  spec.solver.adaptive = true;
+  spec.solver.dt = 1.0e-3;
+  spec.solver.dt_max = 1.0e-2;
+  spec.solver.t_end = t_end;
+  spec.solver.tol = 1.0e-12;
+  return spec;
+}
+
+// A stop on variable 0 of joint 0.
+inline StopSpec Stop(StopSpec::Side side, double limit, double radius) {
+  StopSpec stop;
+  stop.side = side;
+  stop.limit = limit;
+  stop.radius = radius;
+  stop.name = side == StopSpec::Side::kLower ? "lower" : "upper";
+  return stop;
+}
+
 }  // namespace test
 }  // namespace flexmbd

@@ -81,6 +81,7 @@ struct StepContext {
   const std::vector<NodeStep>* nodes = nullptr;
   const std::vector<VariableStep>* variables = nullptr;
   const Eigen::VectorXd* lambda = nullptr;  ///< trial multipliers (num_multipliers)
+  const std::vector<EffectState>* effects = nullptr;  ///< trial modes of the effects with modes
   bool geometric_stiffness = false;  ///< add the second-derivative terms of constraint forces to the tangent
   /// True when forces are evaluated at the end configuration (start moved to the end, theta = 0).
   bool at_end() const { return mode != AnalysisMode::kDynamic; }

@@ -14,6 +14,19 @@
 namespace flexmbd {
 namespace io {
 
+/// Units and description of one joint variable, from whether the kinematics rotate about it.
+struct VariableUnits {
+  Measure measure;
+  std::string position;   ///< "rad" or "m"
+  std::string stiffness;  ///< "N m/rad" or "N/m"
+  std::string damping;    ///< "N m s/rad" or "N s/m"
+};
+VariableUnits UnitsOf(const JointSpec& joint, int variable);
+
+/// `backlash:` of one joint variable: a map (a lower and/or an upper stop), or a list of such maps; stop
+/// positions from the URDF <limit> when a block gives neither.
+std::vector<StopSpec> ReadBacklash(const Field& backlash, const JointSpec& joint, const VariableUnits& units);
+
 /// `joints:` a map from URDF joint names to joint settings (type, axes, pitch, effects, initial motion).
 void ReadJoints(const Field& joints, UrdfModel* model);
 

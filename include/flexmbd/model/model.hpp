@@ -7,6 +7,8 @@
 #include <string>
 #include <vector>
 
+#include "flexmbd/effects/joint_stop.hpp"
+#include "flexmbd/effects/modal_effect.hpp"
 #include "flexmbd/effects/variable_effects.hpp"
 #include "flexmbd/elements/beam_element.hpp"
 #include "flexmbd/elements/element.hpp"
@@ -63,6 +65,10 @@ class Model {
   const std::vector<BodyInfo>& bodies() const { return bodies_; }
   const std::vector<BeamInfo>& beams() const { return beams_; }
   const std::vector<StopInfo>& stops() const { return stops_; }
+  /// The stop elements, in stops() order.
+  const std::vector<const JointStop*>& stop_effects() const { return stop_effects_; }
+  /// Every effect with modes; effect k keeps its mode in State::effects[k].
+  const std::vector<const ModalEffect*>& modal_effects() const { return modal_effects_; }
   const std::vector<FrictionInfo>& frictions() const { return frictions_; }
   /// Name of each joint variable: the joint name, with "/k" appended for the k-th of several.
   const std::vector<std::string>& variable_names() const { return variable_names_; }
@@ -87,6 +93,8 @@ class Model {
   std::vector<BodyInfo> bodies_;
   std::vector<BeamInfo> beams_;
   std::vector<StopInfo> stops_;
+  std::vector<const JointStop*> stop_effects_;
+  std::vector<const ModalEffect*> modal_effects_;
   std::vector<FrictionInfo> frictions_;
   std::vector<std::string> node_names_;  ///< "body <name>" or "beam <name> node <k>", per node
   std::vector<std::string> variable_names_;

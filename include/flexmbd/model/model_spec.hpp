@@ -54,11 +54,55 @@ struct DamperSpec {
   double coefficient = 0.0;  ///< [N m s/rad] or [N s/m]
 };
 
+/// A stop on one relative-motion variable q (backlash, freeplay; docs/theory.md, "Stops"). Its gap is
+/// g = radius (upper - q) for an upper stop and g = radius (q - lower) for a lower one; contact when g <= 0.
+struct StopSpec {
+  enum class Side { kLower, kUpper };
+  enum class Kind { kRigid, kElastic };
+  enum class Law { kLinear, kHertz };
+  std::string name;              ///< "lower" or "upper", with ".<k>" for the k-th backlash block (k >= 1)
+  Side side = Side::kUpper;
+  double limit = 0.0;            ///< stop position [rad or m]
+  double radius = 1.0;           ///< contact radius [m]; 1 on a prismatic variable (the gap is the travel)
+  Kind kind = Kind::kRigid;
+  Law law = Law::kHertz;         ///< elastic stops: force k a (linear) or k a^n (Hertz) at approach a
+  double stiffness = 0.0;        ///< elastic stops [N/m^n]
+  double exponent = 1.5;         ///< Hertz exponent n
+  double restitution = 1.0;      ///< coefficient of restitution e in (0, 1] (Hunt-Crossley dissipation)
+  int steps_per_contact = 20;    ///< elastic stops: smallest number of steps that resolve one impact
+  /// A conditional stop retracts (stops acting) at the first separation after |rate of `joint`| exceeds
+  /// `retract_above`, and engages again once it falls below `engage_below` (when the gap is open).
+  struct Retraction {
+    std::string joint;           ///< empty: the stop never retracts
+    int variable = -1;           ///< filled by BuildModel
+    double retract_above = 0.0;  ///< [rad/s or m/s]
+    double engage_below = 0.0;   ///< [rad/s or m/s], < retract_above
+  };
+  Retraction retraction;
+};
+
+/// Coulomb friction on one relative-motion variable (docs/theory.md, "Friction").
+struct FrictionSpec {
+  enum class Law {
+    kCoulombStick,   ///< sliding T = -mu_k rho N sign(v), sticking constraint while |T| <= mu_s rho N
+    kRegularised,    ///< T = -mu_k rho N (1 - exp(-|v|/v0)) sign(v), no sticking
+    kConstantTorque  ///< |T| <= torque: Coulomb with a fixed bound (URDF <dynamics friction>)
+  };
+  Law law = Law::kCoulombStick;
+  double mu_s = 0.0, mu_k = 0.0;  ///< static and kinetic coefficients, mu_s >= mu_k >= 0
+  double radius = 1.0;            ///< race radius rho [m] (1 on a prismatic variable)
+  double preload = 0.0;           ///< normal force added to the joint's radial reaction [N]
+  double v0 = 0.0;                ///< sticking threshold on the slip velocity [m/s]; 0: 1% of the largest seen
+  double torque = 0.0;            ///< kConstantTorque: the friction bound [N m or N]
+};
+
 /// Effects acting on one relative-motion variable of a joint.
 struct VariableEffectsSpec {
   std::vector<SpringSpec> springs;
   std::vector<DamperSpec> dampers;
   std::vector<TimeFunctionSpec> drives;  ///< at most one: the variable then follows f(t) exactly
+  std::vector<StopSpec> stops;
+  std::vector<FrictionSpec> frictions;   ///< at most one
 };
 
 /// A joint between a frame J_P on the parent body (or the world) and a frame J_C on the child body.
@@ -78,6 +122,8 @@ struct JointSpec {
   std::vector<double> initial_position;         ///< initial relative motion, one per variable [rad or m]
   std::vector<double> initial_velocity;         ///< initial relative rate, one per variable [rad/s or m/s]
   std::vector<VariableEffectsSpec> effects;     ///< one entry per variable (may be empty)
+  bool has_limits = false;                      ///< URDF <limit> given (used by backlash without angles)
+  double limit_lower = 0.0, limit_upper = 0.0;  ///< URDF <limit> lower and upper [rad or m]
 };
 
 /// Sectional properties of a beam, in the section frame (x along the beam axis).

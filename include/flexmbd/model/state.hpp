@@ -25,6 +25,15 @@ struct NodeState {
   Vec3 alpha_alg = Vec3::Zero();    ///< generalized-alpha algorithmic angular acceleration [rad/s^2]
 };
 
+/// The mode and memory of one effect with modes (a stop, a frictional joint).
+struct EffectState {
+  int mode = 0;            ///< stops: 0 open, 1 in contact, 2 retracted; friction: 0 sliding, 1 sticking
+  double reference = 0.0;  ///< elastic stops: approach speed when the contact began [m/s]; friction: the
+                           ///< largest slip speed seen [m/s]
+  double work = 0.0;       ///< energy this effect dissipated since t = 0 [J]
+  long events = 0;         ///< contacts begun (stops), sticking episodes begun (friction)
+};
+
 /// Everything that changes during a run.
 struct State {
   double t = 0.0;                   ///< time [s]
@@ -36,6 +45,7 @@ struct State {
   Eigen::VectorXd dq_prev;          ///< increment of each variable over the last accepted step
   Eigen::VectorXd qacc_alg;         ///< generalized-alpha algorithmic accelerations of the variables
   Eigen::VectorXd lambda;           ///< constraint multipliers [N, N m] (num_multipliers)
+  std::vector<EffectState> effects; ///< per effect with modes (Model::modal_effects())
   int history_steps = 0;            ///< accepted steps whose accelerations are in a_prev (0, 1 or 2+)
   double h_prev = 0.0;              ///< size of the last accepted step [s]
   double peak_speed = 0.0;          ///< largest node speed so far [m/s]: scale of the local error test

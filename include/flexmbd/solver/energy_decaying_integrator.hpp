@@ -42,6 +42,10 @@ class EnergyDecayingIntegrator : public TimeIntegrator {
   // Turns off the dissipation of nodes and variables whose converged step would gain energy; true if any was.
   bool DropEnergyGainingDissipation(const State& start, double h, Coefficients* c) const;
   Eigen::VectorXd Predict(const State& start, double h) const;
+  // Asks every effect with modes whether the converged step contradicts its trial mode; true if any did.
+  bool ReviseModes();
+  // The effects' step-size requests and their state at the end of the accepted step.
+  void CommitEffects(const State& start, State* end, StepLimit* limit) const;
   void Commit(const State& start, const Eigen::VectorXd& unknowns, double h,
               const std::vector<NodeSchemeCoefficients>& coefficients, State* end);
 
@@ -49,7 +53,8 @@ class EnergyDecayingIntegrator : public TimeIntegrator {
   SparseSystem* system_;
   StepContextBuilder builder_;
   double alpha_inf_;
-  std::vector<Mat3> node_inertia_;  ///< rotational inertia of each node's body, weights the dissipation check
+  std::vector<Mat3> node_inertia_;
+  std::vector<EffectState> modes_;  ///< trial modes of the step being solved  ///< rotational inertia of each node's body, weights the dissipation check
 };
 
 }  // namespace flexmbd

@@ -7,6 +7,7 @@
 #include <memory>
 
 #include "flexmbd/model/model.hpp"
+#include "flexmbd/solver/effect_events.hpp"
 #include "flexmbd/solver/time_integrator.hpp"
 #include "flexmbd/solver/output_sample.hpp"
 #include "flexmbd/solver/sparse_system.hpp"
@@ -46,6 +47,8 @@ class Simulation {
   const Model& model() const { return model_; }
   const StepStatistics& statistics() const { return controller_.statistics(); }
   const SparseSystem& system() const { return system_; }
+  /// Every mode change of the effects with modes so far, in time order.
+  const std::vector<EffectEvent>& effect_events() const { return effect_events_; }
 
  private:
   OutputSample SampleAtState(double dt, int iterations);
@@ -56,6 +59,7 @@ class Simulation {
   SparseSystem system_;
   std::unique_ptr<TimeIntegrator> integrator_;
   StepController controller_;
+  std::vector<EffectEvent> effect_events_;
   // Time-stepping progress between AdvanceTo calls.
   OutputSample previous_;   ///< sample at the last accepted step, the left end of interpolation
   long next_sample_ = 1;    ///< index of the next sample time t_start_ + k / rate

@@ -40,6 +40,10 @@ class StepContextBuilder {
   /// dynamic contexts built next (all zero unless set).
   void set_variable_dissipation(const std::vector<double>& alpha) { variable_alpha_ = alpha; }
 
+  /// Trial modes of the effects with modes for the dynamic contexts built next (null: the start state's).
+  /// @pre the vector outlives the contexts built from it.
+  void set_effect_modes(const std::vector<EffectState>* modes) { effect_modes_ = modes; }
+
   /// Whether the contexts built next ask for the geometric stiffness of constraint forces.
   void set_geometric_stiffness(bool on) { ctx_.geometric_stiffness = on; }
 
@@ -51,6 +55,7 @@ class StepContextBuilder {
   std::vector<VariableStep> variables_;
   Eigen::VectorXd lambda_;
   std::vector<double> variable_alpha_;
+  const std::vector<EffectState>* effect_modes_ = nullptr;
   StepContext ctx_;
 };
 

@@ -13,12 +13,13 @@ namespace flexmbd {
 struct StepStatistics {
   long accepted = 0;
   long rejected_error = 0;
+  long rejected_event = 0;     ///< redone to resolve a stop or friction event
   long rejected_newton = 0;
   long rejected_singular = 0;
   long newton_iterations = 0;  ///< over all attempted steps
   double h_min = 0, h_max = 0; ///< smallest and largest accepted step [s]
-  long rejected() const { return rejected_error + rejected_newton + rejected_singular; }
-  /// One line: "steps: N accepted, M rejected (a error, b Newton, c singular); ...".
+  long rejected() const { return rejected_error + rejected_event + rejected_newton + rejected_singular; }
+  /// One line: "steps: N accepted, M rejected (a error, b event, c Newton, d singular); ...".
   std::string Summary() const;
 };
 

@@ -4,6 +4,7 @@
 
 #include <memory>
 
+#include "flexmbd/effects/modal_effect.hpp"
 #include "flexmbd/elements/element.hpp"
 #include "flexmbd/model/state.hpp"
 #include "flexmbd/solver/newton.hpp"
@@ -14,13 +15,14 @@ class Model;
 class SparseSystem;
 
 /// Outcome of one attempted step.
-enum class StepStatus { kAccepted, kRejectedError, kNewtonDiverged, kSingularMatrix };
+enum class StepStatus { kAccepted, kRejectedError, kRejectedEvent, kNewtonDiverged, kSingularMatrix };
 const char* StepStatusName(StepStatus status);
 
 struct StepResult {
   StepStatus status = StepStatus::kAccepted;
   double error = 0;  ///< local error estimate relative to the target (accept if <= 1)
   NewtonReport newton;
+  StepLimit limit;  ///< what the effects with modes ask of this step (kRejectedEvent: limit.retry) and the next
 };
 
 class TimeIntegrator {

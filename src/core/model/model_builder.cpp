@@ -4,7 +4,9 @@
 #include <sstream>
 
 #include "flexmbd/common/error.hpp"
+#include "flexmbd/effects/joint_stop.hpp"
 #include "flexmbd/elements/applied_load.hpp"
+#include "flexmbd/model/effect_validation.hpp"
 #include "flexmbd/model/beam_layout.hpp"
 #include "flexmbd/math/time_function.hpp"
 #include "flexmbd/model/model.hpp"
@@ -152,7 +154,10 @@ Model BuildModel(const ModelSpec& spec) {
   };
 
   // Count unknowns first: element constructors need the final global indices.
+  std::map<std::string, int> first_variable_of;
+  int num_effect_slots = 0;
   for (const JointSpec& joint : spec.joints) {
+    first_variable_of[joint.name] = model.num_variables_;
     if (joint.effects.size() > static_cast<size_t>(NumJointVariables(joint.type))) {
       throw ConfigError(Prefix(spec) + "joint '" + joint.name + "': effects given for " +
                         std::to_string(joint.effects.size()) + " variables but a " + JointTypeName(joint.type) +
@@ -160,12 +165,21 @@ Model BuildModel(const ModelSpec& spec) {
     }
     model.num_variables_ += NumJointVariables(joint.type);
     model.num_multipliers_ += (joint.type == JointType::kSpherical ? 3 : 6);
-    for (const VariableEffectsSpec& effects : joint.effects) model.num_multipliers_ += effects.drives.size();
+    for (const VariableEffectsSpec& effects : joint.effects) {
+      model.num_multipliers_ += effects.drives.size();
+      for (const StopSpec& stop : effects.stops) model.num_multipliers_ += stop.kind == StopSpec::Kind::kRigid;
+      num_effect_slots += effects.stops.size();
+    }
+  }
+  if (num_effect_slots > 0 && solver.integrator == SolverSpec::Integrator::kGeneralizedAlpha) {
+    throw ConfigError(Prefix(spec) + "solver.integrator: generalized_alpha does not support stops or friction; "
+                      "expected energy_decaying or energy_preserving");
   }
   State& state = model.initial_state_;
   state.q = Eigen::VectorXd::Zero(model.num_variables_);
   state.qdot = Eigen::VectorXd::Zero(model.num_variables_);
   state.lambda = Eigen::VectorXd::Zero(model.num_multipliers_);
+  state.effects.resize(num_effect_slots);
 
   int variable = 0, multiplier = 0;
   for (const JointSpec& joint : spec.joints) {
@@ -211,6 +225,38 @@ Model BuildModel(const ModelSpec& spec) {
                                                                   model.multiplier_unknown(multiplier), law));
         model.multiplier_names_.push_back("drive " + model.variable_names_[v]);
         ++multiplier;
+      }
+      for (StopSpec stop : effects.stops) {
+        const std::string where = Prefix(spec) + "joint '" + joint.name + "': ";
+        ValidateStop(where, stop);
+        if (!stop.retraction.joint.empty()) {
+          const auto named = first_variable_of.find(stop.retraction.joint);
+          if (named == first_variable_of.end()) {
+            throw ConfigError(where + "stop '" + stop.name + "': retract.joint '" + stop.retraction.joint +
+                              "' is not a joint of the model; expected a joint name");
+          }
+          stop.retraction.variable = named->second;
+        }
+        const int slot = static_cast<int>(model.modal_effects_.size());
+        std::unique_ptr<JointStop> element;
+        if (stop.kind == StopSpec::Kind::kRigid) {
+          element = std::make_unique<RigidStop>(stop, v, model.variable_unknown(v), multiplier,
+                                                model.multiplier_unknown(multiplier), slot);
+          model.multiplier_names_.push_back("stop " + stop.name + " of " + model.variable_names_[v]);
+          ++multiplier;
+        } else {
+          element = std::make_unique<ElasticStop>(stop, v, model.variable_unknown(v), slot);
+        }
+        if (element->Gap(state.q[v]) < -kInitialConstraintTolerance) {
+          std::ostringstream msg;
+          msg << where << "stop '" << stop.name << "': the initial position " << state.q[v]
+              << " is beyond the stop at " << stop.limit << "; expected an initial position inside the stops";
+          throw ConfigError(msg.str());
+        }
+        model.stops_.push_back({joint.name, stop.name, v});
+        model.stop_effects_.push_back(element.get());
+        model.modal_effects_.push_back(element.get());
+        model.elements_.push_back(std::move(element));
       }
     }
     variable += n_var;

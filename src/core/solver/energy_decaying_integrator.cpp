@@ -14,6 +14,17 @@ namespace {
 // node's mass, or its inertia tensor for rotations): it is used only where that product is >= 0, judged with
 // the previous step's values beforehand and checked after convergence.
 bool Dissipates(const Vec3& dv, const Vec3& dv_lagged, const Mat3& M) { return (dv - dv_lagged).dot(M * dv) >= 0.0; }
+
+// Mode revisions allowed in one step before it is redone shorter (a stop touched and left within the step).
+constexpr int kMaxModeRevisions = 4;
+constexpr double kModeChatterShrink = 0.25;
+
+bool SameModes(const std::vector<EffectState>& a, const std::vector<EffectState>& b) {
+  for (size_t k = 0; k < a.size(); ++k) {
+    if (a[k].mode != b[k].mode) return false;
+  }
+  return true;
+}
 }  // namespace
 
 double DissipationFromRhoInf(double rho_inf) {
@@ -89,12 +100,25 @@ Eigen::VectorXd EnergyDecayingIntegrator::Predict(const State& start, double h) 
   return x;
 }
 
+bool EnergyDecayingIntegrator::ReviseModes() {
+  bool revised = false;
+  for (const ModalEffect* effect : model_.modal_effects()) {
+    const int mode = effect->ReviseMode(builder_.context());
+    revised = revised || mode != modes_[effect->slot()].mode;
+    modes_[effect->slot()].mode = mode;
+  }
+  return revised;
+}
+
 StepResult EnergyDecayingIntegrator::Step(const State& start, double h, State* end) {
   Coefficients coefficients = Choose(start);
+  modes_ = start.effects;
+  builder_.set_effect_modes(&modes_);
   const int n_kinematic = model_.num_unknowns() - model_.num_multipliers();
   StepResult result;
   Eigen::VectorXd unknowns;
-  do {
+  int mode_revisions = 0;
+  while (true) {
     unknowns = Predict(start, h);
     int tangents = 0;
     result.newton = SolveNewton(
@@ -124,12 +148,35 @@ StepResult EnergyDecayingIntegrator::Step(const State& start, double h, State* e
     }
     builder_.set_variable_dissipation(coefficients.variables);
     builder_.Dynamic(start, unknowns, h, coefficients.nodes);
-  } while (DropEnergyGainingDissipation(start, h, &coefficients));
+    if (DropEnergyGainingDissipation(start, h, &coefficients)) continue;
+    if (!ReviseModes()) break;
+    // The factorisation belongs to the old modes.
+    system_->set_factorisation_key(std::numeric_limits<double>::quiet_NaN());
+    if (++mode_revisions > kMaxModeRevisions) {
+      result.status = StepStatus::kRejectedEvent;
+      result.limit.retry = kModeChatterShrink * h;
+      return result;
+    }
+  }
   Commit(start, unknowns, h, coefficients.nodes, end);
+  CommitEffects(start, end, &result.limit);
   result.error = LocalErrorEstimate(*end, start.h_prev, model_.solver().error_tol);
   const bool too_large = model_.solver().adaptive && result.error > 1.0;
   result.status = too_large ? StepStatus::kRejectedError : StepStatus::kAccepted;
+  if (result.limit.retry < h) result.status = StepStatus::kRejectedEvent;
   return result;
+}
+
+void EnergyDecayingIntegrator::CommitEffects(const State& start, State* end, StepLimit* limit) const {
+  const StepContext& ctx = builder_.context();
+  for (const ModalEffect* effect : model_.modal_effects()) limit->Merge(effect->Limit(ctx, *end));
+  end->effects = modes_;
+  for (const ModalEffect* effect : model_.modal_effects()) effect->Commit(ctx, *end, &end->effects[effect->slot()]);
+  if (SameModes(start.effects, end->effects)) return;
+  // The accelerations of a step whose modes changed (an impact, a stick-slip transition) say nothing about the
+  // next: the local error estimate and the scheme's dissipation restart their history.
+  end->history_steps = 0;
+  if (!SameModes(modes_, end->effects)) system_->set_factorisation_key(std::numeric_limits<double>::quiet_NaN());
 }
 
 void EnergyDecayingIntegrator::Commit(const State& start, const Eigen::VectorXd& unknowns, double h,

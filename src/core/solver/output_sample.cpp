@@ -16,6 +16,7 @@ OutputSample MakeSample(const Model& model, const State& state, const StepContex
     s.reaction_force_W.push_back(-lambda.head<3>());
     s.reaction_moment.push_back(joint->num_constraints() == 6 ? Vec3(-lambda.tail<3>()) : Vec3::Zero());
   }
+  for (const JointStop* stop : model.stop_effects()) s.stops.push_back(stop->Sample(state));
   EnergyTally energy;
   for (const auto& element : model.elements()) element->AddEnergy(state, model.solver().gravity, &energy);
   s.kinetic = energy.kinetic;
@@ -40,6 +41,11 @@ OutputSample Interpolate(const OutputSample& a, const OutputSample& b, double t)
   for (size_t k = 0; k < s.reaction_force_W.size(); ++k) {
     s.reaction_force_W[k] = mix(a.reaction_force_W[k], b.reaction_force_W[k]);
     s.reaction_moment[k] = mix(a.reaction_moment[k], b.reaction_moment[k]);
+  }
+  // Contacts and sticking are events, not smooth signals: the nearer sample's records stand.
+  if (u < 0.5) {
+    s.stops = a.stops;
+    s.friction = a.friction;
   }
   s.kinetic = (1.0 - u) * a.kinetic + u * b.kinetic;
   s.potential = (1.0 - u) * a.potential + u * b.potential;

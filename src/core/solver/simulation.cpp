@@ -66,7 +66,12 @@ void Simulation::Run(const SampleSink& sink) {
 StepResult Simulation::TryStep(double h) {
   State end;
   const StepResult result = integrator_->Step(state_, h, &end);
-  if (result.status == StepStatus::kAccepted) state_ = std::move(end);
+  if (result.status != StepStatus::kAccepted) return result;
+  for (size_t k = 0; k < end.effects.size(); ++k) {
+    const int from = state_.effects[k].mode, to = end.effects[k].mode;
+    if (from != to) effect_events_.push_back({end.t, static_cast<int>(k), from, to});
+  }
+  state_ = std::move(end);
   return result;
 }
 

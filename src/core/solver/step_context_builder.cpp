@@ -16,6 +16,7 @@ StepContextBuilder::StepContextBuilder(const Model& model) : model_(model) {
 void StepContextBuilder::Fill(const State& start, const Eigen::VectorXd& unknowns, AnalysisMode mode) {
   ctx_.mode = mode;
   ctx_.start = &start;
+  ctx_.effects = &start.effects;
   for (int k = 0; k < model_.num_nodes(); ++k) {
     nodes_[k] = MakeNodeStep(start.nodes[k], unknowns.segment<6>(model_.node_unknown(k)), mode);
   }
@@ -32,6 +33,7 @@ void StepContextBuilder::Fill(const State& start, const Eigen::VectorXd& unknown
 const StepContext& StepContextBuilder::Dynamic(const State& start, const Eigen::VectorXd& unknowns, double h,
                                                const std::vector<NodeSchemeCoefficients>& coefficients) {
   Fill(start, unknowns, AnalysisMode::kDynamic);
+  if (effect_modes_ != nullptr) ctx_.effects = effect_modes_;
   for (int k = 0; k < model_.num_nodes(); ++k) SetNodeStepVelocities(start.nodes[k], h, coefficients[k], &nodes_[k]);
   const bool has_history = start.dq_prev.size() == model_.num_variables() && start.h_prev > 0;
   for (int k = 0; k < model_.num_variables(); ++k) {

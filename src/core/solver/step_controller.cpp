@@ -19,7 +19,7 @@ constexpr double kErrorOrder = 2.0;
 
 std::string StepStatistics::Summary() const {
   std::ostringstream out;
-  out << "steps: " << accepted << " accepted, " << rejected() << " rejected (" << rejected_error << " local error, "
+  out << "steps: " << accepted << " accepted, " << rejected() << " rejected (" << rejected_error << " local error, " << rejected_event << " stop or friction event, "
       << rejected_newton << " Newton not converged, " << rejected_singular << " singular matrix); "
       << newton_iterations << " Newton iterations; step size " << h_min << " to " << h_max << " s";
   return out.str();
@@ -36,15 +36,16 @@ double StepController::Next(double h, const StepResult& result) {
       ++stats_.accepted;
       break;
     case StepStatus::kRejectedError: ++stats_.rejected_error; break;
+    case StepStatus::kRejectedEvent: ++stats_.rejected_event; return result.limit.retry;
     case StepStatus::kNewtonDiverged: ++stats_.rejected_newton; break;
     case StepStatus::kSingularMatrix: ++stats_.rejected_singular; break;
   }
   if (result.status == StepStatus::kNewtonDiverged || result.status == StepStatus::kSingularMatrix) {
     return h * kFailureShrink;
   }
-  if (!solver_.adaptive) return result.status == StepStatus::kAccepted ? solver_.dt : h;
+  if (!solver_.adaptive) return std::min(result.status == StepStatus::kAccepted ? solver_.dt : h, result.limit.next);
   const double factor = result.error > 0 ? kSafety * std::pow(result.error, -1.0 / kErrorOrder) : kMaxGrowth;
-  return std::min(solver_.dt_max, h * std::clamp(factor, kMinShrink, kMaxGrowth));
+  return std::min({solver_.dt_max, h * std::clamp(factor, kMinShrink, kMaxGrowth), result.limit.next});
 }
 
 }  // namespace flexmbd

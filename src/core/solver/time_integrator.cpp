@@ -18,6 +18,7 @@ const char* StepStatusName(StepStatus status) {
   switch (status) {
     case StepStatus::kAccepted: return "accepted";
     case StepStatus::kRejectedError: return "local error above tolerance";
+    case StepStatus::kRejectedEvent: return "stop or friction event";
     case StepStatus::kNewtonDiverged: return "Newton did not converge";
     case StepStatus::kSingularMatrix: return "singular iteration matrix";
   }

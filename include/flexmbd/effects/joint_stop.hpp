@@ -1,0 +1,95 @@
+#pragma once
+/// @file
+/// Stops on a joint variable q (backlash, freeplay; docs/theory.md, "Stops", (C1)-(C6)). The gap is
+/// g = s rho (q - q_stop), s = +1 for a lower stop and -1 for an upper one, rho the contact radius; the
+/// contact force F >= 0 acts along dg/dq, a generalised force F s rho on q.
+///   RigidStop    g >= 0. A step that ends with g_f < 0 is redone with g_f = g_i enforced by a multiplier,
+///                the contact force, which does no work because the gap does not change over the step; a
+///                step in contact whose multiplier would pull is redone open.
+///   ElasticStop  F = V'(a) [1 + chi a_dot] at approach a = -g > 0 (ContactLaw), with the exact discrete
+///                gradient of V so the books of stored and dissipated energy close.
+/// A stop with a retraction rule stops acting at the first separation after a named variable's speed
+/// exceeds a threshold and engages again below another.
+
+#include <string>
+
+#include "flexmbd/effects/contact_law.hpp"
+#include "flexmbd/effects/modal_effect.hpp"
+#include "flexmbd/model/model_spec.hpp"
+#include "flexmbd/solver/output_sample.hpp"
+
+namespace flexmbd {
+
+class JointStop : public ModalEffect {
+ public:
+  enum Mode { kOpen = 0, kContact = 1, kRetracted = 2 };
+
+  double Gap(double q) const { return sign_ * radius_ * (q - limit_); }  ///< [m]
+  double GapRate(double qdot) const { return sign_ * radius_ * qdot; }   ///< [m/s]
+  /// Generalised force on q of a contact force F [N m or N].
+  double GeneralisedForce(double force) const { return sign_ * radius_ * force; }
+  int variable() const { return variable_; }
+
+  /// The output record of the stop at a state.
+  virtual StopSample Sample(const State& state) const = 0;
+
+  /// Approach rule: the next step may cross at most a little beyond the predicted contact.
+  StepLimit Limit(const StepContext& ctx, const State& end) const override;
+  /// Counts contacts begun and applies the retraction rule; derived classes add their memory.
+  void Commit(const StepContext& ctx, const State& end, EffectState* effect) const override;
+
+ protected:
+  JointStop(const StopSpec& spec, int variable, int slot);
+
+ private:
+  int variable_;
+  double sign_, radius_, limit_;
+  StopSpec::Retraction retraction_;
+};
+
+class RigidStop : public JointStop {
+ public:
+  RigidStop(const StopSpec& spec, int variable, int variable_unknown, int multiplier, int multiplier_unknown, int slot);
+  void AddResidual(const StepContext& ctx, Eigen::Ref<Eigen::VectorXd> r,
+                   Eigen::Ref<Eigen::VectorXd> magnitude) const override;
+  void AddTangent(const StepContext& ctx, Eigen::Ref<Eigen::MatrixXd> J) const override;
+  int ReviseMode(const StepContext& ctx) const override;
+  StopSample Sample(const State& state) const override;
+
+ private:
+  int multiplier_;
+};
+
+class ElasticStop : public JointStop {
+ public:
+  ElasticStop(const StopSpec& spec, int variable, int variable_unknown, int slot);
+  void AddResidual(const StepContext& ctx, Eigen::Ref<Eigen::VectorXd> r,
+                   Eigen::Ref<Eigen::VectorXd> magnitude) const override;
+  void AddTangent(const StepContext& ctx, Eigen::Ref<Eigen::MatrixXd> J) const override;
+  void AddEnergy(const State& state, const Vec3& gravity, EnergyTally* tally) const override;
+  void AddStepWork(const StepContext& ctx, StepWork* work) const override;
+  /// The force does not depend on the mode: the mode only records contact.
+  int ReviseMode(const StepContext& ctx) const override { return TrialMode(ctx); }
+  StepLimit Limit(const StepContext& ctx, const State& end) const override;
+  void Commit(const StepContext& ctx, const State& end, EffectState* effect) const override;
+  StopSample Sample(const State& state) const override;
+
+ private:
+  // The contact force over a step and its derivative with respect to q_f.
+  struct StepForce {
+    double a_i = 0, a_f = 0;     ///< signed approaches -g [m] (negative: open)
+    double elastic = 0;          ///< discrete gradient of V [N]
+    double force = 0;            ///< with the Hunt-Crossley factor [N]
+    double d_dq_f = 0;           ///< d force / d q_f
+    double reference_speed = 0;  ///< v_in used [m/s]
+  };
+  StepForce Evaluate(const StepContext& ctx) const;
+  double Approach(double q) const { return std::max(0.0, -Gap(q)); }  ///< [m], 0 when open
+  // v_in of a step: the memory when in contact at its start, else the approach speed at its start.
+  double ReferenceSpeed(const StepContext& ctx) const;
+
+  ContactLaw law_;
+  int steps_per_contact_;
+};
+
+}  // namespace flexmbd

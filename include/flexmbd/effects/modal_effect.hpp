@@ -1,0 +1,47 @@
+#pragma once
+/// @file
+/// Effects with modes (stops: open / in contact / retracted; friction: sliding / sticking). A step is solved
+/// with trial modes (those of its start); once it converges each effect checks its trial mode against the
+/// converged step and asks for a different one when the step contradicts it (a stop crossed, a contact that
+/// pulls, a stuck joint beyond its static bound), and the step is redone (docs/theory.md, "Effects with
+/// modes"). Effects also bound the step size: to resolve impacts and stick-slip transitions.
+
+#include <limits>
+
+#include "flexmbd/elements/element.hpp"
+
+namespace flexmbd {
+
+/// Step sizes an effect asks for after a converged step [s]; infinity means no request.
+struct StepLimit {
+  double retry = std::numeric_limits<double>::infinity();  ///< reject the step, redo it with this size
+  double next = std::numeric_limits<double>::infinity();   ///< largest size of the next step
+  void Merge(const StepLimit& other);
+};
+
+class ModalEffect : public Element {
+ public:
+  /// Index of this effect's record in State::effects.
+  int slot() const { return slot_; }
+
+  /// The mode the converged step described by ctx must be solved with; its trial mode
+  /// ((*ctx.effects)[slot()].mode) when the step is consistent with it.
+  virtual int ReviseMode(const StepContext& ctx) const = 0;
+
+  /// Step-size requests from the converged step ctx that led to `end` (rates of `end` known).
+  virtual StepLimit Limit(const StepContext& /*ctx*/, const State& /*end*/) const { return {}; }
+
+  /// Updates `effect` (which holds the converged step's mode and the start's memory) for the accepted step
+  /// ctx that led to `end`: memory, events, dissipated work, mode changes decided at the end of a step.
+  virtual void Commit(const StepContext& ctx, const State& end, EffectState* effect) const = 0;
+
+ protected:
+  explicit ModalEffect(int slot) : slot_(slot) {}
+  /// The trial mode of this effect in ctx.
+  int TrialMode(const StepContext& ctx) const { return (*ctx.effects)[slot_].mode; }
+
+ private:
+  int slot_;
+};
+
+}  // namespace flexmbd

@@ -1,0 +1,15 @@
+#pragma once
+/// @file
+/// Checks of effect settings that BuildModel applies to any ModelSpec (the YAML reader checks the same with
+/// file and field names first). Each throws ConfigError naming the joint and the expected form.
+
+#include <string>
+
+#include "flexmbd/model/model_spec.hpp"
+
+namespace flexmbd {
+
+/// Radius, stiffness, exponent, restitution, steps per contact and the retraction thresholds of a stop.
+void ValidateStop(const std::string& where, const StopSpec& stop);
+
+}  // namespace flexmbd

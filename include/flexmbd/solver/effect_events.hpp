@@ -1,0 +1,24 @@
+#pragma once
+/// @file
+/// The mode changes of effects with modes during a run (contacts begun and ended, sticking begun and ended)
+/// and their report as intervals.
+
+#include <string>
+#include <vector>
+
+namespace flexmbd {
+
+class Model;
+
+/// One mode change, at the end of the accepted step in which it happened.
+struct EffectEvent {
+  double t = 0;     ///< [s]
+  int effect = -1;  ///< index into Model::modal_effects()
+  int from = 0, to = 0;
+};
+
+/// One line per stop and frictional joint: events counted and the intervals in contact (or sticking), the last
+/// one closed at t_end if still open, e.g. "stop B1 upper: 2 contacts, in contact [0.51, 0.52] [0.93, 1] s".
+std::string DescribeEffectIntervals(const Model& model, const std::vector<EffectEvent>& events, double t_end);
+
+}  // namespace flexmbd

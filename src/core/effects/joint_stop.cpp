@@ -1,0 +1,192 @@
+#include "flexmbd/effects/joint_stop.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace flexmbd {
+namespace {
+// A step from an open gap g_i that ends beyond the stop starts the contact when g_i is at most this fraction
+// of the gap's change over the step; otherwise it is redone shorter to end just before the contact, so a
+// contact never starts far from the stop (docs/theory.md, (C5)).
+constexpr double kEventFraction = 0.05;
+// The redone step ends at this fraction of the crossing time interpolated linearly in the gap.
+constexpr double kLanding = 0.98;
+// Slowest approach speed taken as an elastic contact's reference speed [m/s]: below it the Hunt-Crossley
+// damping chi = alpha_e / v_in of a resting contact would be unbounded.
+constexpr double kMinReferenceSpeed = 1.0e-6;
+// An elastic contact step whose change of approach speed exceeds its budget pi v_in / N by more than this
+// factor is redone (N the steps per contact); below it the next step is shortened instead.
+constexpr double kRejectRatio = 2.0;
+// Shrink beyond the budget's estimate when redoing, so the retry is not rejected again.
+constexpr double kRetrySafety = 0.8;
+constexpr double kPi = 3.14159265358979323846;
+}  // namespace
+
+JointStop::JointStop(const StopSpec& spec, int variable, int slot)
+    : ModalEffect(slot),
+      variable_(variable),
+      sign_(spec.side == StopSpec::Side::kLower ? 1.0 : -1.0),
+      radius_(spec.radius),
+      limit_(spec.limit),
+      retraction_(spec.retraction) {}
+
+StepLimit JointStop::Limit(const StepContext& ctx, const State&) const {
+  StepLimit limit;
+  const VariableStep& q = (*ctx.variables)[variable_];
+  const double g_i = Gap(q.q_i), g_f = Gap(q.q_f);
+  const bool starts_far = g_i > kEventFraction * (g_i - g_f);
+  if (TrialMode(ctx) == kOpen && g_f < 0 && starts_far) limit.retry = kLanding * ctx.h * g_i / (g_i - g_f);
+  return limit;
+}
+
+void JointStop::Commit(const StepContext& ctx, const State& end, EffectState* effect) const {
+  if (ctx.start->effects[slot()].mode != kContact && effect->mode == kContact) ++effect->events;
+  if (retraction_.variable < 0) return;
+  const double speed = std::abs(end.qdot[retraction_.variable]);
+  if (effect->mode == kOpen && speed > retraction_.retract_above) effect->mode = kRetracted;
+  if (effect->mode == kRetracted && speed < retraction_.engage_below && Gap(end.q[variable_]) >= 0) {
+    effect->mode = kOpen;
+  }
+}
+
+RigidStop::RigidStop(const StopSpec& spec, int variable, int variable_unknown, int multiplier, int multiplier_unknown,
+                     int slot)
+    : JointStop(spec, variable, slot), multiplier_(multiplier) {
+  unknowns_ = {variable_unknown, multiplier_unknown};
+}
+
+void RigidStop::AddResidual(const StepContext& ctx, Eigen::Ref<Eigen::VectorXd> r,
+                            Eigen::Ref<Eigen::VectorXd> magnitude) const {
+  const double lambda = (*ctx.lambda)[multiplier_];
+  if (TrialMode(ctx) != kContact) {
+    r[1] += lambda;  // no contact: the multiplier vanishes
+    return;
+  }
+  const VariableStep& q = (*ctx.variables)[variable()];
+  const double force = GeneralisedForce(lambda);
+  r[0] -= force;
+  magnitude[0] += std::abs(force);
+  // In a step the gap keeps its start value (zero work); at rest (static analysis) it closes.
+  r[1] += ctx.at_end() ? Gap(q.q_f) : Gap(q.q_f) - Gap(q.q_i);
+}
+
+void RigidStop::AddTangent(const StepContext& ctx, Eigen::Ref<Eigen::MatrixXd> J) const {
+  if (TrialMode(ctx) != kContact) {
+    J(1, 1) += 1.0;
+    return;
+  }
+  J(0, 1) -= GeneralisedForce(1.0);
+  J(1, 0) += GapRate(1.0);
+}
+
+int RigidStop::ReviseMode(const StepContext& ctx) const {
+  const int mode = TrialMode(ctx);
+  const VariableStep& q = (*ctx.variables)[variable()];
+  const double g_i = Gap(q.q_i), g_f = Gap(q.q_f);
+  if (mode == kOpen && g_f < 0 && g_i <= kEventFraction * (g_i - g_f)) return kContact;
+  if (mode == kContact && (*ctx.lambda)[multiplier_] < 0) return kOpen;
+  return mode;
+}
+
+StopSample RigidStop::Sample(const State& state) const {
+  StopSample s;
+  s.in_contact = state.effects[slot()].mode == kContact;
+  s.force = s.in_contact ? state.lambda[multiplier_] : 0.0;
+  s.torque = GeneralisedForce(s.force);
+  return s;
+}
+
+ElasticStop::ElasticStop(const StopSpec& spec, int variable, int variable_unknown, int slot)
+    : JointStop(spec, variable, slot), law_(spec), steps_per_contact_(spec.steps_per_contact) {
+  unknowns_ = {variable_unknown};
+}
+
+double ElasticStop::ReferenceSpeed(const StepContext& ctx) const {
+  const VariableStep& q = (*ctx.variables)[variable()];
+  const double remembered = ctx.start->effects[slot()].reference;
+  const double speed = Approach(q.q_i) > 0 ? remembered : -GapRate(q.qdot_i);
+  return std::max(speed, kMinReferenceSpeed);
+}
+
+ElasticStop::StepForce ElasticStop::Evaluate(const StepContext& ctx) const {
+  StepForce f;
+  if (TrialMode(ctx) == kRetracted) return f;
+  const VariableStep& q = (*ctx.variables)[variable()];
+  // Signed approaches -g: the discrete gradient and the approach rate span the whole step, also across the
+  // instant the gap closes or opens.
+  f.a_i = -Gap(q.q_i);
+  f.a_f = -Gap(q.q_f);
+  const double da_dq = -GapRate(1.0);
+  double d_elastic = 0;
+  f.elastic = law_.DiscreteForce(f.a_i, f.a_f, &d_elastic);
+  if (ctx.mode == AnalysisMode::kStatic) {
+    f.force = f.elastic;
+    f.d_dq_f = d_elastic * da_dq;
+    return f;
+  }
+  f.reference_speed = ReferenceSpeed(ctx);
+  const double chi = law_.damping_number() / f.reference_speed;
+  // Hunt-Crossley factor, never pulling (it stays positive over an exact impact: 1 - alpha_e e > 0).
+  const double factor = 1.0 + chi * (f.a_f - f.a_i) / ctx.h;
+  if (factor <= 0 || f.elastic == 0) return f;
+  f.force = f.elastic * factor;
+  f.d_dq_f = (d_elastic * factor + f.elastic * chi / ctx.h) * da_dq;
+  return f;
+}
+
+void ElasticStop::AddResidual(const StepContext& ctx, Eigen::Ref<Eigen::VectorXd> r,
+                              Eigen::Ref<Eigen::VectorXd> magnitude) const {
+  const double force = GeneralisedForce(Evaluate(ctx).force);
+  r[0] -= force;
+  magnitude[0] += std::abs(force);
+}
+
+void ElasticStop::AddTangent(const StepContext& ctx, Eigen::Ref<Eigen::MatrixXd> J) const {
+  J(0, 0) -= GeneralisedForce(Evaluate(ctx).d_dq_f);
+}
+
+void ElasticStop::AddEnergy(const State& state, const Vec3&, EnergyTally* tally) const {
+  if (state.effects[slot()].mode != kRetracted) tally->potential += law_.Potential(Approach(state.q[variable()]));
+}
+
+void ElasticStop::AddStepWork(const StepContext& ctx, StepWork* work) const {
+  const StepForce f = Evaluate(ctx);
+  work->dissipated += (f.force - f.elastic) * (f.a_f - f.a_i);
+}
+
+StepLimit ElasticStop::Limit(const StepContext& ctx, const State& end) const {
+  StepLimit limit = JointStop::Limit(ctx, end);
+  const StepForce f = Evaluate(ctx);
+  if (f.a_i <= 0 && f.a_f <= 0) return limit;  // no contact in this step
+  // Resolve the impact in steps_per_contact steps: over an impact the approach speed turns from v_in to
+  // -e v_in along about half a period, changing by at most pi v_in / N per step of 1/N of it.
+  const double budget = kPi * f.reference_speed / steps_per_contact_;
+  const double change = std::abs(GapRate(end.qdot[variable()] - ctx.start->qdot[variable()]));
+  const double ratio = change / budget;
+  if (ratio > kRejectRatio) limit.retry = std::min(limit.retry, kRetrySafety * ctx.h / ratio);
+  else if (ratio > 0) limit.next = std::min(limit.next, ctx.h / ratio);
+  return limit;
+}
+
+void ElasticStop::Commit(const StepContext& ctx, const State& end, EffectState* effect) const {
+  const StepForce f = Evaluate(ctx);
+  if (effect->mode != kRetracted) effect->mode = f.a_f > 0 ? kContact : kOpen;
+  if (f.a_i <= 0 && f.a_f > 0) effect->reference = f.reference_speed;
+  effect->work += (f.force - f.elastic) * (f.a_f - f.a_i);
+  JointStop::Commit(ctx, end, effect);
+}
+
+StopSample ElasticStop::Sample(const State& state) const {
+  StopSample s;
+  const EffectState& effect = state.effects[slot()];
+  if (effect.mode == kRetracted) return s;
+  s.approach = Approach(state.q[variable()]);
+  s.in_contact = s.approach > 0;
+  const double approach_speed = -GapRate(state.qdot[variable()]);
+  const double chi = law_.damping_number() / std::max(effect.reference, kMinReferenceSpeed);
+  s.force = s.in_contact ? law_.Force(s.approach) * std::max(0.0, 1.0 + chi * approach_speed) : 0.0;
+  s.torque = GeneralisedForce(s.force);
+  return s;
+}
+
+}  // namespace flexmbd

@@ -1,0 +1,40 @@
+#include "flexmbd/solver/effect_events.hpp"
+
+#include <sstream>
+
+#include "flexmbd/model/model.hpp"
+
+namespace flexmbd {
+namespace {
+// Intervals of one effect in `mode`, from its events in time order; one still open ends at t_end.
+std::vector<std::pair<double, double>> Intervals(const std::vector<EffectEvent>& events, int effect, int mode,
+                                                 int initial_mode, double t_end) {
+  std::vector<std::pair<double, double>> intervals;
+  bool inside = initial_mode == mode;
+  double begin = 0;
+  for (const EffectEvent& e : events) {
+    if (e.effect != effect) continue;
+    if (!inside && e.to == mode) begin = e.t;
+    if (inside && e.to != mode) intervals.emplace_back(begin, e.t);
+    inside = e.to == mode;
+  }
+  if (inside) intervals.emplace_back(begin, t_end);
+  return intervals;
+}
+}  // namespace
+
+std::string DescribeEffectIntervals(const Model& model, const std::vector<EffectEvent>& events, double t_end) {
+  std::ostringstream out;
+  for (size_t k = 0; k < model.stops().size(); ++k) {
+    const int slot = model.stop_effects()[k]->slot();
+    const auto intervals =
+        Intervals(events, slot, JointStop::kContact, model.initial_state().effects[slot].mode, t_end);
+    out << "stop " << model.stops()[k].joint << ' ' << model.stops()[k].stop << ": " << intervals.size()
+        << " contact interval(s)";
+    for (const auto& [begin, end] : intervals) out << " [" << begin << ", " << end << ']';
+    out << (intervals.empty() ? "\n" : " s\n");
+  }
+  return out.str();
+}
+
+}  // namespace flexmbd

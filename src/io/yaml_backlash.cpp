@@ -1,0 +1,121 @@
+#include <algorithm>
+
+#include "flexmbd/io/message_text.hpp"
+#include "flexmbd/io/yaml_sections.hpp"
+
+namespace flexmbd {
+namespace io {
+namespace {
+const std::vector<std::string> kBacklashKeys = {"lower", "lower_deg", "upper",  "upper_deg",
+                                                "radius_lower", "radius_upper", "stop", "retract"};
+const std::vector<std::string> kStopKeys = {"type", "law", "stiffness", "exponent", "restitution", "steps_per_contact"};
+const std::vector<std::string> kRetractKeys = {"joint", "above", "below"};
+
+// `stop:` the contact model shared by the block's stops (rigid when absent).
+void ReadContact(const Field& field, StopSpec* stop) {
+  CheckKeys(field, kStopKeys);
+  if (field.Child("type").present()) {
+    stop->kind = ReadEnum<StopSpec::Kind>(field.Child("type"), "stop type",
+                                          {{"rigid", StopSpec::Kind::kRigid}, {"elastic", StopSpec::Kind::kElastic}});
+  }
+  if (stop->kind == StopSpec::Kind::kRigid) {
+    for (const char* key : {"law", "stiffness", "exponent", "restitution", "steps_per_contact"}) {
+      if (field.Child(key).present()) field.Child(key).Fail("applies only to elastic stops; expected type: elastic");
+    }
+    return;
+  }
+  if (field.Child("law").present()) {
+    stop->law = ReadEnum<StopSpec::Law>(field.Child("law"), "contact law",
+                                        {{"linear", StopSpec::Law::kLinear}, {"hertz", StopSpec::Law::kHertz}});
+  }
+  const Quantity stiffness{"a contact stiffness", Bound::kPositive, stop->law == StopSpec::Law::kLinear ? "N/m" : "N/m^n"};
+  RequireKey(field, "stiffness", Expected(stiffness));
+  stop->stiffness = ReadNumber(field.Child("stiffness"), stiffness);
+  if (field.Child("exponent").present()) {
+    if (stop->law != StopSpec::Law::kHertz) field.Child("exponent").Fail("applies only to law: hertz");
+    stop->exponent = ReadNumber(field.Child("exponent"), Quantity{"a Hertz exponent", Bound::kAtLeastOne, ""});
+  }
+  const Field restitution = field.Child("restitution");
+  if (restitution.present()) {
+    stop->restitution = ReadNumber(restitution, Quantity{"a coefficient of restitution", Bound::kUnitInterval, ""});
+    if (stop->restitution == 0.0) restitution.Fail("0 is not allowed; expected a coefficient of restitution in (0, 1]");
+  }
+  OverlayInteger(field, "steps_per_contact", Quantity{"a number of steps", Bound::kAtLeastOne, ""},
+                 &stop->steps_per_contact);
+}
+
+// `retract:` the rule of a conditional stop.
+void ReadRetraction(const Field& field, const VariableUnits& units, StopSpec::Retraction* retraction) {
+  CheckKeys(field, kRetractKeys);
+  const std::string speed_unit = units.position + "/s of the named joint";
+  for (const char* key : {"joint", "above", "below"}) RequireKey(field, key, "the retraction rule {joint, above, below}");
+  retraction->joint = ReadString(field.Child("joint"), "a joint name");
+  retraction->retract_above = ReadNumber(field.Child("above"), Quantity{"a speed", Bound::kPositive, speed_unit});
+  retraction->engage_below = ReadNumber(field.Child("below"), Quantity{"a speed", Bound::kNonNegative, speed_unit});
+  if (!(retraction->engage_below < retraction->retract_above)) {
+    field.Child("below").Fail(FormatNumber(retraction->engage_below) + " is not below 'above' (" +
+                              FormatNumber(retraction->retract_above) + "); expected below < above");
+  }
+}
+
+// One backlash block: its lower and/or upper stop.
+std::vector<StopSpec> ReadBlock(const Field& block, const JointSpec& joint, const VariableUnits& units,
+                                const std::string& suffix) {
+  CheckKeys(block, kBacklashKeys);
+  const Quantity position{"a stop position", Bound::kAny, units.position};
+  double lower = joint.limit_lower, upper = joint.limit_upper;
+  const bool has_lower = OverlayMeasure(block, "lower", position, units.measure, &lower);
+  const bool has_upper = OverlayMeasure(block, "upper", position, units.measure, &upper);
+  const bool from_urdf = !has_lower && !has_upper;
+  if (from_urdf && !joint.has_limits) {
+    block.Fail("gives no stop position and joint '" + joint.name +
+               "' has no URDF <limit>; expected lower and/or upper (or lower_deg, upper_deg)");
+  }
+  if ((from_urdf || (has_lower && has_upper)) && !(lower < upper)) {
+    block.Fail("lower " + FormatNumber(lower) + " is not below upper " + FormatNumber(upper) + " [" + units.position +
+               "]; expected lower < upper");
+  }
+  StopSpec contact;
+  const Field stop_field = block.Child("stop");
+  if (stop_field.present()) ReadContact(stop_field, &contact);
+  const Field retract = block.Child("retract");
+  if (retract.present()) ReadRetraction(retract, units, &contact.retraction);
+
+  std::vector<StopSpec> stops;
+  auto add = [&](StopSpec::Side side, double limit, const std::string& side_name) {
+    StopSpec stop = contact;
+    stop.side = side;
+    stop.limit = limit;
+    stop.name = side_name + suffix;
+    const std::string radius_key = "radius_" + side_name;
+    if (block.Child(radius_key).present()) {
+      if (!units.measure.angular) block.Child(radius_key).Fail("applies only to rotations; the gap of " +
+                                                               units.measure.description + " is its travel");
+      stop.radius = ReadNumber(block.Child(radius_key), Quantity{"a contact radius", Bound::kPositive, "m"});
+    }
+    stops.push_back(stop);
+  };
+  if (has_lower || from_urdf) add(StopSpec::Side::kLower, lower, "lower");
+  if (has_upper || from_urdf) add(StopSpec::Side::kUpper, upper, "upper");
+  for (const char* side : {"lower", "upper"}) {
+    const Field radius = block.Child(std::string("radius_") + side);
+    const bool used = std::any_of(stops.begin(), stops.end(), [side](const StopSpec& s) { return s.name.rfind(side, 0) == 0; });
+    if (radius.present() && !used) radius.Fail(std::string("there is no ") + side + " stop in this block");
+  }
+  return stops;
+}
+}  // namespace
+
+std::vector<StopSpec> ReadBacklash(const Field& backlash, const JointSpec& joint, const VariableUnits& units) {
+  if (!backlash.node().IsSequence()) return ReadBlock(backlash, joint, units, "");
+  std::vector<StopSpec> stops;
+  const std::vector<Field> blocks = ListEntries(backlash, "a backlash block or a list of them");
+  for (size_t k = 0; k < blocks.size(); ++k) {
+    const std::vector<StopSpec> block = ReadBlock(blocks[k], joint, units, k == 0 ? "" : "." + std::to_string(k));
+    stops.insert(stops.end(), block.begin(), block.end());
+  }
+  return stops;
+}
+
+}  // namespace io
+}  // namespace flexmbd
