@@ -23,6 +23,11 @@ CsvSink::CsvSink(const Model& model, const std::string& path) : out_(path) {
       out_ << ",stop." << stop.joint << '.' << stop.stop << '.' << column;
     }
   }
+  for (const FrictionInfo& friction : model.frictions()) {
+    for (const char* column : {"sticking", "torque", "normal_force", "slip_velocity", "work"}) {
+      out_ << ",friction." << friction.joint << '.' << column;
+    }
+  }
   out_ << ",energy.kinetic,energy.potential,energy.total,energy.external_work,energy.dissipated,"
           "energy.numerical_dissipation,solver.dt,solver.iterations\n";
 }
@@ -37,6 +42,9 @@ void CsvSink::Write(const OutputSample& s) {
   }
   for (const StopSample& stop : s.stops) {
     out_ << ',' << stop.in_contact << ',' << stop.force << ',' << stop.torque << ',' << stop.approach;
+  }
+  for (const FrictionSample& f : s.friction) {
+    out_ << ',' << f.sticking << ',' << f.torque << ',' << f.normal_force << ',' << f.slip_velocity << ',' << f.work;
   }
   out_ << ',' << s.kinetic << ',' << s.potential << ',' << s.total() << ',' << s.external_work << ',' << s.dissipated
        << ',' << s.numerical_dissipation << ',' << s.dt << ',' << s.iterations << '\n';

@@ -184,7 +184,7 @@ class UrdfWalker {
     joint.axis_J = ToVec3(urdf_joint.axis);
     joint.axis2_J = DefaultSecondAxis(joint.axis_J);
     ResizeJointVariables(&joint);
-    AddUrdfDamper(urdf_joint, &joint);
+    AddUrdfDynamics(urdf_joint, &joint);
     ReadUrdfLimits(urdf_joint, &joint);
     try {
       MakeJointKinematics(joint);
@@ -207,8 +207,9 @@ class UrdfWalker {
          "': unsupported type; expected revolute, continuous, prismatic, planar, fixed or floating");
   }
 
-  // <dynamics damping> becomes a damper on variable 0; <dynamics friction> waits for the friction effect.
-  void AddUrdfDamper(const urdf::Joint& urdf_joint, JointSpec* joint) const {
+  // <dynamics damping> becomes a damper on variable 0, <dynamics friction> a friction of constant bound (a
+  // YAML friction block replaces it).
+  void AddUrdfDynamics(const urdf::Joint& urdf_joint, JointSpec* joint) const {
     if (!urdf_joint.dynamics || joint->effects.empty()) return;
     const double damping = urdf_joint.dynamics->damping;
     if (!(damping >= 0.0) || !std::isfinite(damping)) {
@@ -217,6 +218,18 @@ class UrdfWalker {
            " is negative; expected a damping >= 0 [" + unit + "]");
     }
     if (damping > 0.0) joint->effects[0].dampers = {DamperSpec{damping}};
+    const double friction = urdf_joint.dynamics->friction;
+    if (!(friction >= 0.0) || !std::isfinite(friction)) {
+      const char* unit = joint->type == JointType::kPrismatic ? "N" : "N m";
+      Fail("joint '" + joint->name + "': <dynamics friction> " + FormatNumber(friction) +
+           " is negative; expected a friction >= 0 [" + unit + "]");
+    }
+    if (friction > 0.0) {
+      FrictionSpec constant;
+      constant.law = FrictionSpec::Law::kConstantTorque;
+      constant.torque = friction;
+      joint->effects[0].frictions = {constant};
+    }
   }
 
   // <limit> of a revolute or prismatic joint: the stop positions of a backlash block that gives none.

@@ -17,8 +17,8 @@ namespace {
 constexpr double kDriveStartTolerance = 1.0e-9;
 
 const std::vector<std::string> kJointKeys = {"type",    "axis",  "axis2",    "pitch",   "spring",  "damper",
-                                             "initial", "drive", "backlash", "variables"};
-const std::vector<std::string> kVariableKeys = {"spring", "damper", "initial", "drive", "backlash"};
+                                             "initial", "drive", "backlash", "friction", "variables"};
+const std::vector<std::string> kVariableKeys = {"spring", "damper", "initial", "drive", "backlash", "friction"};
 
 // Names of the relative-motion variables, in order (joint_kinematics.hpp).
 std::vector<std::string> VariableNames(JointType type) {
@@ -175,13 +175,15 @@ void ReadVariable(const std::vector<Field>& sources, int variable, JointSpec* jo
   if (drive.present()) effects.drives = {ReadTimeFunction(drive, units.position, units.measure)};
   const Field backlash = Pick(sources, "backlash");
   if (backlash.present()) effects.stops = ReadBacklash(backlash, *joint, units);
+  const Field friction = Pick(sources, "friction");
+  if (friction.present()) effects.frictions = {ReadFriction(friction, units)};
   ReadInitial(Pick(sources, "initial"), drive, units, variable, joint);
 }
 
 std::vector<Field> ReadVariableList(const Field& field, const JointSpec& joint) {
   const Field list = field.Child("variables");
   const std::vector<Field> entries =
-      ListEntries(list, "a list of per-variable settings {spring, damper, initial, drive, backlash}");
+      ListEntries(list, "a list of per-variable settings {spring, damper, initial, drive, backlash, friction}");
   const std::vector<std::string> names = VariableNames(joint.type);
   if (entries.size() > names.size()) {
     list.Fail("has " + std::to_string(entries.size()) + " entries; the " + JointLabel(joint) + " has " +

@@ -48,7 +48,7 @@ void PrintSummary(const flexmbd::Simulation& simulation, const flexmbd::OutputSa
               "numerical dissipation %.6g J\n",
               last.kinetic, last.potential, last.external_work, last.dissipated, last.numerical_dissipation);
   std::istringstream intervals(
-      flexmbd::DescribeEffectIntervals(simulation.model(), simulation.effect_events(), simulation.state().t));
+      flexmbd::DescribeEffectIntervals(simulation.model(), simulation.effect_events(), simulation.state()));
   for (std::string line; std::getline(intervals, line);) std::printf("flexmbd_run: %s\n", line.c_str());
 }
 

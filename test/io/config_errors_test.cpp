@@ -93,9 +93,29 @@ TEST(ConfigErrors, UnknownKeyListsValidKeys) {
                       "pendulum.yaml: output.video: unknown key; valid keys are: rate_hz, csv, bag");
 }
 
-TEST(ConfigErrors, ReservedKeyIsUnknownForNow) {
+TEST(ConfigErrors, KineticAboveStaticFrictionIsRejected) {
+  EXPECT_CONFIG_ERROR(Pendulum("joints: {B1: {friction: {mu_s: 0.1, mu_k: 0.2}}}"),
+                      "pendulum.yaml: joints.B1.friction.mu_s: 0.1 is below mu_k 0.2; expected mu_s >= mu_k");
+}
+
+TEST(ConfigErrors, NegativeFrictionRadiusPreloadOrSpeedIsRejected) {
+  EXPECT_CONFIG_ERROR(Pendulum("joints: {B1: {friction: {mu_k: 0.2, radius: -0.01}}}"),
+                      "pendulum.yaml: joints.B1.friction.radius: -0.01 is negative; expected a race radius > 0 [m]");
+  EXPECT_CONFIG_ERROR(Pendulum("joints: {B1: {friction: {mu_k: 0.2, preload: -1}}}"),
+                      "pendulum.yaml: joints.B1.friction.preload: -1 is negative; expected a preload >= 0 [N]");
+  EXPECT_CONFIG_ERROR(Pendulum("joints: {B1: {friction: {mu_k: 0.2, v0: -1e-3}}}"),
+                      "pendulum.yaml: joints.B1.friction.v0: -1e-3 is negative; expected a sticking speed >= 0 [m/s]");
+}
+
+TEST(ConfigErrors, FrictionNeedsKineticCoefficient) {
   EXPECT_CONFIG_ERROR(Pendulum("joints: {B1: {friction: {mu_s: 0.2}}}"),
-                      "pendulum.yaml: joints.B1.friction: unknown key");
+                      "pendulum.yaml: joints.B1.friction: missing key 'mu_k'; expected a friction coefficient >= 0");
+}
+
+TEST(ConfigErrors, RegularisedFrictionNeedsSpeed) {
+  EXPECT_CONFIG_ERROR(Pendulum("joints: {B1: {friction: {law: regularised, mu_k: 0.2}}}"),
+                      "pendulum.yaml: joints.B1.friction: missing key 'v0'; expected a regularisation speed > 0 [m/s] "
+                      "for the regularised law");
 }
 
 TEST(ConfigErrors, DuplicateKeyIsRejected) {

@@ -27,6 +27,9 @@ VariableUnits UnitsOf(const JointSpec& joint, int variable);
 /// positions from the URDF <limit> when a block gives neither.
 std::vector<StopSpec> ReadBacklash(const Field& backlash, const JointSpec& joint, const VariableUnits& units);
 
+/// `friction:` of one joint variable: Coulomb friction with sticking (or the regularised law).
+FrictionSpec ReadFriction(const Field& friction, const VariableUnits& units);
+
 /// `joints:` a map from URDF joint names to joint settings (type, axes, pitch, effects, initial motion).
 void ReadJoints(const Field& joints, UrdfModel* model);
 

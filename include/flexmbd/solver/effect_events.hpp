@@ -9,6 +9,7 @@
 namespace flexmbd {
 
 class Model;
+struct State;
 
 /// One mode change, at the end of the accepted step in which it happened.
 struct EffectEvent {
@@ -17,8 +18,9 @@ struct EffectEvent {
   int from = 0, to = 0;
 };
 
-/// One line per stop and frictional joint: events counted and the intervals in contact (or sticking), the last
-/// one closed at t_end if still open, e.g. "stop B1 upper: 2 contacts, in contact [0.51, 0.52] [0.93, 1] s".
-std::string DescribeEffectIntervals(const Model& model, const std::vector<EffectEvent>& events, double t_end);
+/// One line per stop and frictional joint: the intervals in contact (or sticking), the last one closed at the
+/// state's time if still open, e.g. "stop B1 upper: 2 contact interval(s) [0.51, 0.52] [0.93, 1] s"; for
+/// friction also the sticking threshold v0 in force and the energy dissipated.
+std::string DescribeEffectIntervals(const Model& model, const std::vector<EffectEvent>& events, const State& state);
 
 }  // namespace flexmbd

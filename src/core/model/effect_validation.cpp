@@ -29,4 +29,23 @@ void ValidateStop(const std::string& where, const StopSpec& stop) {
   if (stop.steps_per_contact < 1) Fail(at, "steps_per_contact", stop.steps_per_contact, "an integer >= 1");
 }
 
+void ValidateFriction(const std::string& where, const FrictionSpec& f, JointType type) {
+  const std::string at = where + "friction: ";
+  if (type != JointType::kRevolute && type != JointType::kPrismatic) {
+    throw ConfigError(at + "a " + JointTypeName(type) + " joint; expected friction on a revolute or prismatic joint");
+  }
+  if (f.law == FrictionSpec::Law::kConstantTorque) {
+    if (!(f.torque >= 0)) Fail(at, "torque", f.torque, "a friction torque >= 0 [N m or N]");
+    return;
+  }
+  if (!(f.mu_k >= 0)) Fail(at, "mu_k", f.mu_k, "a kinetic coefficient >= 0");
+  if (!(f.mu_s >= f.mu_k)) Fail(at, "mu_s", f.mu_s, "a static coefficient >= mu_k (" + std::to_string(f.mu_k) + ")");
+  if (!(f.radius > 0)) Fail(at, "radius", f.radius, "a race radius > 0 [m]");
+  if (!(f.preload >= 0)) Fail(at, "preload", f.preload, "a preload >= 0 [N]");
+  if (!(f.v0 >= 0)) Fail(at, "v0", f.v0, "a sticking speed >= 0 [m/s] (0: 1% of the largest slip speed)");
+  if (f.law == FrictionSpec::Law::kRegularised && !(f.v0 > 0)) {
+    Fail(at, "v0", f.v0, "a regularisation speed > 0 [m/s] for the regularised law");
+  }
+}
+
 }  // namespace flexmbd

@@ -4,6 +4,7 @@
 #include <sstream>
 
 #include "flexmbd/common/error.hpp"
+#include "flexmbd/effects/joint_friction.hpp"
 #include "flexmbd/effects/joint_stop.hpp"
 #include "flexmbd/elements/applied_load.hpp"
 #include "flexmbd/model/effect_validation.hpp"
@@ -168,7 +169,8 @@ Model BuildModel(const ModelSpec& spec) {
     for (const VariableEffectsSpec& effects : joint.effects) {
       model.num_multipliers_ += effects.drives.size();
       for (const StopSpec& stop : effects.stops) model.num_multipliers_ += stop.kind == StopSpec::Kind::kRigid;
-      num_effect_slots += effects.stops.size();
+      for (const FrictionSpec& f : effects.frictions) model.num_multipliers_ += f.law != FrictionSpec::Law::kRegularised;
+      num_effect_slots += effects.stops.size() + effects.frictions.size();
     }
   }
   if (num_effect_slots > 0 && solver.integrator == SolverSpec::Integrator::kGeneralizedAlpha) {
@@ -255,6 +257,27 @@ Model BuildModel(const ModelSpec& spec) {
         }
         model.stops_.push_back({joint.name, stop.name, v});
         model.stop_effects_.push_back(element.get());
+        model.modal_effects_.push_back(element.get());
+        model.elements_.push_back(std::move(element));
+      }
+      if (effects.frictions.size() > 1) {
+        throw ConfigError(Prefix(spec) + "joint '" + joint.name + "': more than one friction on one variable");
+      }
+      for (const FrictionSpec& friction : effects.frictions) {
+        ValidateFriction(Prefix(spec) + "joint '" + joint.name + "': ", friction, joint.type);
+        const bool sticks = friction.law != FrictionSpec::Law::kRegularised;
+        const int slot = static_cast<int>(model.modal_effects_.size());
+        auto element = std::make_unique<JointFriction>(
+            friction, *model.joints_.back(), model.variable_unknown(v), sticks ? multiplier : -1,
+            sticks ? model.multiplier_unknown(multiplier) : -1,
+            model.multiplier_unknown(model.joints_.back()->first_multiplier()), slot);
+        if (sticks) {
+          model.multiplier_names_.push_back("friction " + model.variable_names_[v]);
+          ++multiplier;
+        }
+        state.effects[slot].mode = JointFriction::InitialMode(state.qdot[v]);
+        model.frictions_.push_back({joint.name, v});
+        model.friction_effects_.push_back(element.get());
         model.modal_effects_.push_back(element.get());
         model.elements_.push_back(std::move(element));
       }

@@ -23,7 +23,8 @@ std::vector<std::pair<double, double>> Intervals(const std::vector<EffectEvent>&
 }
 }  // namespace
 
-std::string DescribeEffectIntervals(const Model& model, const std::vector<EffectEvent>& events, double t_end) {
+std::string DescribeEffectIntervals(const Model& model, const std::vector<EffectEvent>& events, const State& state) {
+  const double t_end = state.t;
   std::ostringstream out;
   for (size_t k = 0; k < model.stops().size(); ++k) {
     const int slot = model.stop_effects()[k]->slot();
@@ -31,6 +32,17 @@ std::string DescribeEffectIntervals(const Model& model, const std::vector<Effect
         Intervals(events, slot, JointStop::kContact, model.initial_state().effects[slot].mode, t_end);
     out << "stop " << model.stops()[k].joint << ' ' << model.stops()[k].stop << ": " << intervals.size()
         << " contact interval(s)";
+    for (const auto& [begin, end] : intervals) out << " [" << begin << ", " << end << ']';
+    out << (intervals.empty() ? "\n" : " s\n");
+  }
+  for (size_t k = 0; k < model.frictions().size(); ++k) {
+    const JointFriction& friction = *model.friction_effects()[k];
+    const int slot = friction.slot();
+    const auto intervals =
+        Intervals(events, slot, JointFriction::kSticking, model.initial_state().effects[slot].mode, t_end);
+    out << "friction " << model.frictions()[k].joint << ": sticking threshold v0 = "
+        << friction.StickingSpeed(state.effects[slot]) << " m/s, largest slip speed " << state.effects[slot].reference
+        << " m/s, dissipated " << state.effects[slot].work << " J, " << intervals.size() << " sticking interval(s)";
     for (const auto& [begin, end] : intervals) out << " [" << begin << ", " << end << ']';
     out << (intervals.empty() ? "\n" : " s\n");
   }

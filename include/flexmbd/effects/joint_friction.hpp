@@ -1,0 +1,72 @@
+#pragma once
+/// @file
+/// Coulomb friction in a revolute or prismatic joint (docs/theory.md, "Friction", (F1)-(F6)). The normal
+/// force is the joint's radial reaction (its position multipliers across the motion axis) plus a preload,
+/// N = |P lambda| + N0, and enters the Newton iteration with its derivative. With slip velocity v = rho qdot:
+///   sliding   Q = -mu_k rho N s on q, s = +-1 the sliding direction, fixed over a step; a step in which the
+///             velocity would reverse is redone sticking
+///   sticking  q_f = q_i enforced by a multiplier, the friction force Q = -lambda_t; the joint stays stuck
+///             while |lambda_t| <= mu_s rho N, else the step is redone sliding in the direction of lambda_t
+/// A sliding joint whose slip speed at the end of a step is below v0 sticks from the next step on. The
+/// regularised law Q = -mu_k rho N (1 - exp(-|v|/v0)) sign(v) has no modes; the constant-torque law (URDF
+/// <dynamics friction>) replaces mu rho N by a fixed bound.
+
+#include "flexmbd/effects/modal_effect.hpp"
+#include "flexmbd/joints/joint.hpp"
+#include "flexmbd/model/model_spec.hpp"
+#include "flexmbd/solver/output_sample.hpp"
+
+namespace flexmbd {
+
+class JointFriction : public ModalEffect {
+ public:
+  enum Mode { kSticking = 0, kSlidingPositive = 1, kSlidingNegative = 2 };
+
+  /// @param stick_multiplier the sticking multiplier (-1 for the regularised law, which has none)
+  JointFriction(const FrictionSpec& spec, const Joint& joint, int variable_unknown, int stick_multiplier,
+                int stick_multiplier_unknown, int joint_multiplier_unknown, int slot);
+
+  void AddResidual(const StepContext& ctx, Eigen::Ref<Eigen::VectorXd> r,
+                   Eigen::Ref<Eigen::VectorXd> magnitude) const override;
+  void AddTangent(const StepContext& ctx, Eigen::Ref<Eigen::MatrixXd> J) const override;
+  void AddStepWork(const StepContext& ctx, StepWork* work) const override;
+  int ReviseMode(const StepContext& ctx) const override;
+  StepLimit Limit(const StepContext& ctx, const State& end) const override;
+  void Commit(const StepContext& ctx, const State& end, EffectState* effect) const override;
+
+  /// The initial mode for a starting rate: sliding in its direction, sticking at rest.
+  static int InitialMode(double qdot) { return qdot > 0 ? kSlidingPositive : qdot < 0 ? kSlidingNegative : kSticking; }
+  /// The sticking threshold v0 in force at a state: given, or 1% of the largest slip speed seen [m/s].
+  double StickingSpeed(const EffectState& effect) const;
+  FrictionSample Sample(const State& state) const;
+  int variable() const { return variable_; }
+
+ private:
+  // The friction force on q over a step and its derivatives.
+  struct StepForce {
+    double normal = 0;                      ///< N [N]
+    double force = 0;                       ///< Q, the generalised friction force on q [N m or N]
+    double d_dq = 0;                        ///< dQ/dq_f (regularised law)
+    Vec3 d_dlambda = Vec3::Zero();          ///< dQ/d(joint position multipliers)
+  };
+  StepForce Evaluate(const StepContext& ctx) const;
+  // N and dN/d(joint position multipliers) from the multipliers and the motion axis in W.
+  double NormalForce(const Vec3& lambda, const Vec3& axis_W, Vec3* d_dlambda) const;
+  Vec3 AxisW(const State& state) const;
+  // Coulomb bound of the friction force with coefficient mu: mu rho N (or the constant torque).
+  double Bound(double mu, double normal) const;
+  int Direction(int mode) const { return mode == kSlidingPositive ? 1 : mode == kSlidingNegative ? -1 : 0; }
+  // End rate of q from the scheme's relation over the step, 2 dq / h - qdot_i.
+  static double EndRate(const StepContext& ctx, int variable);
+
+  FrictionSpec spec_;
+  int variable_;
+  int parent_node_;
+  Mat3 R_NJ_;
+  Vec3 axis_J_;
+  int joint_multiplier_;       ///< first position multiplier of the joint
+  int stick_multiplier_;       ///< -1 when the law has none
+  int local_joint_multipliers_;  ///< local index of the joint's first position multiplier
+};
+
+}  // namespace flexmbd

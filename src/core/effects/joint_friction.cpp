@@ -1,0 +1,185 @@
+#include "flexmbd/effects/joint_friction.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace flexmbd {
+namespace {
+// Without a given v0 the sticking threshold is this fraction of the largest slip speed seen (issue 5) ...
+constexpr double kAutoStickingFraction = 0.01;
+// ... and at least this [m/s], so a joint that has not slid yet still has a threshold.
+constexpr double kMinAutoStickingSpeed = 1.0e-6;
+// Step-size rule near sticking (docs/theory.md, (F5)): for slip speeds up to band[k] v0 the velocity may
+// change by target[k] v0 per step.
+constexpr double kSpeedBands[] = {2.0, 5.0, 10.0, 20.0};
+constexpr double kSpeedTargets[] = {0.5, 1.0, 2.5, 5.0};
+}  // namespace
+
+JointFriction::JointFriction(const FrictionSpec& spec, const Joint& joint, int variable_unknown, int stick_multiplier,
+                             int stick_multiplier_unknown, int joint_multiplier_unknown, int slot)
+    : ModalEffect(slot),
+      spec_(spec),
+      variable_(joint.first_variable()),
+      parent_node_(joint.parent().node),
+      R_NJ_(joint.parent().R_NJ),
+      axis_J_(joint.kinematics().rotations.empty() ? joint.kinematics().translation_rates_Jp[0]
+                                                   : joint.kinematics().rotations[0].axis_J),
+      joint_multiplier_(joint.first_multiplier()),
+      stick_multiplier_(stick_multiplier) {
+  unknowns_ = {variable_unknown};
+  if (stick_multiplier_ >= 0) unknowns_.push_back(stick_multiplier_unknown);
+  local_joint_multipliers_ = num_local();
+  for (int k = 0; k < 3; ++k) unknowns_.push_back(joint_multiplier_unknown + k);
+}
+
+Vec3 JointFriction::AxisW(const State& state) const {
+  const Mat3 R_WJ = parent_node_ < 0 ? R_NJ_ : Mat3(state.nodes[parent_node_].R * R_NJ_);
+  return R_WJ * axis_J_.normalized();
+}
+
+double JointFriction::NormalForce(const Vec3& lambda, const Vec3& axis_W, Vec3* d_dlambda) const {
+  *d_dlambda = Vec3::Zero();
+  if (spec_.law == FrictionSpec::Law::kConstantTorque) return 0.0;
+  const Vec3 radial = lambda - axis_W * axis_W.dot(lambda);
+  const double magnitude = radial.norm();
+  if (magnitude > 0) *d_dlambda = radial / magnitude;  // d|P l|/dl = P l / |P l| (P symmetric, P P = P)
+  return magnitude + spec_.preload;
+}
+
+double JointFriction::Bound(double mu, double normal) const {
+  return spec_.law == FrictionSpec::Law::kConstantTorque ? spec_.torque : mu * spec_.radius * normal;
+}
+
+double JointFriction::StickingSpeed(const EffectState& effect) const {
+  if (spec_.v0 > 0) return spec_.v0;
+  return std::max(kAutoStickingFraction * effect.reference, kMinAutoStickingSpeed);
+}
+
+double JointFriction::EndRate(const StepContext& ctx, int variable) {
+  const VariableStep& q = (*ctx.variables)[variable];
+  return 2.0 * (q.q_f - q.q_i) / ctx.h - q.qdot_i;
+}
+
+JointFriction::StepForce JointFriction::Evaluate(const StepContext& ctx) const {
+  StepForce f;
+  const int mode = TrialMode(ctx);
+  if (ctx.mode == AnalysisMode::kStatic || (mode == kSticking && spec_.law != FrictionSpec::Law::kRegularised)) {
+    return f;
+  }
+  const Vec3 lambda = ctx.lambda->segment<3>(joint_multiplier_);
+  Vec3 d_normal;
+  f.normal = NormalForce(lambda, AxisW(*ctx.start), &d_normal);
+  if (spec_.law == FrictionSpec::Law::kRegularised) {
+    const VariableStep& q = (*ctx.variables)[variable_];
+    const double v = spec_.radius * (q.q_f - q.q_i) / ctx.h, v0 = spec_.v0;
+    const double sign = v > 0 ? 1.0 : v < 0 ? -1.0 : 0.0;
+    const double shape = 1.0 - std::exp(-std::abs(v) / v0);
+    f.force = -Bound(spec_.mu_k, f.normal) * shape * sign;
+    f.d_dq = -Bound(spec_.mu_k, f.normal) * std::exp(-std::abs(v) / v0) / v0 * spec_.radius / ctx.h;
+    f.d_dlambda = -spec_.mu_k * spec_.radius * shape * sign * d_normal;
+    return f;
+  }
+  const double s = Direction(mode);
+  f.force = -Bound(spec_.mu_k, f.normal) * s;
+  if (spec_.law != FrictionSpec::Law::kConstantTorque) f.d_dlambda = -spec_.mu_k * spec_.radius * s * d_normal;
+  return f;
+}
+
+void JointFriction::AddResidual(const StepContext& ctx, Eigen::Ref<Eigen::VectorXd> r,
+                                Eigen::Ref<Eigen::VectorXd> magnitude) const {
+  const bool sticking = TrialMode(ctx) == kSticking && ctx.mode != AnalysisMode::kStatic;
+  if (stick_multiplier_ >= 0) {
+    const double lambda = (*ctx.lambda)[stick_multiplier_];
+    const VariableStep& q = (*ctx.variables)[variable_];
+    if (sticking) {
+      r[0] += lambda;  // the friction force on q is -lambda
+      magnitude[0] += std::abs(lambda);
+      r[1] += q.q_f - q.q_i;
+    } else {
+      r[1] += lambda;
+    }
+  }
+  const double force = Evaluate(ctx).force;
+  r[0] -= force;
+  magnitude[0] += std::abs(force);
+}
+
+void JointFriction::AddTangent(const StepContext& ctx, Eigen::Ref<Eigen::MatrixXd> J) const {
+  const bool sticking = TrialMode(ctx) == kSticking && ctx.mode != AnalysisMode::kStatic;
+  if (stick_multiplier_ >= 0) {
+    if (sticking) {
+      J(0, 1) += 1.0;
+      J(1, 0) += 1.0;
+    } else {
+      J(1, 1) += 1.0;
+    }
+  }
+  const StepForce f = Evaluate(ctx);
+  J(0, 0) -= f.d_dq;
+  for (int k = 0; k < 3; ++k) J(0, local_joint_multipliers_ + k) -= f.d_dlambda[k];
+}
+
+void JointFriction::AddStepWork(const StepContext& ctx, StepWork* work) const {
+  const VariableStep& q = (*ctx.variables)[variable_];
+  work->dissipated -= Evaluate(ctx).force * (q.q_f - q.q_i);
+}
+
+int JointFriction::ReviseMode(const StepContext& ctx) const {
+  const int mode = TrialMode(ctx);
+  if (spec_.law == FrictionSpec::Law::kRegularised) return mode;
+  if (mode == kSticking) {
+    const double lambda = (*ctx.lambda)[stick_multiplier_];
+    Vec3 unused;
+    const double normal = NormalForce(ctx.lambda->segment<3>(joint_multiplier_), AxisW(*ctx.start), &unused);
+    if (std::abs(lambda) <= Bound(spec_.mu_s, normal)) return mode;
+    return lambda > 0 ? kSlidingPositive : kSlidingNegative;
+  }
+  return Direction(mode) * EndRate(ctx, variable_) < 0 ? kSticking : mode;
+}
+
+StepLimit JointFriction::Limit(const StepContext& ctx, const State& end) const {
+  StepLimit limit;
+  if (spec_.law == FrictionSpec::Law::kRegularised || TrialMode(ctx) == kSticking) return limit;
+  const double v_i = ctx.start->qdot[variable_], v_f = end.qdot[variable_];
+  const double speed = spec_.radius * std::abs(v_f), change = spec_.radius * std::abs(v_f - v_i);
+  const double v0 = StickingSpeed(ctx.start->effects[slot()]);
+  if (std::abs(v_f) >= std::abs(v_i) || change == 0) return limit;  // not slowing down
+  for (int k = 0; k < 4; ++k) {
+    if (speed <= kSpeedBands[k] * v0) {
+      limit.next = ctx.h * kSpeedTargets[k] * v0 / change;
+      break;
+    }
+  }
+  return limit;
+}
+
+void JointFriction::Commit(const StepContext& ctx, const State& end, EffectState* effect) const {
+  const VariableStep& q = (*ctx.variables)[variable_];
+  effect->work -= Evaluate(ctx).force * (q.q_f - q.q_i);
+  const double speed = spec_.radius * std::abs(end.qdot[variable_]);
+  effect->reference = std::max(effect->reference, speed);
+  if (spec_.law == FrictionSpec::Law::kRegularised) return;
+  // A joint slowing down below v0 sticks from the next step on (one speeding up is breaking away).
+  const bool slowing = std::abs(end.qdot[variable_]) < std::abs(ctx.start->qdot[variable_]);
+  if (effect->mode != kSticking && slowing && speed <= StickingSpeed(*effect)) effect->mode = kSticking;
+  if (effect->mode == kSticking && ctx.start->effects[slot()].mode != kSticking) ++effect->events;
+}
+
+FrictionSample JointFriction::Sample(const State& state) const {
+  FrictionSample s;
+  const EffectState& effect = state.effects[slot()];
+  Vec3 unused;
+  s.normal_force = NormalForce(state.lambda.segment<3>(joint_multiplier_), AxisW(state), &unused);
+  s.slip_velocity = spec_.radius * state.qdot[variable_];
+  s.work = effect.work;
+  if (spec_.law == FrictionSpec::Law::kRegularised) {
+    const double v = s.slip_velocity;
+    s.torque = -Bound(spec_.mu_k, s.normal_force) * (1.0 - std::exp(-std::abs(v) / spec_.v0)) * (v > 0 ? 1 : v < 0 ? -1 : 0);
+    return s;
+  }
+  s.sticking = effect.mode == kSticking;
+  s.torque = s.sticking ? -state.lambda[stick_multiplier_] : -Bound(spec_.mu_k, s.normal_force) * Direction(effect.mode);
+  return s;
+}
+
+}  // namespace flexmbd
