@@ -5,8 +5,11 @@
 /// N = |P lambda| + N0, and enters the Newton iteration with its derivative. With slip velocity v = rho qdot:
 ///   sliding   Q = -mu_k rho N s on q, s = +-1 the sliding direction, fixed over a step; a step in which the
 ///             velocity would reverse is redone sticking
-///   sticking  q_f = q_i enforced by a multiplier, the friction force Q = -lambda_t; the joint stays stuck
-///             while |lambda_t| <= mu_s rho N, else the step is redone sliding in the direction of lambda_t
+///   sticking  q_f - q_i = h qdot_i / 2 enforced by a multiplier, the friction force Q = -lambda_t: the end
+///             rate vanishes under the energy-preserving relation (the step that starts sticking absorbs the
+///             kinetic energy of the slip speed below v0; later steps have q_f = q_i and do no work). The joint
+///             stays stuck while |lambda_t| <= mu_s rho N, else the step is redone sliding in the direction of
+///             lambda_t
 /// A sliding joint whose slip speed at the end of a step is below v0 sticks from the next step on. The
 /// regularised law Q = -mu_k rho N (1 - exp(-|v|/v0)) sign(v) has no modes; the constant-torque law (URDF
 /// <dynamics friction>) replaces mu rho N by a fixed bound.
@@ -50,6 +53,10 @@ class JointFriction : public ModalEffect {
     Vec3 d_dlambda = Vec3::Zero();          ///< dQ/d(joint position multipliers)
   };
   StepForce Evaluate(const StepContext& ctx) const;
+  // The sticking constraint's row, q_f - q_i - h qdot_i / 2 [rad or m].
+  double StickingResidual(const StepContext& ctx) const;
+  // Energy the friction dissipates over the step ctx [J].
+  double StepDissipation(const StepContext& ctx) const;
   // N and dN/d(joint position multipliers) from the multipliers and the motion axis in W.
   double NormalForce(const Vec3& lambda, const Vec3& axis_W, Vec3* d_dlambda) const;
   Vec3 AxisW(const State& state) const;

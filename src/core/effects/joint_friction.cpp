@@ -90,11 +90,10 @@ void JointFriction::AddResidual(const StepContext& ctx, Eigen::Ref<Eigen::Vector
   const bool sticking = TrialMode(ctx) == kSticking && ctx.mode != AnalysisMode::kStatic;
   if (stick_multiplier_ >= 0) {
     const double lambda = (*ctx.lambda)[stick_multiplier_];
-    const VariableStep& q = (*ctx.variables)[variable_];
     if (sticking) {
       r[0] += lambda;  // the friction force on q is -lambda
       magnitude[0] += std::abs(lambda);
-      r[1] += q.q_f - q.q_i;
+      r[1] += StickingResidual(ctx);
     } else {
       r[1] += lambda;
     }
@@ -119,9 +118,20 @@ void JointFriction::AddTangent(const StepContext& ctx, Eigen::Ref<Eigen::MatrixX
   for (int k = 0; k < 3; ++k) J(0, local_joint_multipliers_ + k) -= f.d_dlambda[k];
 }
 
-void JointFriction::AddStepWork(const StepContext& ctx, StepWork* work) const {
+double JointFriction::StickingResidual(const StepContext& ctx) const {
   const VariableStep& q = (*ctx.variables)[variable_];
-  work->dissipated -= Evaluate(ctx).force * (q.q_f - q.q_i);
+  return q.q_f - q.q_i - 0.5 * ctx.h * q.qdot_i;
+}
+
+double JointFriction::StepDissipation(const StepContext& ctx) const {
+  const VariableStep& q = (*ctx.variables)[variable_];
+  const bool sticking = TrialMode(ctx) == kSticking && stick_multiplier_ >= 0;
+  const double force = sticking ? -(*ctx.lambda)[stick_multiplier_] : Evaluate(ctx).force;
+  return -force * (q.q_f - q.q_i);
+}
+
+void JointFriction::AddStepWork(const StepContext& ctx, StepWork* work) const {
+  work->dissipated += StepDissipation(ctx);
 }
 
 int JointFriction::ReviseMode(const StepContext& ctx) const {
@@ -154,8 +164,7 @@ StepLimit JointFriction::Limit(const StepContext& ctx, const State& end) const {
 }
 
 void JointFriction::Commit(const StepContext& ctx, const State& end, EffectState* effect) const {
-  const VariableStep& q = (*ctx.variables)[variable_];
-  effect->work -= Evaluate(ctx).force * (q.q_f - q.q_i);
+  effect->work += StepDissipation(ctx);
   const double speed = spec_.radius * std::abs(end.qdot[variable_]);
   effect->reference = std::max(effect->reference, speed);
   if (spec_.law == FrictionSpec::Law::kRegularised) return;

@@ -1,0 +1,231 @@
+// Coulomb friction in joints (docs/theory.md, "Friction"): spin-down, breakaway, the stick-slip oscillator,
+// the regularised law's limit and the normal force from the joint reaction, against closed forms.
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <vector>
+
+#include "case_builders.hpp"
+#include "flexmbd/solver/simulation.hpp"
+
+namespace flexmbd {
+namespace {
+
+struct Recording {
+  std::vector<OutputSample> samples;
+  std::vector<EffectEvent> events;
+};
+
+Recording RunAll(const ModelSpec& spec) {
+  const Model model = BuildModel(spec);
+  Simulation simulation(model);
+  Recording run;
+  simulation.Run([&run](const OutputSample& s) { run.samples.push_back(s); });
+  run.events = simulation.effect_events();
+  return run;
+}
+
+// Rotor J = 0.5 kg m^2 on a frictional revolute joint, no gravity: the normal force is the preload alone.
+constexpr double kInertia = 0.5, kRadius = 0.02, kPreload = 100.0, kMuS = 0.3, kMuK = 0.2;
+constexpr double kKineticTorque = kMuK * kRadius * kPreload;  // 0.4 N m
+constexpr double kStaticTorque = kMuS * kRadius * kPreload;   // 0.6 N m
+
+FrictionSpec Friction(double mu_s, double mu_k, double v0) {
+  FrictionSpec f;
+  f.mu_s = mu_s;
+  f.mu_k = mu_k;
+  f.radius = kRadius;
+  f.preload = kPreload;
+  f.v0 = v0;
+  return f;
+}
+
+ModelSpec FrictionalRotor(double omega0, const FrictionSpec& friction, double t_end) {
+  ModelSpec spec = test::Rotor(kInertia, omega0, t_end);
+  spec.solver.gravity = Vec3::Zero();
+  spec.solver.dt_max = 0.05;
+  spec.output.rate_hz = 0;
+  spec.joints[0].effects[0].frictions = {friction};
+  return spec;
+}
+
+double FirstStickTime(const Recording& run) {
+  for (const EffectEvent& e : run.events) {
+    if (e.to == JointFriction::kSticking) return e.t;
+  }
+  return -1;
+}
+
+TEST(Friction, SpinDownStopsAtAnalyticTimeAndStaysStuck) {
+  constexpr double kOmega0 = 10.0, kV0 = 1.0e-4;
+  const Recording run = RunAll(FrictionalRotor(kOmega0, Friction(kMuS, kMuK, kV0), 15.0));
+  const double t_star = kInertia * kOmega0 / kKineticTorque;  // 12.5 s
+  // Sticking begins once the slip speed is below v0, at most v0 / (rho * deceleration) = 6e-3 s before t*;
+  // 1e-3 t* (the issue asks for 1%) bounds it.
+  constexpr double kStopTimeTolerance = 1.0e-3;
+  EXPECT_NEAR(FirstStickTime(run), t_star, kStopTimeTolerance * t_star);
+  const double e0 = run.samples.front().total();
+  for (const OutputSample& s : run.samples) {
+    // The energy-preserving scheme and the friction's work over each step close the books to the Newton
+    // tolerance (1e-12) over ~1000 steps: 1e-9 relative.
+    constexpr double kEnergyTolerance = 1.0e-9;
+    EXPECT_NEAR(s.total() + s.friction[0].work, e0, kEnergyTolerance * e0) << "t = " << s.t;
+    if (s.t > t_star + 1e-9) {
+      EXPECT_TRUE(s.friction[0].sticking) << "t = " << s.t;
+      // The sticking step ends at rest, to the Newton tolerance (1e-12) on increments of the scale omega0 h.
+      constexpr double kRestTolerance = 1.0e-11;  // [rad/s]
+      EXPECT_NEAR(s.velocity[0], 0.0, kRestTolerance) << "t = " << s.t;
+    }
+  }
+}
+
+TEST(Friction, EqualCoefficientsGivePlainCoulomb) {
+  constexpr double kOmega0 = 10.0, kV0 = 1.0e-4;
+  const Recording run = RunAll(FrictionalRotor(kOmega0, Friction(kMuK, kMuK, kV0), 15.0));
+  const double t_star = kInertia * kOmega0 / kKineticTorque;
+  constexpr double kStopTimeTolerance = 1.0e-3;  // as in the spin-down test
+  EXPECT_NEAR(FirstStickTime(run), t_star, kStopTimeTolerance * t_star);
+  EXPECT_TRUE(run.samples.back().friction[0].sticking);
+}
+
+TEST(Friction, BreakawayWhenTorqueExceedsStaticBound) {
+  // A moment ramp M = c t from rest: stuck until c t_b = mu_s rho N, then sliding under mu_k:
+  // J omega(t) = c (t^2 - t_b^2) / 2 - T_k (t - t_b).
+  constexpr double kRate = 1.0, kEnd = 1.0, kStep = 1.0e-3;
+  ModelSpec spec = FrictionalRotor(0.0, Friction(kMuS, kMuK, 1.0e-4), kEnd);
+  spec.solver.dt_max = kStep;
+  LoadSpec moment;
+  moment.body = "link";
+  moment.kind = LoadSpec::Kind::kMoment;
+  moment.vector = Vec3(0, kRate, 0);
+  moment.scale.kind = TimeFunctionSpec::Kind::kLinearRamp;
+  moment.scale.value = kEnd;
+  moment.scale.duration = kEnd;
+  spec.loads.push_back(moment);
+  const Recording run = RunAll(spec);
+  const double t_b = kStaticTorque / kRate;
+  for (const OutputSample& s : run.samples) {
+    if (s.t < t_b - kStep) {
+      EXPECT_TRUE(s.friction[0].sticking) << "t = " << s.t;
+      // The sticking multiplier balances the step's mean (mid-step) moment, to round-off.
+      EXPECT_NEAR(s.friction[0].torque, -kRate * (s.t - s.dt / 2), 1e-12) << "t = " << s.t;
+    }
+    if (s.t > t_b + kStep) EXPECT_FALSE(s.friction[0].sticking) << "t = " << s.t;
+  }
+  const double expected = (kRate * (kEnd * kEnd - t_b * t_b) / 2 - kKineticTorque * (kEnd - t_b)) / kInertia;
+  // Breakaway is found at the end of the step in which the bound is passed: at most one step late, which
+  // costs (c t_b - T_k) h / J of speed.
+  const double tolerance = (kRate * t_b - kKineticTorque) * kStep / kInertia;
+  EXPECT_NEAR(run.samples.back().velocity[0], expected, tolerance);
+}
+
+TEST(Friction, StickSlipOscillatorMatchesPiecewiseSolution) {
+  // Mass m on a prismatic joint, gravity across it (N = m g from the joint reaction), spring k to a point
+  // moving at V (a spring on the joint plus the force k V t). Slip starts at k (V t - x) = F_s; during slip
+  // u = x - V t + F_k / k obeys m u'' = -k u from u0 = -(F_s - F_k) / k, u0' = -V, and ends when x' = 0:
+  // w t_slip = 2 pi - 2 atan(A / V), A = (F_s - F_k) w / k, slip distance 2 (F_s - F_k) / k + V t_slip,
+  // then the stick lasts 2 (F_s - F_k) / (k V).
+  constexpr double kMassKg = 1.0, kSpring = 100.0, kSpeed = 0.1, kG = 9.81, kStaticMu = 0.4, kKineticMu = 0.3;
+  ModelSpec spec = test::Slider(kMassKg, 0.0, 2.2);
+  spec.output.rate_hz = 0;
+  spec.solver.dt_max = 1.0e-3;
+  spec.joints[0].effects[0].springs = {{kSpring, 0.0}};
+  FrictionSpec friction;
+  friction.mu_s = kStaticMu;
+  friction.mu_k = kKineticMu;
+  friction.v0 = 1.0e-5;
+  spec.joints[0].effects[0].frictions = {friction};
+  LoadSpec pull;
+  pull.body = "mass";
+  pull.vector = Vec3(kSpring * kSpeed, 0, 0);
+  pull.scale.kind = TimeFunctionSpec::Kind::kLinearRamp;
+  pull.scale.value = 10.0;
+  pull.scale.duration = 10.0;
+  spec.loads.push_back(pull);
+  const Recording run = RunAll(spec);
+
+  const double f_s = kStaticMu * kMassKg * kG, f_k = kKineticMu * kMassKg * kG, w = std::sqrt(kSpring / kMassKg);
+  const double a = (f_s - f_k) * w / kSpring;
+  const double t_slip = (2 * M_PI - 2 * std::atan(a / kSpeed)) / w;
+  const double slip_distance = 2 * (f_s - f_k) / kSpring + kSpeed * t_slip;
+  const double t_stick = 2 * (f_s - f_k) / (kSpring * kSpeed);
+  // Sticking intervals from the events: [stick begins, stick ends].
+  std::vector<std::pair<double, double>> sticks;
+  double begin = 0;
+  for (const EffectEvent& e : run.events) {
+    if (e.to == JointFriction::kSticking) begin = e.t;
+    if (e.from == JointFriction::kSticking) sticks.emplace_back(begin, e.t);
+  }
+  ASSERT_GE(sticks.size(), 3u);
+  EXPECT_NEAR(sticks[0].second, f_s / (kSpring * kSpeed), 2e-3) << "first breakaway at k V t = F_s";
+  auto position_at = [&run](double t) {
+    for (size_t k = 1; k < run.samples.size(); ++k) {
+      if (run.samples[k].t >= t - 1e-12) return run.samples[k].position[0];
+    }
+    return run.samples.back().position[0];
+  };
+  // The issue's bound is 2%; the transitions are located to within about one step (1e-3 s of 0.2-0.5 s, with
+  // the v0 step rule shrinking the steps before sticking): 1%.
+  constexpr double kPiecewiseTolerance = 0.01;
+  for (size_t k = 1; k + 1 < sticks.size(); ++k) {
+    EXPECT_NEAR(sticks[k].second - sticks[k].first, t_stick, kPiecewiseTolerance * t_stick) << "stick " << k;
+    EXPECT_NEAR(sticks[k].first - sticks[k - 1].second, t_slip, kPiecewiseTolerance * t_slip) << "slip " << k;
+    const double distance = position_at(sticks[k].first) - position_at(sticks[k - 1].second);
+    EXPECT_NEAR(distance, slip_distance, kPiecewiseTolerance * slip_distance) << "slip " << k;
+  }
+  // Normal force from the reaction: the weight.
+  EXPECT_NEAR(run.samples.back().friction[0].normal_force, kMassKg * kG, 1e-9 * kMassKg * kG);
+  // Energy books: mechanical energy + friction work - work of the pull = initial energy.
+  const OutputSample& last = run.samples.back();
+  constexpr double kBookTolerance = 1.0e-8;  // J; Newton tolerance 1e-12 over ~3000 steps of ~0.05 J
+  EXPECT_NEAR(last.total() + last.friction[0].work - last.external_work, run.samples.front().total(), kBookTolerance);
+}
+
+TEST(Friction, RegularisedLawApproachesCoulombAsSpeedShrinks) {
+  // omega at 0.9 t* against Coulomb's omega0 - T_k t / J, for shrinking v0.
+  constexpr double kOmega0 = 10.0;
+  const double t_check = 0.9 * kInertia * kOmega0 / kKineticTorque;
+  const double coulomb = kOmega0 - kKineticTorque * t_check / kInertia;
+  std::vector<double> errors;
+  for (double v0 : {1.0e-2, 2.0e-3, 4.0e-4}) {
+    FrictionSpec f = Friction(kMuK, kMuK, v0);
+    f.law = FrictionSpec::Law::kRegularised;
+    ModelSpec spec = FrictionalRotor(kOmega0, f, t_check);
+    spec.solver.dt_max = 0.01;
+    errors.push_back(std::abs(RunAll(spec).samples.back().velocity[0] - coulomb));
+  }
+  EXPECT_LT(errors[1], errors[0]);
+  EXPECT_LT(errors[2], errors[1]);
+  // At v0 = 4e-4 m/s the torque deficit exp(-rho omega / v0) is below e^-50 until omega < 1 rad/s: what is
+  // left is the time discretisation of the smooth law, 1e-3 of the final speed.
+  constexpr double kLimitTolerance = 1.0e-3;
+  EXPECT_LT(errors[2], kLimitTolerance * coulomb);
+}
+
+TEST(Friction, NormalForceOfAStuckPendulumIsItsWeightPlusPreload) {
+  // A pendulum held by static friction at rest: the pivot carries the weight m g (hand balance of the body),
+  // perpendicular to the hinge axis, so N = m g + N0, and the friction torque balances m g a.
+  constexpr double kMassKg = 1.0, kArm = 0.5, kG = 9.81, kRaceRadius = 0.05, kHoldPreload = 500.0;
+  ModelSpec spec = test::Pendulum(kMassKg, kArm, 0.01);
+  spec.solver.integrator = SolverSpec::Integrator::kEnergyPreserving;
+  spec.solver.t_end = 0.2;
+  spec.solver.tol = 1.0e-12;
+  FrictionSpec f;
+  f.mu_s = f.mu_k = 0.3;
+  f.radius = kRaceRadius;
+  f.preload = kHoldPreload;
+  f.v0 = 1.0e-4;
+  spec.joints[0].effects[0].frictions = {f};
+  const Recording run = RunAll(spec);
+  for (size_t k = 1; k < run.samples.size(); ++k) {
+    const FrictionSample& s = run.samples[k].friction[0];
+    EXPECT_TRUE(s.sticking);
+    // Static balances solved to the Newton tolerance: 1e-9 relative.
+    EXPECT_NEAR(s.normal_force, kMassKg * kG + kHoldPreload, 1e-9 * kHoldPreload);
+    EXPECT_NEAR(std::abs(s.torque), kMassKg * kG * kArm, 1e-9 * kMassKg * kG * kArm);
+  }
+}
+
+}  // namespace
+}  // namespace flexmbd
