@@ -93,6 +93,22 @@ TEST(UrdfReader, DynamicsDampingBecomesDamper) {
   EXPECT_TRUE(Joint(spec, "B2").effects[0].dampers.empty());
 }
 
+TEST(UrdfReader, DynamicsFrictionBecomesConstantBoundFriction) {
+  const ModelSpec spec = LoadUrdfOnly("double_pendulum.urdf");
+  const JointSpec& b1 = Joint(spec, "B1");
+  ASSERT_EQ(b1.effects[0].frictions.size(), 1u);
+  EXPECT_EQ(b1.effects[0].frictions[0].law, FrictionSpec::Law::kConstantTorque);
+  EXPECT_EQ(b1.effects[0].frictions[0].torque, 0.1);
+  EXPECT_TRUE(Joint(spec, "B2").effects[0].frictions.empty());
+}
+
+TEST(UrdfReader, LimitGivesStopPositions) {
+  const JointSpec& b1 = Joint(LoadUrdfOnly("double_pendulum.urdf"), "B1");
+  EXPECT_TRUE(b1.has_limits);
+  EXPECT_EQ(b1.limit_lower, -3.0);
+  EXPECT_EQ(b1.limit_upper, 3.0);
+}
+
 TEST(UrdfReader, JointTypesMapToSpecTypes) {
   const std::string urdf = test::WorldUrdf({"a", "b", "c", "d"}, R"(
     <joint name="j_rev" type="revolute"><parent link="world"/><child link="a"/><axis xyz="0 0 1"/>

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "case_builders.hpp"
+#include "flexmbd/common/error.hpp"
 #include "flexmbd/solver/simulation.hpp"
 
 namespace flexmbd {
@@ -225,6 +226,28 @@ TEST(Friction, NormalForceOfAStuckPendulumIsItsWeightPlusPreload) {
     EXPECT_NEAR(s.normal_force, kMassKg * kG + kHoldPreload, 1e-9 * kHoldPreload);
     EXPECT_NEAR(std::abs(s.torque), kMassKg * kG * kArm, 1e-9 * kMassKg * kG * kArm);
   }
+}
+
+TEST(Friction, CoreRejectsNonphysicalSettings) {
+  auto message = [](const FrictionSpec& f) {
+    try {
+      BuildModel(FrictionalRotor(0.0, f, 1.0));
+    } catch (const ConfigError& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  EXPECT_EQ(message(Friction(0.1, 0.2, 0.0)),
+            "rotor (test): joint 'pivot': friction: mu_s: 0.1 is out of range; expected a static coefficient >= mu_k "
+            "(0.200000)");
+  FrictionSpec negative_radius = Friction(0.3, 0.2, 0.0);
+  negative_radius.radius = -1.0;
+  EXPECT_EQ(message(negative_radius),
+            "rotor (test): joint 'pivot': friction: radius: -1 is out of range; expected a race radius > 0 [m]");
+  FrictionSpec regularised = Friction(0.2, 0.2, 0.0);
+  regularised.law = FrictionSpec::Law::kRegularised;
+  EXPECT_EQ(message(regularised), "rotor (test): joint 'pivot': friction: v0: 0 is out of range; expected a "
+                                  "regularisation speed > 0 [m/s] for the regularised law");
 }
 
 }  // namespace

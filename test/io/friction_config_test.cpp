@@ -1,0 +1,52 @@
+// The `friction` block of a joint (src/io/yaml_friction.cpp, docs/config.md "friction"); values as written.
+
+#include <gtest/gtest.h>
+
+#include "io_test_util.hpp"
+
+namespace flexmbd {
+namespace {
+
+const std::string kHingeUrdf = test::WorldUrdf({"link"}, R"(
+  <joint name="hinge" type="continuous"><parent link="world"/><child link="link"/><axis xyz="0 0 1"/></joint>)");
+
+TEST(FrictionConfig, CoulombBlockRead) {
+  const ModelSpec spec = test::LoadInline(
+      kHingeUrdf, "joints: {hinge: {friction: {mu_s: 0.2, mu_k: 0.15, radius: 0.02, preload: 1.25, v0: 8.0e-6}}}");
+  const FrictionSpec& f = spec.joints.at(0).effects.at(0).frictions.at(0);
+  EXPECT_EQ(f.law, FrictionSpec::Law::kCoulombStick);
+  EXPECT_EQ(f.mu_s, 0.2);
+  EXPECT_EQ(f.mu_k, 0.15);
+  EXPECT_EQ(f.radius, 0.02);
+  EXPECT_EQ(f.preload, 1.25);
+  EXPECT_EQ(f.v0, 8.0e-6);
+}
+
+TEST(FrictionConfig, StaticCoefficientDefaultsToKinetic) {
+  const ModelSpec spec = test::LoadInline(kHingeUrdf, "joints: {hinge: {friction: {mu_k: 0.15}}}");
+  const FrictionSpec& f = spec.joints.at(0).effects.at(0).frictions.at(0);
+  EXPECT_EQ(f.mu_s, 0.15);
+  EXPECT_EQ(f.v0, 0.0);  // 0: the automatic threshold
+}
+
+TEST(FrictionConfig, RegularisedLawRead) {
+  const ModelSpec spec =
+      test::LoadInline(kHingeUrdf, "joints: {hinge: {friction: {law: regularised, mu_k: 0.1, v0: 1.0e-3}}}");
+  EXPECT_EQ(spec.joints.at(0).effects.at(0).frictions.at(0).law, FrictionSpec::Law::kRegularised);
+}
+
+TEST(FrictionConfig, RadiusOnPrismaticJointIsRejected) {
+  const std::string slider = test::WorldUrdf({"link"}, R"(
+    <joint name="slide" type="prismatic"><parent link="world"/><child link="link"/><axis xyz="1 0 0"/>
+      <limit lower="-1" upper="1" effort="1" velocity="1"/></joint>)");
+  try {
+    test::LoadInline(slider, "joints: {slide: {friction: {mu_k: 0.1, radius: 0.1}}}");
+    FAIL() << "expected a ConfigError";
+  } catch (const ConfigError& e) {
+    EXPECT_NE(std::string(e.what()).find("joints.slide.friction.radius: applies only to rotations"), std::string::npos)
+        << e.what();
+  }
+}
+
+}  // namespace
+}  // namespace flexmbd
