@@ -13,6 +13,11 @@ constexpr double kMinAutoStickingSpeed = 1.0e-6;
 // change by target[k] v0 per step.
 constexpr double kSpeedBands[] = {2.0, 5.0, 10.0, 20.0};
 constexpr double kSpeedTargets[] = {0.5, 1.0, 2.5, 5.0};
+// A slip that reverses within a step sticks there if its speed at the start was at most this many v0 (the
+// impulse that stops it is then of the order of the friction force times the step); a faster one is
+// redone shorter, ending at kLanding of the interpolated stop.
+constexpr double kCaptureSpeeds = 2.0;
+constexpr double kLanding = 0.98;
 }  // namespace
 
 JointFriction::JointFriction(const FrictionSpec& spec, const Joint& joint, int variable_unknown, int stick_multiplier,
@@ -138,19 +143,32 @@ int JointFriction::ReviseMode(const StepContext& ctx) const {
   const int mode = TrialMode(ctx);
   if (spec_.law == FrictionSpec::Law::kRegularised) return mode;
   if (mode == kSticking) {
+    // The step that starts sticking absorbs the slip below v0 whatever force that takes (F3); the static bound
+    // applies from the next step on, when the multiplier is the force holding the joint at rest.
+    if (ctx.start->effects[slot()].mode != kSticking) return mode;
     const double lambda = (*ctx.lambda)[stick_multiplier_];
     Vec3 unused;
     const double normal = NormalForce(ctx.lambda->segment<3>(joint_multiplier_), AxisW(*ctx.start), &unused);
     if (std::abs(lambda) <= Bound(spec_.mu_s, normal)) return mode;
     return lambda > 0 ? kSlidingPositive : kSlidingNegative;
   }
-  return Direction(mode) * EndRate(ctx, variable_) < 0 ? kSticking : mode;
+  // A slip that reverses within the step sticks in it if it was slow enough to stick; a faster one is located
+  // first (Limit).
+  const double slip_i = spec_.radius * std::abs((*ctx.variables)[variable_].qdot_i);
+  const bool slow = slip_i <= kCaptureSpeeds * StickingSpeed(ctx.start->effects[slot()]);
+  return Direction(mode) * EndRate(ctx, variable_) < 0 && slow ? kSticking : mode;
 }
 
 StepLimit JointFriction::Limit(const StepContext& ctx, const State& end) const {
   StepLimit limit;
   if (spec_.law == FrictionSpec::Law::kRegularised || TrialMode(ctx) == kSticking) return limit;
   const double v_i = ctx.start->qdot[variable_], v_f = end.qdot[variable_];
+  const double v_end = EndRate(ctx, variable_);
+  if (Direction(TrialMode(ctx)) * v_end < 0) {
+    // Redo the step to end just before the slip stops (linear in the rate), where it can stick gently.
+    limit.retry = kLanding * ctx.h * std::abs(v_i) / (std::abs(v_i) + std::abs(v_end));
+    return limit;
+  }
   const double speed = spec_.radius * std::abs(v_f), change = spec_.radius * std::abs(v_f - v_i);
   const double v0 = StickingSpeed(ctx.start->effects[slot()]);
   if (std::abs(v_f) >= std::abs(v_i) || change == 0) return limit;  // not slowing down

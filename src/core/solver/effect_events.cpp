@@ -6,6 +6,23 @@
 
 namespace flexmbd {
 namespace {
+// At most this many intervals are listed per effect: the first ones and the last one.
+constexpr size_t kListedIntervals = 6;
+
+// " [a, b] [c, d] ... [y, z] s", eliding the middle of long lists.
+std::string ListIntervals(const std::vector<std::pair<double, double>>& intervals) {
+  std::ostringstream out;
+  for (size_t k = 0; k < intervals.size(); ++k) {
+    if (k + 1 == kListedIntervals && intervals.size() > kListedIntervals) {
+      out << " ...";
+      k = intervals.size() - 1;
+    }
+    out << " [" << intervals[k].first << ", " << intervals[k].second << ']';
+  }
+  if (!intervals.empty()) out << " s";
+  return out.str();
+}
+
 // Intervals of one effect in `mode`, from its events in time order; one still open ends at t_end.
 std::vector<std::pair<double, double>> Intervals(const std::vector<EffectEvent>& events, int effect, int mode,
                                                  int initial_mode, double t_end) {
@@ -31,9 +48,7 @@ std::string DescribeEffectIntervals(const Model& model, const std::vector<Effect
     const auto intervals =
         Intervals(events, slot, JointStop::kContact, model.initial_state().effects[slot].mode, t_end);
     out << "stop " << model.stops()[k].joint << ' ' << model.stops()[k].stop << ": " << intervals.size()
-        << " contact interval(s)";
-    for (const auto& [begin, end] : intervals) out << " [" << begin << ", " << end << ']';
-    out << (intervals.empty() ? "\n" : " s\n");
+        << " contact interval(s)" << ListIntervals(intervals) << '\n';
   }
   for (size_t k = 0; k < model.frictions().size(); ++k) {
     const JointFriction& friction = *model.friction_effects()[k];
@@ -42,9 +57,8 @@ std::string DescribeEffectIntervals(const Model& model, const std::vector<Effect
         Intervals(events, slot, JointFriction::kSticking, model.initial_state().effects[slot].mode, t_end);
     out << "friction " << model.frictions()[k].joint << ": sticking threshold v0 = "
         << friction.StickingSpeed(state.effects[slot]) << " m/s, largest slip speed " << state.effects[slot].reference
-        << " m/s, dissipated " << state.effects[slot].work << " J, " << intervals.size() << " sticking interval(s)";
-    for (const auto& [begin, end] : intervals) out << " [" << begin << ", " << end << ']';
-    out << (intervals.empty() ? "\n" : " s\n");
+        << " m/s, dissipated " << state.effects[slot].work << " J, " << intervals.size() << " sticking interval(s)"
+        << ListIntervals(intervals) << '\n';
   }
   return out.str();
 }
