@@ -7,6 +7,11 @@
 #include "flexmbd/model/model.hpp"
 
 namespace flexmbd {
+namespace {
+// Column suffixes of one beam station, in BeamStationSample order (load, strain, displacement, rotation).
+const char* const kStationColumns[18] = {"N",  "V2", "V3", "T",  "M2", "M3", "e1", "g2", "g3",
+                                         "k1", "k2", "k3", "ux", "uy", "uz", "rx", "ry", "rz"};
+}  // namespace
 
 CsvSink::CsvSink(const Model& model, const std::string& path) : out_(path) {
   if (!out_) throw ConfigError("output.csv: cannot open '" + path + "' for writing; expected a writable file path");
@@ -17,6 +22,11 @@ CsvSink::CsvSink(const Model& model, const std::string& path) : out_(path) {
   for (const Joint* joint : model.joints()) {
     for (const char* axis : {"x", "y", "z"}) out_ << ",joint." << joint->name() << ".reaction_force_" << axis;
     for (const char* axis : {"x", "y", "z"}) out_ << ",joint." << joint->name() << ".reaction_moment_" << axis;
+  }
+  for (const BeamStationInfo& station : model.beam_stations()) {
+    for (const char* column : kStationColumns) {
+      out_ << ",beam." << station.beam << ".s" << station.index << "." << column;
+    }
   }
   out_ << ",energy.kinetic,energy.potential,energy.total,energy.external_work,energy.dissipated,"
           "energy.numerical_dissipation,solver.dt,solver.iterations\n";
@@ -29,6 +39,12 @@ void CsvSink::Write(const OutputSample& s) {
     const Vec3& f = s.reaction_force_W[k];
     const Vec3& m = s.reaction_moment[k];
     out_ << ',' << f.x() << ',' << f.y() << ',' << f.z() << ',' << m.x() << ',' << m.y() << ',' << m.z();
+  }
+  for (const BeamStationSample& b : s.beam_stations) {
+    for (int k = 0; k < 6; ++k) out_ << ',' << b.load[k];
+    for (int k = 0; k < 6; ++k) out_ << ',' << b.strain[k];
+    for (int k = 0; k < 3; ++k) out_ << ',' << b.displacement[k];
+    for (int k = 0; k < 3; ++k) out_ << ',' << b.rotation[k];
   }
   out_ << ',' << s.kinetic << ',' << s.potential << ',' << s.total() << ',' << s.external_work << ',' << s.dissipated
        << ',' << s.numerical_dissipation << ',' << s.dt << ',' << s.iterations << '\n';

@@ -1,0 +1,123 @@
+// Beam damping, section offsets, distributed loads and station outputs from YAML (src/io/yaml_beams.cpp,
+// yaml_loads.cpp, yaml_beam_stations.cpp; docs/config.md). Reference: the values written below.
+
+#include <gtest/gtest.h>
+
+#include "flexmbd/io/config_loader.hpp"
+#include "flexmbd/model/model.hpp"
+#include "io_test_util.hpp"
+
+namespace flexmbd {
+namespace {
+using test::ConfigErrorOf;
+using test::LoadDataUrdf;
+
+const char kArmYaml[] = R"(
+beams:
+  arm:
+    length: 1.0
+    elements: 2
+    damping: 0.002
+    section: {EA: 1.0e7, GA2: 4.0e6, GA3: 4.0e6, GJ: 50.0, EI2: 80.0, EI3: 100.0, m: 2.5, m_ii: [0.002, 0.001, 0.001],
+              offsets: {cg: [0.01, -0.02], shear_center: [0.03, 0.04]}}
+output: {beam_stations: {arm: [0.0, 0.25, 1.0]}}
+loads:
+  - {body: arm, force: [0.0, 0.0, -2.0], distributed: true, frame: body}
+)";
+
+std::string Replaced(const std::string& from, const std::string& to) {
+  std::string yaml = kArmYaml;
+  yaml.replace(yaml.find(from), from.size(), to);
+  return yaml;
+}
+
+std::string ErrorOf(const std::string& yaml) {
+  return ConfigErrorOf([&] { LoadDataUrdf("beam_arm.urdf", yaml, "arm.yaml"); });
+}
+
+TEST(BeamExtensionsConfig, DampingOffsetsLoadsAndStationsAreRead) {
+  const ModelSpec spec = LoadDataUrdf("beam_arm.urdf", kArmYaml, "arm.yaml");
+  const BeamSpec& beam = spec.beams[0];
+  EXPECT_EQ(beam.damping, 0.002);
+  EXPECT_EQ(beam.section.cg_offset, Eigen::Vector2d(0.01, -0.02));
+  EXPECT_EQ(beam.section.shear_center_offset, Eigen::Vector2d(0.03, 0.04));
+  ASSERT_EQ(spec.loads.size(), 1u);
+  EXPECT_TRUE(spec.loads[0].distributed);
+  EXPECT_EQ(spec.loads[0].frame, LoadSpec::Frame::kBody);
+  EXPECT_EQ(spec.output.beam_stations.at("arm"), (std::vector<double>{0.0, 0.25, 1.0}));
+  // The model samples them on their elements: 0.25 m lies in the first of two 0.5 m elements.
+  const Model model = BuildModel(spec);
+  ASSERT_EQ(model.beam_stations().size(), 3u);
+  EXPECT_EQ(model.beam_stations()[1].element, model.beams()[0].elements[0]);
+  EXPECT_DOUBLE_EQ(model.beam_stations()[1].s_element, 0.25);
+  EXPECT_EQ(model.beam_stations()[2].element, model.beams()[0].elements[1]);
+}
+
+TEST(BeamExtensionsConfig, NegativeDampingNamesTheField) {
+  const std::string message = ErrorOf(Replaced("damping: 0.002", "damping: -0.1"));
+  EXPECT_NE(message.find("arm.yaml: beams.arm.damping: -0.1 is negative; expected a damping time mu >= 0 [s]"),
+            std::string::npos)
+      << message;
+}
+
+TEST(BeamExtensionsConfig, StationBeyondTheTipNamesTheEntry) {
+  const std::string message = ErrorOf(Replaced("[0.0, 0.25, 1.0]", "[0.0, 1.5]"));
+  EXPECT_NE(message.find("arm.yaml: output.beam_stations.arm[1]: 1.5 is beyond the tip; expected 0 <= s <= 1 [m]"),
+            std::string::npos)
+      << message;
+}
+
+TEST(BeamExtensionsConfig, NegativeStationNamesTheEntry) {
+  const std::string message = ErrorOf(Replaced("[0.0, 0.25, 1.0]", "[-0.5]"));
+  EXPECT_NE(message.find("arm.yaml: output.beam_stations.arm[0]: -0.5 is negative; expected a distance from the root"),
+            std::string::npos)
+      << message;
+}
+
+TEST(BeamExtensionsConfig, StationsOnUnknownBeamListTheBeams) {
+  const std::string message = ErrorOf(Replaced("{arm: [0.0, 0.25, 1.0]}", "{boom: [0.5]}"));
+  EXPECT_NE(message.find("arm.yaml: output.beam_stations.boom: no beam 'boom'"), std::string::npos) << message;
+  EXPECT_NE(message.find("arm"), std::string::npos) << message;
+}
+
+TEST(BeamExtensionsConfig, MalformedCentreOfMassOffsetNamesTheField) {
+  const std::string message = ErrorOf(Replaced("cg: [0.01, -0.02]", "cg: [0.01, -0.02, 0.0]"));
+  EXPECT_NE(message.find("arm.yaml: beams.arm.section.offsets.cg: 3 numbers; expected [y, z], the offset in the "
+                         "section frame [m]"),
+            std::string::npos)
+      << message;
+}
+
+TEST(BeamExtensionsConfig, UnknownOffsetKeyIsRejected) {
+  const std::string message = ErrorOf(Replaced("shear_center:", "shear_centre:"));
+  EXPECT_NE(message.find("arm.yaml: beams.arm.section.offsets.shear_centre: unknown key"), std::string::npos)
+      << message;
+}
+
+TEST(BeamExtensionsConfig, DistributedLoadOnARigidBodyIsRejected) {
+  const std::string message = ErrorOf(Replaced("body: arm,", "body: tip,"));
+  EXPECT_NE(message.find("arm.yaml: loads[0].distributed: true on 'tip', which is not a beam; expected a link "
+                         "under beams:"),
+            std::string::npos)
+      << message;
+}
+
+TEST(BeamExtensionsConfig, DistributedLoadWithAPointIsRejected) {
+  const std::string message = ErrorOf(Replaced("distributed: true,", "distributed: true, point: [0.5, 0, 0],"));
+  EXPECT_NE(message.find("arm.yaml: loads[0].point: is given for a distributed load; expected no point"),
+            std::string::npos)
+      << message;
+}
+
+TEST(BeamExtensionsConfig, StationsOffTheBeamAreRejectedAtModelBuild) {
+  // Hand-written specs skip the YAML checks; the model build repeats them.
+  ModelSpec spec = LoadDataUrdf("beam_arm.urdf", kArmYaml, "arm.yaml");
+  spec.output.beam_stations["arm"] = {2.0};
+  const std::string message = ConfigErrorOf([&] { BuildModel(spec); });
+  EXPECT_NE(message.find("output.beam_stations.arm[0]: 2 is off the beam; expected 0 <= s <= 1 [m]"),
+            std::string::npos)
+      << message;
+}
+
+}  // namespace
+}  // namespace flexmbd
