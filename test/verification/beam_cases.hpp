@@ -1,6 +1,7 @@
 #pragma once
 // Hand-written beam models shared by the beam verification tests.
 
+#include <cstdio>
 #include <string>
 
 #include "flexmbd/model/model_spec.hpp"
@@ -61,6 +62,13 @@ inline LoadSpec DistributedLoad(LoadSpec::Kind kind, LoadSpec::Frame frame, cons
   LoadSpec load = BeamLoad(kind, frame, per_length);
   load.distributed = true;
   return load;
+}
+
+// A measured figure for RecordProperty, in scientific notation.
+inline std::string Figure(double value) {
+  char text[32];
+  std::snprintf(text, sizeof(text), "%.3e", value);
+  return text;
 }
 
 }  // namespace test

@@ -41,6 +41,7 @@ NodeState NodeFromBody(const BodySpec& body) {
   n.w = body.R_WB.transpose() * body.w_WB_W;
   return n;
 }
+
 // A lumped mass's own node at its centre of mass p_NC (in the node frame), moving rigidly with the beam node.
 NodeState OffsetNode(const NodeState& beam_node, const Vec3& p_NC) {
   NodeState n = beam_node;
