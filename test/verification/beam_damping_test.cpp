@@ -90,17 +90,9 @@ Release ReleaseFromTipLoad(double t_end) {
   return r;
 }
 
-TEST(BeamDamping, ReleasedCantileverDecaysAtZetaOmegaAndBalancesEnergy) {
-  const Release r = ReleaseFromTipLoad(3.0);
-  // Energy books: E - E0 = W_ext - D exactly per step (the damping forces do -mu de^T C de / h over every
-  // step, booked as dissipated), up to the Newton tolerance 1e-10 relative per step over 3000 steps.
-  constexpr double kBalanceTolerance = 1.0e-6;
-  EXPECT_LT(r.worst_balance, kBalanceTolerance * r.initial_energy);
-  // Most of the energy is gone after 3 s (exp(-2 zeta w t) = 0.12 for the first mode).
-  EXPECT_GT(r.dissipated, 0.8 * r.initial_energy);
-  // Decay rate zeta w = mu w^2 / 2 of the first mode from the peaks of the tip motion after 0.5 s (the second
-  // mode, damped 39 times faster, is then below 1e-3 of its start). The scheme's error on the decay rate is
-  // O((w h)^2) = 1e-3 and the sampled peaks are within (w h)^2 / 2 of the true ones: 1% covers both.
+// Decay rate of the first mode relative to zeta w = mu w^2 / 2, from the peaks of the tip motion after 0.5 s
+// (the second mode, damped 39 times faster, is then below 1e-3 of its start).
+double DecayRateRatio(const Release& r) {
   std::vector<double> peak_t, peak_log;
   for (size_t k = 1; k + 1 < r.t.size(); ++k) {
     if (r.t[k] < 0.5) continue;
@@ -109,12 +101,28 @@ TEST(BeamDamping, ReleasedCantileverDecaysAtZetaOmegaAndBalancesEnergy) {
       peak_log.push_back(std::log(r.tip_z[k]));
     }
   }
-  ASSERT_GE(peak_t.size(), 10u);
+  EXPECT_GE(peak_t.size(), 10u);
+  if (peak_t.size() < 2) return 0.0;
   const double rate = -(peak_log.back() - peak_log.front()) / (peak_t.back() - peak_t.front());
   const double omega = 1.8751 * 1.8751 * std::sqrt(kEI / kMass);
-  constexpr double kRateTolerance = 0.01;
-  EXPECT_NEAR(rate / (kMu * omega * omega / 2), 1.0, kRateTolerance);
-  RecordProperty("decay_rate_error", test::Figure(rate / (kMu * omega * omega / 2) - 1.0));
+  return rate / (kMu * omega * omega / 2);
+}
+
+// The scheme's error on the decay rate is O((w h)^2) = 1e-3 and the sampled peaks are within (w h)^2 / 2 of
+// the true ones: 1% covers both.
+constexpr double kRateTolerance = 0.01;
+
+TEST(BeamDamping, ReleasedCantileverDecaysAtZetaOmegaAndBalancesEnergy) {
+  const Release r = ReleaseFromTipLoad(3.0);
+  // Energy books: E - E0 = W_ext - D exactly per step (the damping forces do -mu de^T C de / h over every
+  // step, booked as dissipated), up to the Newton tolerance 1e-10 relative per step over 3000 steps.
+  constexpr double kBalanceTolerance = 1.0e-6;
+  EXPECT_LT(r.worst_balance, kBalanceTolerance * r.initial_energy);
+  // Most of the energy is gone after 3 s (exp(-2 zeta w t) = 0.12 for the first mode).
+  EXPECT_GT(r.dissipated, 0.8 * r.initial_energy);
+  const double ratio = DecayRateRatio(r);
+  EXPECT_NEAR(ratio, 1.0, kRateTolerance);
+  RecordProperty("decay_rate_error", test::Figure(ratio - 1.0));
   RecordProperty("energy_balance_relative", test::Figure(r.worst_balance / r.initial_energy));
 }
 
