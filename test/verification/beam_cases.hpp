@@ -57,6 +57,15 @@ inline LoadSpec TipLoad(LoadSpec::Kind kind, const Vec3& vector, double length) 
   return load;
 }
 
+// A dead tip force on for the first `duration` seconds, then off: a kick.
+inline LoadSpec TipKick(const Vec3& force, double length, double duration) {
+  LoadSpec load = TipLoad(LoadSpec::Kind::kForce, force, length);
+  load.scale.kind = TimeFunctionSpec::Kind::kTable;
+  load.scale.times = {0.0, duration, duration + 1e-9};
+  load.scale.values = {1.0, 1.0, 0.0};
+  return load;
+}
+
 // A uniform load per unit length along the whole beam named "beam" [N/m or N m/m].
 inline LoadSpec DistributedLoad(LoadSpec::Kind kind, LoadSpec::Frame frame, const Vec3& per_length) {
   LoadSpec load = BeamLoad(kind, frame, per_length);

@@ -155,11 +155,7 @@ TEST(BeamOffsets, OffsetMassesAndShearCentreKeepTheEnergyIdentity) {
   section.cg_offset = Eigen::Vector2d(0.05, -0.03);
   section.shear_center_offset = Eigen::Vector2d(0.02, 0.01);
   ModelSpec spec = test::Cantilever(kLength, 2, 3, section);
-  LoadSpec kick = test::TipLoad(LoadSpec::Kind::kForce, Vec3(0, 5.0, 5.0), kLength);
-  kick.scale.kind = TimeFunctionSpec::Kind::kTable;
-  kick.scale.times = {0.0, 0.05, 0.05 + 1e-9};
-  kick.scale.values = {1.0, 1.0, 0.0};
-  spec.loads.push_back(kick);
+  spec.loads.push_back(test::TipKick(Vec3(0, 5.0, 5.0), kLength, 0.05));
   spec.solver.integrator = SolverSpec::Integrator::kEnergyPreserving;
   spec.solver.adaptive = false;
   spec.solver.dt = 2.0e-3;
