@@ -7,6 +7,11 @@
 #include "flexmbd/model/model.hpp"
 
 namespace flexmbd {
+namespace {
+// Column suffixes of one beam station, in BeamStationSample order (load, strain, displacement, rotation).
+const char* const kStationColumns[18] = {"N",  "V2", "V3", "T",  "M2", "M3", "e1", "g2", "g3",
+                                         "k1", "k2", "k3", "ux", "uy", "uz", "rx", "ry", "rz"};
+}  // namespace
 
 CsvSink::CsvSink(const Model& model, const std::string& path) : out_(path) {
   if (!out_) throw ConfigError("output.csv: cannot open '" + path + "' for writing; expected a writable file path");
@@ -28,6 +33,11 @@ CsvSink::CsvSink(const Model& model, const std::string& path) : out_(path) {
       out_ << ",friction." << friction.joint << '.' << column;
     }
   }
+  for (const BeamStationInfo& station : model.beam_stations()) {
+    for (const char* column : kStationColumns) {
+      out_ << ",beam." << station.beam << ".s" << station.index << "." << column;
+    }
+  }
   out_ << ",energy.kinetic,energy.potential,energy.total,energy.external_work,energy.dissipated,"
           "energy.numerical_dissipation,solver.dt,solver.iterations\n";
 }
@@ -45,6 +55,12 @@ void CsvSink::Write(const OutputSample& s) {
   }
   for (const FrictionSample& f : s.friction) {
     out_ << ',' << f.sticking << ',' << f.torque << ',' << f.normal_force << ',' << f.slip_velocity << ',' << f.work;
+  }
+  for (const BeamStationSample& b : s.beam_stations) {
+    for (int k = 0; k < 6; ++k) out_ << ',' << b.load[k];
+    for (int k = 0; k < 6; ++k) out_ << ',' << b.strain[k];
+    for (int k = 0; k < 3; ++k) out_ << ',' << b.displacement[k];
+    for (int k = 0; k < 3; ++k) out_ << ',' << b.rotation[k];
   }
   out_ << ',' << s.kinetic << ',' << s.potential << ',' << s.total() << ',' << s.external_work << ',' << s.dissipated
        << ',' << s.numerical_dissipation << ',' << s.dt << ',' << s.iterations << '\n';

@@ -4,8 +4,10 @@
 namespace flexmbd {
 namespace io {
 namespace {
-const std::vector<std::string> kBeamKeys = {"length", "elements", "order", "section"};
-const std::vector<std::string> kSectionKeys = {"EA", "GA2", "GA3", "GJ", "EI2", "EI3", "stiffness", "m", "m_ii"};
+const std::vector<std::string> kBeamKeys = {"length", "elements", "order", "damping", "section"};
+const std::vector<std::string> kSectionKeys = {"EA",        "GA2", "GA3", "GJ",   "EI2",    "EI3",
+                                               "stiffness", "m",   "m_ii", "offsets"};
+const std::vector<std::string> kOffsetKeys = {"cg", "shear_center"};
 const char* kDiagonalKeys[6] = {"EA", "GA2", "GA3", "GJ", "EI2", "EI3"};
 const char* kDiagonalUnits[6] = {"N", "N", "N", "N m^2", "N m^2", "N m^2"};
 
@@ -34,6 +36,22 @@ Eigen::Matrix<double, 6, 6> ReadStiffness(const Field& section) {
   return C;
 }
 
+// `offsets: {cg: [y, z], shear_center: [y, z]}` in the section frame [m].
+void ReadOffsets(const Field& offsets, BeamSectionSpec* spec) {
+  CheckKeys(offsets, kOffsetKeys);
+  const std::pair<const char*, Eigen::Vector2d*> entries[] = {{"cg", &spec->cg_offset},
+                                                              {"shear_center", &spec->shear_center_offset}};
+  for (const auto& [key, value] : entries) {
+    const Field field = offsets.Child(key);
+    if (!field.present()) continue;
+    const std::vector<double> yz = ReadNumberList(field, Quantity{"an offset", Bound::kAny, "m"});
+    if (yz.size() != 2) {
+      field.Fail(std::to_string(yz.size()) + " numbers; expected [y, z], the offset in the section frame [m]");
+    }
+    *value = Eigen::Vector2d(yz[0], yz[1]);
+  }
+}
+
 void ReadSection(const Field& section, BeamSectionSpec* spec) {
   CheckKeys(section, kSectionKeys);
   spec->stiffness = ReadStiffness(section);
@@ -41,6 +59,7 @@ void ReadSection(const Field& section, BeamSectionSpec* spec) {
   spec->mass_per_length = ReadNumber(section.Child("m"), Quantity{"a mass per length", Bound::kPositive, "kg/m"});
   OverlayVec3(section, "m_ii", Quantity{"mass moments per length", Bound::kNonNegative, "kg m"},
               &spec->inertia_per_length);
+  if (section.Child("offsets").present()) ReadOffsets(section.Child("offsets"), spec);
 }
 
 void ReadBeam(const Field& beam, BeamSpec* spec) {
@@ -50,6 +69,7 @@ void ReadBeam(const Field& beam, BeamSpec* spec) {
   OverlayInteger(beam, "elements", Quantity{"a number of elements", Bound::kAtLeastOne, ""}, &spec->elements);
   OverlayInteger(beam, "order", Quantity{"a shape-function order", Bound::kAtLeastOne, ""}, &spec->order);
   if (spec->order > 3) beam.Child("order").Fail(std::to_string(spec->order) + " is above 3; expected 1, 2 or 3");
+  OverlayNumber(beam, "damping", Quantity{"a damping time mu", Bound::kNonNegative, "s"}, &spec->damping);
   RequireKey(beam, "section", "the section properties {EA, GA2, GA3, GJ, EI2, EI3 | stiffness, m, m_ii}");
   ReadSection(beam.Child("section"), &spec->section);
 }

@@ -4,7 +4,7 @@
 namespace flexmbd {
 namespace io {
 namespace {
-const std::vector<std::string> kLoadKeys = {"body", "force", "moment", "frame", "point", "scale"};
+const std::vector<std::string> kLoadKeys = {"body", "force", "moment", "frame", "point", "distributed", "scale"};
 
 std::string ReadBodyName(const Field& field, const UrdfModel& model) {
   const std::string name = ReadString(field, "a body or beam name (a URDF link with <inertial>, or under beams:)");
@@ -29,6 +29,17 @@ void ReadVector(const Field& entry, LoadSpec* load) {
                                  : ReadVec3(moment, Quantity{"a moment", Bound::kAny, "N m"});
 }
 
+// A distributed load is per unit length along a whole beam: no point, and its body must be a beam.
+void ReadDistribution(const Field& entry, const UrdfModel& model, const LoadSpec& load) {
+  if (entry.Child("point").present()) {
+    entry.Child("point").Fail("is given for a distributed load; expected no point (the load is uniform along the beam)");
+  }
+  for (const BeamSpec& beam : model.spec.beams) {
+    if (beam.name == load.body) return;
+  }
+  entry.Child("distributed").Fail("true on '" + load.body + "', which is not a beam; expected a link under beams:");
+}
+
 LoadSpec ReadLoad(const Field& entry, const UrdfModel& model) {
   CheckKeys(entry, kLoadKeys);
   RequireKey(entry, "body", "the name of a body (a URDF link with <inertial>)");
@@ -45,6 +56,8 @@ LoadSpec ReadLoad(const Field& entry, const UrdfModel& model) {
       point.Fail("applies only to forces; a moment has no point of application");
     load.p_BoP_B = ReadVec3(point, Quantity{"a point in the body frame", Bound::kAny, "m"});
   }
+  OverlayBool(entry, "distributed", &load.distributed);
+  if (load.distributed) ReadDistribution(entry, model, load);
   const Field scale = entry.Child("scale");
   if (scale.present()) load.scale = ReadTimeFunction(scale, "", Measure{false, "a load scale factor"});
   return load;

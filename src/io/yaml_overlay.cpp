@@ -12,6 +12,7 @@ void ApplyYamlOverlay(const YAML::Node& params, const std::string& params_name, 
   ReadJoints(root.Child("joints"), model);
   ReadSolver(root.Child("solver"), &model->spec.solver);
   ReadOutput(root.Child("output"), &model->spec.output);
+  ReadBeamStations(root.Child("output"), *model, &model->spec.output);
   ReadLoads(root.Child("loads"), *model, &model->spec.loads);
 }
 

@@ -10,7 +10,7 @@ const std::vector<std::string> kSolverKeys = {"analysis",       "integrator", "r
                                               "eigen"};
 const std::vector<std::string> kEigenKeys = {"modes", "static_first", "method", "shift_hz", "sweep"};
 const std::vector<std::string> kSweepKeys = {"velocity_scale"};
-const std::vector<std::string> kOutputKeys = {"rate_hz", "csv", "bag"};
+const std::vector<std::string> kOutputKeys = {"rate_hz", "csv", "bag", "beam_stations"};
 
 // "0.01", or "0.01 (default)" if the key was not given.
 std::string ValueText(const Field& map, const std::string& key, double value) {

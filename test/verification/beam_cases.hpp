@@ -1,6 +1,7 @@
 #pragma once
 // Hand-written beam models shared by the beam verification tests.
 
+#include <cstdio>
 #include <string>
 
 #include "flexmbd/model/model_spec.hpp"
@@ -39,14 +40,44 @@ inline ModelSpec Cantilever(double length, int elements, int order, const BeamSe
   return spec;
 }
 
-// A dead force or moment at the tip of the beam named "beam" of the given length.
-inline LoadSpec TipLoad(LoadSpec::Kind kind, const Vec3& vector, double length) {
+// A force or moment on the beam named "beam", at its root.
+inline LoadSpec BeamLoad(LoadSpec::Kind kind, LoadSpec::Frame frame, const Vec3& vector) {
   LoadSpec load;
   load.body = "beam";
   load.kind = kind;
+  load.frame = frame;
   load.vector = vector;
+  return load;
+}
+
+// A dead force or moment at the tip of the beam named "beam" of the given length.
+inline LoadSpec TipLoad(LoadSpec::Kind kind, const Vec3& vector, double length) {
+  LoadSpec load = BeamLoad(kind, LoadSpec::Frame::kWorld, vector);
   load.p_BoP_B = Vec3(length, 0, 0);
   return load;
+}
+
+// A dead tip force on for the first `duration` seconds, then off: a kick.
+inline LoadSpec TipKick(const Vec3& force, double length, double duration) {
+  LoadSpec load = TipLoad(LoadSpec::Kind::kForce, force, length);
+  load.scale.kind = TimeFunctionSpec::Kind::kTable;
+  load.scale.times = {0.0, duration, duration + 1e-9};
+  load.scale.values = {1.0, 1.0, 0.0};
+  return load;
+}
+
+// A uniform load per unit length along the whole beam named "beam" [N/m or N m/m].
+inline LoadSpec DistributedLoad(LoadSpec::Kind kind, LoadSpec::Frame frame, const Vec3& per_length) {
+  LoadSpec load = BeamLoad(kind, frame, per_length);
+  load.distributed = true;
+  return load;
+}
+
+// A measured figure for RecordProperty, in scientific notation.
+inline std::string Figure(double value) {
+  char text[32];
+  std::snprintf(text, sizeof(text), "%.3e", value);
+  return text;
 }
 
 }  // namespace test

@@ -26,11 +26,7 @@ ModelSpec FreeFlyingBeam(SolverSpec::Integrator integrator) {
   beam.w_WB_W = Vec3(0.5, 0.0, 4.0);  // spin about z plus a twist rate
   spec.beams.push_back(beam);
   // A tip kick bends it: a force pulse in y at the tip over the first 0.05 s.
-  LoadSpec kick = test::TipLoad(LoadSpec::Kind::kForce, Vec3(0, 20.0, 0), 1.0);
-  kick.scale.kind = TimeFunctionSpec::Kind::kTable;
-  kick.scale.times = {0.0, 0.05, 0.05 + 1e-9};
-  kick.scale.values = {1.0, 1.0, 0.0};
-  spec.loads.push_back(kick);
+  spec.loads.push_back(test::TipKick(Vec3(0, 20.0, 0), 1.0, 0.05));
   spec.solver.gravity = Vec3::Zero();
   spec.solver.integrator = integrator;
   spec.solver.adaptive = false;

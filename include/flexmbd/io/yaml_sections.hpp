@@ -45,6 +45,9 @@ void ReadSolver(const Field& solver, SolverSpec* spec);
 /// `output:` settings.
 void ReadOutput(const Field& output, OutputSpec* spec);
 
+/// `output.beam_stations`: beam name -> distances from the root in [0, length] [m] (beams read first).
+void ReadBeamStations(const Field& output, const UrdfModel& model, OutputSpec* spec);
+
 /// `loads:` a list of forces and moments on bodies of `model`.
 void ReadLoads(const Field& loads, const UrdfModel& model, std::vector<LoadSpec>* specs);
 

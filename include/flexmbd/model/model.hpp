@@ -32,7 +32,17 @@ struct BeamInfo {
   std::string name;
   std::vector<int> nodes;                    ///< node indices from root to tip
   std::vector<double> stations;              ///< their distance from the root [m]
+  std::vector<double> lumped_lengths;        ///< share of the length lumped on each node [m] (theory (B6))
   std::vector<const BeamElement*> elements;  ///< from root to tip
+};
+
+/// A station of `output.beam_stations`: where on which element it is sampled.
+struct BeamStationInfo {
+  std::string beam;                   ///< beam name
+  int index = 0;                      ///< k in the output names beam.<name>.s<k>
+  double s = 0.0;                     ///< distance from the root [m]
+  const BeamElement* element = nullptr;
+  double s_element = 0.0;             ///< distance from the element's first node [m]
 };
 
 /// A stop (backlash) as the user named it.
@@ -65,6 +75,8 @@ class Model {
   const std::vector<const RigidBody*>& rigid_bodies() const { return rigid_bodies_; }
   const std::vector<BodyInfo>& bodies() const { return bodies_; }
   const std::vector<BeamInfo>& beams() const { return beams_; }
+  /// The stations of output.beam_stations, beam by beam (in name order), then in the order given.
+  const std::vector<BeamStationInfo>& beam_stations() const { return beam_stations_; }
   const std::vector<StopInfo>& stops() const { return stops_; }
   /// The stop elements, in stops() order.
   const std::vector<const JointStop*>& stop_effects() const { return stop_effects_; }
@@ -95,6 +107,7 @@ class Model {
   std::vector<const RigidBody*> rigid_bodies_;
   std::vector<BodyInfo> bodies_;
   std::vector<BeamInfo> beams_;
+  std::vector<BeamStationInfo> beam_stations_;
   std::vector<StopInfo> stops_;
   std::vector<const JointStop*> stop_effects_;
   std::vector<const ModalEffect*> modal_effects_;

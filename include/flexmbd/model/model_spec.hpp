@@ -3,6 +3,7 @@
 /// Plain-data description of a mechanism, produced by the loader (URDF + YAML) or written by hand in
 /// tests, and turned into a frozen Model by BuildModel(). No behaviour lives here.
 
+#include <map>
 #include <string>
 #include <vector>
 
@@ -132,7 +133,13 @@ struct BeamSectionSpec {
   /// forces, torque, bending moments) [N, N m^2 ...]; full, with the couplings of composite sections.
   Eigen::Matrix<double, 6, 6> stiffness = Eigen::Matrix<double, 6, 6>::Zero();
   double mass_per_length = 0.0;            ///< [kg/m]
-  Vec3 inertia_per_length = Vec3::Zero();  ///< (torsional, about y, about z) mass moments per length [kg m]
+  Vec3 inertia_per_length = Vec3::Zero();  ///< (torsional, about y, about z) mass moments per length about the
+                                           ///< centre of mass [kg m]
+  /// Centre of mass (y, z) in the section frame, from the beam axis [m] (docs/theory.md, (B6)).
+  Eigen::Vector2d cg_offset = Eigen::Vector2d::Zero();
+  /// Shear centre (y, z) in the section frame, from the beam axis [m]: the shear stiffnesses act there, the
+  /// axial and bending ones on the beam axis (docs/theory.md, (B8)).
+  Eigen::Vector2d shear_center_offset = Eigen::Vector2d::Zero();
 };
 
 /// A geometrically exact beam along the x axis of a link frame B, from the B origin (docs/config.md, "beams").
@@ -141,6 +148,7 @@ struct BeamSpec {
   double length = 0.0;        ///< [m]
   int elements = 1;           ///< number of elements, >= 1
   int order = 3;              ///< shape-function order 1..3 (nodes per element = order + 1)
+  double damping = 0.0;       ///< structural damping mu >= 0: section forces mu C eps_dot [s] (theory (B7))
   BeamSectionSpec section;
   Vec3 p_WB = Vec3::Zero();        ///< initial position of the B origin [m]
   Mat3 R_WB = Mat3::Identity();    ///< initial orientation of B
@@ -157,6 +165,9 @@ struct LoadSpec {
   Frame frame = Frame::kWorld;
   Vec3 vector = Vec3::Zero();           ///< [N] or [N m], in the chosen frame
   Vec3 p_BoP_B = Vec3::Zero();          ///< point of application of a force, in B [m]
+  /// Per unit length, uniform along the whole beam `body` (vector in N/m or N m/m; kBody: the section frame);
+  /// consistent nodal loads (docs/theory.md, (B9)).
+  bool distributed = false;
   TimeFunctionSpec scale;               ///< multiplies vector; constant 1 by default
   LoadSpec() { scale.value = 1.0; }
 };
@@ -196,6 +207,8 @@ struct OutputSpec {
   double rate_hz = 100.0;  ///< sample rate; 0 writes every accepted step
   std::string csv;         ///< CSV path; empty for none
   std::string bag;         ///< bag path; empty for none
+  /// Beam name -> stations, distances from the root in [0, length] [m], sampled in OutputSample::beam_stations.
+  std::map<std::string, std::vector<double>> beam_stations;
 };
 
 /// The whole mechanism and its run settings.

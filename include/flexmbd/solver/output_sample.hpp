@@ -29,6 +29,14 @@ struct FrictionSample {
   double work = 0;           ///< cumulative energy dissipated by this joint's friction [J]
 };
 
+/// One station of output.beam_stations at a sample (docs/theory.md, "Station outputs").
+struct BeamStationSample {
+  Vec6 load = Vec6::Zero();       ///< section forces and moments (N, V2, V3, T, M2, M3), section frame [N, N m]
+  Vec6 strain = Vec6::Zero();     ///< strains and curvatures (eps1, gamma2, gamma3, kappa1..3), section frame [-, 1/m]
+  Vec3 displacement = Vec3::Zero();  ///< of the beam axis from its initial position, in W [m]
+  Vec3 rotation = Vec3::Zero();      ///< rotation vector of R_W(s) R_W0(s)^T, in W [rad]
+};
+
 struct OutputSample {
   double t = 0;                  ///< [s]
   Eigen::VectorXd position;      ///< joint variables [rad or m] (num_variables)
@@ -38,8 +46,9 @@ struct OutputSample {
   std::vector<Vec3> reaction_moment;    ///< per joint: rotational multipliers (moment on the child) [N m]
   std::vector<StopSample> stops;         ///< per stop, in Model::stops() order
   std::vector<FrictionSample> friction;  ///< per frictional joint, in Model::frictions() order
+  std::vector<BeamStationSample> beam_stations;  ///< per station, in Model::beam_stations() order
   double kinetic = 0;            ///< [J]
-  double potential = 0;          ///< gravity and springs [J]
+  double potential = 0;          ///< gravity, springs and beam strain energy [J]
   double external_work = 0;      ///< cumulative work of applied loads and drives [J]
   double dissipated = 0;         ///< cumulative energy dissipated by dampers [J]
   double numerical_dissipation = 0;  ///< cumulative energy removed by the integrator [J]

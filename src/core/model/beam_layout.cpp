@@ -1,5 +1,6 @@
 #include "flexmbd/model/beam_layout.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
@@ -63,6 +64,33 @@ std::vector<double> LumpedLengths(const BeamSpec& beam) {
   return lengths;
 }
 
+Eigen::Matrix<double, 6, 6> BeamSectionStiffness(const BeamSectionSpec& section) {
+  Eigen::Matrix<double, 6, 6> T = Eigen::Matrix<double, 6, 6>::Identity();
+  T(1, 3) = -section.shear_center_offset.y();
+  T(2, 3) = section.shear_center_offset.x();
+  return T.transpose() * section.stiffness * T;
+}
+
+ElementPoint LocateOnBeam(const BeamSpec& beam, double s) {
+  const double element_length = beam.length / beam.elements;
+  ElementPoint p;
+  p.element = std::min(beam.elements - 1, std::max(0, static_cast<int>(std::floor(s / element_length))));
+  p.s = std::min(element_length, std::max(0.0, s - p.element * element_length));
+  return p;
+}
+
+std::vector<LoadSpec> NodalLoads(const LoadSpec& distributed, const std::vector<double>& lumped_lengths) {
+  std::vector<LoadSpec> nodal;
+  for (double length : lumped_lengths) {
+    LoadSpec load = distributed;
+    load.distributed = false;
+    load.p_BoP_B = Vec3::Zero();
+    load.vector *= length;
+    nodal.push_back(load);
+  }
+  return nodal;
+}
+
 int StationAt(const std::vector<double>& stations, double s, double length) {
   for (size_t k = 0; k < stations.size(); ++k) {
     if (std::abs(stations[k] - s) <= kStationTolerance * length) return static_cast<int>(k);
@@ -84,6 +112,9 @@ void ValidateBeam(const std::string& prefix, const BeamSpec& beam) {
     msg << "section stiffness is not positive definite (smallest eigenvalue " << eig.eigenvalues().minCoeff()
         << "); expected EA, GA2, GA3, GJ, EI2, EI3 > 0 and couplings that keep the 6x6 matrix positive definite";
     fail("section", msg.str());
+  }
+  if (!(beam.damping >= 0.0)) {
+    fail("damping", std::to_string(beam.damping) + " is negative; expected a damping time mu >= 0 [s]");
   }
   if (!(beam.section.mass_per_length > 0.0)) fail("section.m", "mass per length is not positive; expected m > 0 [kg/m]");
   if ((beam.section.inertia_per_length.array() < 0.0).any()) {

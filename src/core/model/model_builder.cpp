@@ -44,6 +44,46 @@ NodeState NodeFromBody(const BodySpec& body) {
   n.w = body.R_WB.transpose() * body.w_WB_W;
   return n;
 }
+
+// A lumped mass's own node at its centre of mass p_NC (in the node frame), moving rigidly with the beam node.
+NodeState OffsetNode(const NodeState& beam_node, const Vec3& p_NC) {
+  NodeState n = beam_node;
+  const Vec3 r = beam_node.R * p_NC;
+  n.x += r;
+  n.v += (beam_node.R * beam_node.w).cross(r);
+  return n;
+}
+
+// A lumped beam mass off the beam axis: its node, the beam node that holds it and its offset there.
+struct OffsetMass {
+  std::string name;
+  int beam_node = -1, mass_node = -1;
+  Vec3 p_NC = Vec3::Zero();
+};
+
+// The stations of output.beam_stations on their elements; throws ConfigError for an unknown beam or a station
+// off the beam.
+std::vector<BeamStationInfo> LocateBeamStations(const ModelSpec& spec, const std::vector<BeamInfo>& beams) {
+  std::vector<BeamStationInfo> located;
+  for (const auto& [name, stations] : spec.output.beam_stations) {
+    const std::string field = Prefix(spec) + "output.beam_stations." + name;
+    size_t b = 0;
+    while (b < beams.size() && beams[b].name != name) ++b;
+    if (b == beams.size()) throw ConfigError(field + ": no beam '" + name + "'; expected the name of a beam (beams:)");
+    const BeamSpec& beam = spec.beams[b];
+    for (size_t k = 0; k < stations.size(); ++k) {
+      if (!(stations[k] >= 0.0 && stations[k] <= beam.length)) {
+        std::ostringstream msg;
+        msg << field << "[" << k << "]: " << stations[k] << " is off the beam; expected 0 <= s <= " << beam.length
+            << " [m] (distance from the root)";
+        throw ConfigError(msg.str());
+      }
+      const ElementPoint p = LocateOnBeam(beam, stations[k]);
+      located.push_back({name, static_cast<int>(k), stations[k], beams[b].elements[p.element], p.s});
+    }
+  }
+  return located;
+}
 }  // namespace
 
 std::string Model::DescribeUnknown(int unknown) const {
@@ -87,6 +127,7 @@ Model BuildModel(const ModelSpec& spec) {
 
   // Beams: nodes along the link's x axis, lumped masses on them, elements between them.
   std::map<std::string, int> beam_index;
+  std::vector<OffsetMass> offset_masses;
   for (const BeamSpec& beam : spec.beams) {
     ValidateBeam(Prefix(spec), beam);
     if (body_index.count(beam.name) || !beam_index.emplace(beam.name, static_cast<int>(model.beams_.size())).second) {
@@ -95,30 +136,45 @@ Model BuildModel(const ModelSpec& spec) {
     BeamInfo info;
     info.name = beam.name;
     info.stations = BeamStations(beam);
+    info.lumped_lengths = LumpedLengths(beam);
     const std::vector<NodeState> nodes = BeamNodeStates(beam);
-    const std::vector<double> lumped = LumpedLengths(beam);
+    // With a centre-of-mass offset each lumped mass is a rigid body of its own, at its centre of mass, held on
+    // the beam node by a fixed joint (theory (B6)).
+    const Vec3 p_NC(0.0, beam.section.cg_offset.x(), beam.section.cg_offset.y());
     for (size_t k = 0; k < nodes.size(); ++k) {
       const int node = model.num_nodes_++;
       info.nodes.push_back(node);
       model.initial_state_.nodes.push_back(nodes[k]);
       model.length_scale_ = std::max(model.length_scale_, nodes[k].x.norm());
-      model.node_names_.push_back("beam " + beam.name + " node " + std::to_string(k));
-      const Mat3 inertia = lumped[k] * beam.section.inertia_per_length.asDiagonal().toDenseMatrix();
-      auto mass = std::make_unique<RigidBody>(node, model.node_unknown(node), lumped[k] * beam.section.mass_per_length,
-                                              inertia);
+      const std::string node_name = "beam " + beam.name + " node " + std::to_string(k);
+      model.node_names_.push_back(node_name);
+      int mass_node = node;
+      if (!p_NC.isZero()) {
+        mass_node = model.num_nodes_++;
+        model.initial_state_.nodes.push_back(OffsetNode(nodes[k], p_NC));
+        model.node_names_.push_back(node_name + " centre of mass");
+        offset_masses.push_back({node_name + " centre of mass", node, mass_node, p_NC});
+        model.num_multipliers_ += 6;
+      }
+      const double lumped = info.lumped_lengths[k];
+      const Mat3 inertia = lumped * beam.section.inertia_per_length.asDiagonal().toDenseMatrix();
+      auto mass = std::make_unique<RigidBody>(mass_node, model.node_unknown(mass_node),
+                                              lumped * beam.section.mass_per_length, inertia);
       model.rigid_bodies_.push_back(mass.get());
       model.elements_.push_back(std::move(mass));
     }
+    const Eigen::Matrix<double, 6, 6> stiffness = BeamSectionStiffness(beam.section);
     for (int e = 0; e < beam.elements; ++e) {
       const std::vector<int> element_nodes(info.nodes.begin() + e * beam.order,
                                            info.nodes.begin() + (e + 1) * beam.order + 1);
       auto element = std::make_unique<BeamElement>(beam.name + " element " + std::to_string(e), element_nodes,
-                                                   beam.length / beam.elements, beam.section);
+                                                   beam.length / beam.elements, stiffness, beam.damping);
       info.elements.push_back(element.get());
       model.elements_.push_back(std::move(element));
     }
     model.beams_.push_back(info);
   }
+  model.beam_stations_ = LocateBeamStations(spec, model.beams_);
 
   // The node a link-frame point belongs to, and the point relative to that node (node frame).
   auto locate = [&](const std::string& what, const std::string& link, const Vec3& p_B, int* node, Vec3* p_N) {
@@ -285,7 +341,37 @@ Model BuildModel(const ModelSpec& spec) {
     variable += n_var;
   }
 
+  for (const OffsetMass& offset : offset_masses) {
+    JointSpec fixed;
+    fixed.type = JointType::kFixed;
+    Joint::Attachment holder, mass;
+    holder.node = offset.beam_node;
+    holder.first_unknown = model.node_unknown(offset.beam_node);
+    holder.p_NJ = offset.p_NC;
+    mass.node = offset.mass_node;
+    mass.first_unknown = model.node_unknown(offset.mass_node);
+    model.elements_.push_back(std::make_unique<Joint>(offset.name, holder, mass, MakeJointKinematics(fixed), variable,
+                                                      model.variable_unknown(variable), multiplier,
+                                                      model.multiplier_unknown(multiplier)));
+    for (int c = 0; c < 6; ++c) model.multiplier_names_.push_back(offset.name + " constraint " + std::to_string(c));
+    multiplier += 6;
+  }
+
   for (const LoadSpec& load : spec.loads) {
+    if (load.distributed) {
+      const auto beam = beam_index.find(load.body);
+      if (beam == beam_index.end()) {
+        throw ConfigError(Prefix(spec) + "load on '" + load.body + "': '" + load.body +
+                          "' is not a beam; expected a distributed load on a link under beams:");
+      }
+      const BeamInfo& info = model.beams_[beam->second];
+      const std::vector<LoadSpec> nodal = NodalLoads(load, info.lumped_lengths);
+      for (size_t k = 0; k < nodal.size(); ++k) {
+        model.elements_.push_back(
+            std::make_unique<AppliedLoad>(info.nodes[k], model.node_unknown(info.nodes[k]), nodal[k], Vec3::Zero()));
+      }
+      continue;
+    }
     int node = -1;
     Vec3 p_NP;
     locate("load on '" + load.body + "'", load.body, load.p_BoP_B, &node, &p_NP);

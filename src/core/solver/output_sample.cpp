@@ -3,6 +3,18 @@
 #include "flexmbd/model/model.hpp"
 
 namespace flexmbd {
+namespace {
+BeamStationSample SampleStation(const Model& model, const State& state, const BeamStationInfo& station) {
+  const BeamElement::Section now = station.element->SectionAt(state, station.s_element);
+  const BeamElement::Section initial = station.element->SectionAt(model.initial_state(), station.s_element);
+  BeamStationSample sample;
+  sample.load = now.load;
+  sample.strain = now.strain;
+  sample.displacement = now.x - initial.x;
+  sample.rotation = Log(now.R * initial.R.transpose());
+  return sample;
+}
+}  // namespace
 
 OutputSample MakeSample(const Model& model, const State& state, const StepContext& ctx, double dt, int iterations) {
   OutputSample s;
@@ -25,6 +37,7 @@ OutputSample MakeSample(const Model& model, const State& state, const StepContex
   s.external_work = state.external_work;
   s.dissipated = state.dissipated_physical;
   s.numerical_dissipation = state.dissipated_numerical;
+  for (const BeamStationInfo& station : model.beam_stations()) s.beam_stations.push_back(SampleStation(model, state, station));
   s.dt = dt;
   s.iterations = iterations;
   return s;
@@ -53,6 +66,14 @@ OutputSample Interpolate(const OutputSample& a, const OutputSample& b, double t)
   s.external_work = (1.0 - u) * a.external_work + u * b.external_work;
   s.dissipated = (1.0 - u) * a.dissipated + u * b.dissipated;
   s.numerical_dissipation = (1.0 - u) * a.numerical_dissipation + u * b.numerical_dissipation;
+  for (size_t k = 0; k < s.beam_stations.size(); ++k) {
+    const BeamStationSample &x = a.beam_stations[k], &y = b.beam_stations[k];
+    BeamStationSample& z = s.beam_stations[k];
+    z.load = mix(x.load, y.load);
+    z.strain = mix(x.strain, y.strain);
+    z.displacement = mix(x.displacement, y.displacement);
+    z.rotation = mix(x.rotation, y.rotation);
+  }
   return s;
 }
 
