@@ -112,7 +112,9 @@ TEST(Friction, BreakawayWhenTorqueExceedsStaticBound) {
       // The sticking multiplier balances the step's mean (mid-step) moment, to round-off.
       EXPECT_NEAR(s.friction[0].torque, -kRate * (s.t - s.dt / 2), 1e-12) << "t = " << s.t;
     }
-    if (s.t > t_b + kStep) EXPECT_FALSE(s.friction[0].sticking) << "t = " << s.t;
+    if (s.t > t_b + kStep) {
+      EXPECT_FALSE(s.friction[0].sticking) << "t = " << s.t;
+    }
   }
   const double expected = (kRate * (kEnd * kEnd - t_b * t_b) / 2 - kKineticTorque * (kEnd - t_b)) / kInertia;
   // Breakaway is found at the end of the step in which the bound is passed: at most one step late, which
