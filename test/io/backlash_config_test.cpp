@@ -73,6 +73,12 @@ TEST(BacklashConfig, UrdfLimitGivesThePositionsWhenTheBlockHasNone) {
   EXPECT_EQ(stops[1].radius, 0.1);
 }
 
+TEST(BacklashConfig, BlockWithoutPositionsNeedsAUrdfLimit) {
+  EXPECT_CONFIG_ERROR(Load("joints: {spin: {backlash: {radius_lower: 0.1}}}"),
+                      "test.yaml: joints.spin.backlash: gives no stop position and joint 'spin' has no URDF <limit>; "
+                      "expected lower and/or upper (or lower_deg, upper_deg)");
+}
+
 TEST(BacklashConfig, ListOfBlocksNamesTheLaterOnesWithTheirIndex) {
   const std::vector<StopSpec> stops = StopsOf(Load(R"(
 joints:
