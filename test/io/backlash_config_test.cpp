@@ -110,24 +110,27 @@ TEST(BacklashConfig, NegativeRadiusIsRejected) {
                       "> 0 [m]");
 }
 
+// Expects the message of an upper stop at 0.1 rad on the hinge whose `stop:` map holds `stop`.
+void ExpectStopError(const std::string& stop, const std::string& message) {
+  EXPECT_CONFIG_ERROR(Load("joints: {hinge: {backlash: {upper: 0.1, stop: {" + stop + "}}}}"), message);
+}
+
 TEST(BacklashConfig, NegativeOrZeroStiffnessIsRejected) {
-  const std::string prefix = "joints: {hinge: {backlash: {upper: 0.1, stop: {type: elastic, stiffness: ";
-  EXPECT_CONFIG_ERROR(Load(prefix + "-1.0e6}}}}"),
-                      "test.yaml: joints.hinge.backlash.stop.stiffness: -1.0e6 is negative; expected a contact "
-                      "stiffness > 0 [N/m^n]");
-  EXPECT_CONFIG_ERROR(Load(prefix + "0}}}}"),
-                      "test.yaml: joints.hinge.backlash.stop.stiffness: 0 is zero; expected a contact stiffness > 0 "
-                      "[N/m^n]");
+  ExpectStopError("type: elastic, stiffness: -1.0e6",
+                  "test.yaml: joints.hinge.backlash.stop.stiffness: -1.0e6 is negative; expected a contact stiffness "
+                  "> 0 [N/m^n]");
+  ExpectStopError("type: elastic, stiffness: 0",
+                  "test.yaml: joints.hinge.backlash.stop.stiffness: 0 is zero; expected a contact stiffness > 0 "
+                  "[N/m^n]");
 }
 
 TEST(BacklashConfig, RestitutionOutsideZeroToOneIsRejected) {
-  const std::string prefix = "joints: {hinge: {backlash: {upper: 0.1, stop: {type: elastic, stiffness: 1.0e6, ";
-  EXPECT_CONFIG_ERROR(Load(prefix + "restitution: 0}}}}"),
-                      "test.yaml: joints.hinge.backlash.stop.restitution: 0 is outside (0, 1]; expected a "
-                      "coefficient of restitution in (0, 1]");
-  EXPECT_CONFIG_ERROR(Load(prefix + "restitution: 1.5}}}}"),
-                      "test.yaml: joints.hinge.backlash.stop.restitution: 1.5 is outside (0, 1]; expected a "
-                      "coefficient of restitution in (0, 1]");
+  ExpectStopError("type: elastic, stiffness: 1.0e6, restitution: 0",
+                  "test.yaml: joints.hinge.backlash.stop.restitution: 0 is outside (0, 1]; expected a coefficient of "
+                  "restitution in (0, 1]");
+  ExpectStopError("type: elastic, stiffness: 1.0e6, restitution: 1.5",
+                  "test.yaml: joints.hinge.backlash.stop.restitution: 1.5 is outside (0, 1]; expected a coefficient "
+                  "of restitution in (0, 1]");
 }
 
 TEST(BacklashConfig, UnknownKeyIsRejectedWithASuggestion) {
