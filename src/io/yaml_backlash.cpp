@@ -35,11 +35,8 @@ void ReadContact(const Field& field, StopSpec* stop) {
     if (stop->law != StopSpec::Law::kHertz) field.Child("exponent").Fail("applies only to law: hertz");
     stop->exponent = ReadNumber(field.Child("exponent"), Quantity{"a Hertz exponent", Bound::kAtLeastOne, ""});
   }
-  const Field restitution = field.Child("restitution");
-  if (restitution.present()) {
-    stop->restitution = ReadNumber(restitution, Quantity{"a coefficient of restitution", Bound::kUnitInterval, ""});
-    if (stop->restitution == 0.0) restitution.Fail("0 is not allowed; expected a coefficient of restitution in (0, 1]");
-  }
+  OverlayNumber(field, "restitution", Quantity{"a coefficient of restitution", Bound::kPositiveFraction, ""},
+                &stop->restitution);
   OverlayInteger(field, "steps_per_contact", Quantity{"a number of steps", Bound::kAtLeastOne, ""},
                  &stop->steps_per_contact);
 }
@@ -89,8 +86,10 @@ std::vector<StopSpec> ReadBlock(const Field& block, const JointSpec& joint, cons
     stop.name = side_name + suffix;
     const std::string radius_key = "radius_" + side_name;
     if (block.Child(radius_key).present()) {
-      if (!units.measure.angular) block.Child(radius_key).Fail("applies only to rotations; the gap of " +
-                                                               units.measure.description + " is its travel");
+      if (!units.measure.angular) {
+        block.Child(radius_key).Fail("applies only to rotations; " + units.measure.description +
+                                     " is a translation, whose gap is its travel; expected no " + radius_key);
+      }
       stop.radius = ReadNumber(block.Child(radius_key), Quantity{"a contact radius", Bound::kPositive, "m"});
     }
     stops.push_back(stop);

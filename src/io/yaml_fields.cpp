@@ -28,6 +28,7 @@ std::string BoundText(Bound bound) {
     case Bound::kNonNegative: return " >= 0";
     case Bound::kPositive: return " > 0";
     case Bound::kUnitInterval: return " in [0, 1]";
+    case Bound::kPositiveFraction: return " in (0, 1]";
     case Bound::kAtLeastOne: return " >= 1";
   }
   return "";
@@ -40,6 +41,7 @@ std::string BoundViolation(double value, Bound bound) {
     case Bound::kNonNegative: return value < 0.0 ? "is negative" : "";
     case Bound::kPositive: return value < 0.0 ? "is negative" : value == 0.0 ? "is zero" : "";
     case Bound::kUnitInterval: return value < 0.0 || value > 1.0 ? "is outside [0, 1]" : "";
+    case Bound::kPositiveFraction: return value <= 0.0 || value > 1.0 ? "is outside (0, 1]" : "";
     case Bound::kAtLeastOne: return value < 1.0 ? "is less than 1" : "";
   }
   return "";

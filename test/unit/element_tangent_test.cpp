@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "flexmbd/effects/joint_stop.hpp"
 #include "flexmbd/effects/variable_effects.hpp"
 #include "flexmbd/elements/applied_load.hpp"
 #include "flexmbd/elements/rigid_body.hpp"
@@ -79,9 +80,12 @@ std::vector<const ElementType*> ElementsOf(const Model& model) {
   return found;
 }
 
+// Sets chosen parts of a random start state and trial unknowns (e.g. a stop's gap and mode); none by default.
+using Placement = std::function<void(State* start, Eigen::VectorXd* unknowns)>;
+
 // Checks every element of the type in dynamic mode at random trial points, for alpha 0 and 0.1.
 template <typename ElementType>
-void ExpectDynamicTangents(const Model& model, unsigned seed) {
+void ExpectDynamicTangents(const Model& model, unsigned seed, const Placement& place = {}) {
   const std::vector<const ElementType*> elements = ElementsOf<ElementType>(model);
   ASSERT_FALSE(elements.empty());
   test::Random random(seed);
@@ -90,8 +94,9 @@ void ExpectDynamicTangents(const Model& model, unsigned seed) {
   for (double alpha : {0.0, 0.1}) {
     const std::vector<NodeSchemeCoefficients> coefficients(model.num_nodes(), NodeSchemeCoefficients{alpha, alpha});
     for (int trial = 0; trial < 3; ++trial) {
-      const State start = test::PerturbedState(model, &random);
-      const Eigen::VectorXd u = test::RandomUnknowns(model, &random);
+      State start = test::PerturbedState(model, &random);
+      Eigen::VectorXd u = test::RandomUnknowns(model, &random);
+      if (place) place(&start, &u);
       const ContextAt context_at = [&](const Eigen::VectorXd& unknowns) -> const StepContext& {
         return builder.Dynamic(start, unknowns, kStepSize, coefficients);
       };
@@ -108,16 +113,17 @@ void ExpectDynamicTangents(const Model& model, unsigned seed) {
 // rotation R Exp(d) of the moved pose (T = I), exact at zero increment. Variable increments and multipliers are
 // random.
 template <typename ElementType>
-void ExpectStaticTangents(const Model& model, unsigned seed) {
+void ExpectStaticTangents(const Model& model, unsigned seed, const Placement& place = {}) {
   const std::vector<const ElementType*> elements = ElementsOf<ElementType>(model);
   ASSERT_FALSE(elements.empty());
   test::Random random(seed);
   StepContextBuilder builder(model);
   builder.set_geometric_stiffness(true);
   for (int trial = 0; trial < 3; ++trial) {
-    const State iterate = test::PerturbedState(model, &random);
+    State iterate = test::PerturbedState(model, &random);
     Eigen::VectorXd u = test::RandomUnknowns(model, &random);
     u.head(6 * model.num_nodes()).setZero();
+    if (place) place(&iterate, &u);
     const double load_factor = random.Uniform(0.2, 1.0);
     const ContextAt context_at = [&](const Eigen::VectorXd& unknowns) -> const StepContext& {
       return builder.Static(iterate, unknowns, iterate.t, load_factor);
@@ -175,6 +181,56 @@ TEST(ElementTangent, VariableEffectsStaticMatchFiniteDifference) {
   ExpectStaticTangents<VariableSpring>(model, 209);
   ExpectStaticTangents<VariableDamper>(model, 210);
   ExpectStaticTangents<VariableDrive>(model, 211);
+}
+
+// The hinge of WorldRevoluteModel with one lower stop at 0.25 rad (its initial angle is 0.3 rad).
+constexpr double kStopAngle = 0.25;
+Model ModelWithStop(StopSpec stop) {
+  ModelSpec spec = test::WorldRevoluteModel();
+  stop.name = "lower";
+  stop.side = StopSpec::Side::kLower;
+  stop.limit = kStopAngle;
+  spec.joints[0].effects[0].stops = {stop};
+  return BuildModel(spec);
+}
+
+// Places the hinge's angle at the stop angle + `offset` at the start of the step, moving by `increment` at the
+// step's mean rate, with the stop in `mode` and, for an elastic stop, a remembered approach speed of 0.5 m/s.
+Placement AtStop(const Model& model, double offset, double increment, int mode) {
+  return [&model, offset, increment, mode](State* start, Eigen::VectorXd* u) {
+    start->q[0] = kStopAngle + offset;
+    start->qdot[0] = increment / kStepSize;
+    start->effects[0] = EffectState{mode, 0.5, 0.0, 0};
+    (*u)[model.variable_unknown(0)] = increment;
+  };
+}
+
+TEST(ElementTangent, RigidStopMatchesFiniteDifference) {
+  // Reference: central differences of (-s rho lambda, g_f - g_i) in contact, (0, lambda) open (C2a).
+  StopSpec rigid;
+  rigid.radius = 0.15;
+  const Model model = ModelWithStop(rigid);
+  for (int mode : {JointStop::kOpen, JointStop::kContact}) {
+    ExpectDynamicTangents<RigidStop>(model, 212, AtStop(model, -0.01, -0.02, mode));
+    ExpectStaticTangents<RigidStop>(model, 213, AtStop(model, -0.01, -0.02, mode));
+  }
+}
+
+TEST(ElementTangent, ElasticStopMatchesFiniteDifference) {
+  // Reference: central differences of -s rho DG (1 + chi (a_f - a_i)/h) (C2b) for a Hertz stop, in a step that
+  // stays in contact, one that closes the gap and one that opens it (the discrete gradient over signed
+  // approaches), and of -s rho DG in statics. The approaches stay >= 6e-4 m from 0, far beyond the difference
+  // step (3e-7 m), so no difference straddles the kink of V at a = 0.
+  StopSpec elastic;
+  elastic.radius = 0.3;
+  elastic.kind = StopSpec::Kind::kElastic;
+  elastic.stiffness = 1.0e4;
+  elastic.restitution = 0.6;
+  const Model model = ModelWithStop(elastic);
+  ExpectDynamicTangents<ElasticStop>(model, 214, AtStop(model, -0.03, -0.02, JointStop::kContact));
+  ExpectDynamicTangents<ElasticStop>(model, 215, AtStop(model, 0.01, -0.03, JointStop::kOpen));
+  ExpectDynamicTangents<ElasticStop>(model, 216, AtStop(model, -0.01, 0.012, JointStop::kContact));
+  ExpectStaticTangents<ElasticStop>(model, 217, AtStop(model, -0.03, -0.02, JointStop::kContact));
 }
 
 TEST(ElementInterface, ResidualAndTangentTogetherEqualSeparateCalls) {

@@ -111,6 +111,32 @@ TEST(RigidStop, RestingContactForceBalancesGravity) {
   }
 }
 
+TEST(ElasticStop, StaticEquilibriumOnTheStopBalancesGravity) {
+  // Pendulum (1 kg, centre of mass 0.5 m out) held at the horizontal by a linear elastic upper stop at 0 rad of
+  // radius 0.2 m: at rest k rho^2 q = m g a cos(q), the stop's moment against gravity's. Solved here by Newton on
+  // the scalar equation; the static analysis must reach the same angle.
+  constexpr double kMassKg = 1.0, kArm = 0.5, kRadius = 0.2, kStiffness = 1.0e4, kG = 9.81;
+  ModelSpec spec = test::Pendulum(kMassKg, kArm, 0.01);
+  StopSpec stop = test::Stop(StopSpec::Side::kUpper, 0.0, kRadius);
+  stop.kind = StopSpec::Kind::kElastic;
+  stop.law = StopSpec::Law::kLinear;
+  stop.stiffness = kStiffness;
+  spec.joints[0].effects[0].stops = {stop};
+  spec.solver.analysis = SolverSpec::Analysis::kStatic;
+  spec.solver.tol = 1.0e-12;
+  const Model model = BuildModel(spec);
+  Simulation simulation(model);
+  simulation.SolveStaticEquilibrium();
+  double q = 0;
+  for (int k = 0; k < 50; ++k) {
+    const double r = kStiffness * kRadius * kRadius * q - kMassKg * kG * kArm * std::cos(q);
+    q -= r / (kStiffness * kRadius * kRadius + kMassKg * kG * kArm * std::sin(q));
+  }
+  // Both solved to round-off of q ~ 0.01 rad; the static residual tolerance 1e-12 relative: 1e-10 rad.
+  constexpr double kAngleTolerance = 1.0e-10;
+  EXPECT_NEAR(simulation.state().q[0], q, kAngleTolerance);
+}
+
 // Slider of 2 kg at 1 m/s onto an elastic stop 0.1 m ahead.
 constexpr double kSliderMass = 2.0, kSliderSpeed = 1.0, kSliderGap = 0.1;
 

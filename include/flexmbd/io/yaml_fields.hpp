@@ -53,8 +53,8 @@ class Field {
   bool present_ = true;
 };
 
-/// The range a number must lie in.
-enum class Bound { kAny, kNonNegative, kPositive, kUnitInterval, kAtLeastOne };
+/// The range a number must lie in (kUnitInterval [0, 1], kPositiveFraction (0, 1]).
+enum class Bound { kAny, kNonNegative, kPositive, kUnitInterval, kPositiveFraction, kAtLeastOne };
 
 /// What a number means, for its range check and its messages: {"a stiffness", kNonNegative, "N m/rad"}
 /// reads "expected a stiffness >= 0 [N m/rad]".

@@ -120,8 +120,10 @@ ElasticStop::StepForce ElasticStop::Evaluate(const StepContext& ctx) const {
   double d_elastic = 0;
   f.elastic = law_.DiscreteForce(f.a_i, f.a_f, &d_elastic);
   if (ctx.mode == AnalysisMode::kStatic) {
+    // At rest the start moves with the end (a_i = a_f): the force is V'(a_f), whose derivative V''(a_f) is twice
+    // the discrete gradient's derivative in a_f alone at coincident approaches.
     f.force = f.elastic;
-    f.d_dq_f = d_elastic * da_dq;
+    f.d_dq_f = 2.0 * d_elastic * da_dq;
     return f;
   }
   f.reference_speed = ReferenceSpeed(ctx);
