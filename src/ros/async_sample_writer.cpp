@@ -1,6 +1,7 @@
 #include "flexmbd/ros/async_sample_writer.hpp"
 
 #include <algorithm>
+#include <iterator>
 
 namespace flexmbd {
 namespace ros {
@@ -17,11 +18,22 @@ AsyncSampleWriter::~AsyncSampleWriter() {
   thread_.join();
 }
 
-void AsyncSampleWriter::Submit(OutputSample sample, SampleMessages messages) {
+AsyncSampleWriter::RecordPtr AsyncSampleWriter::Acquire() {
+  if (spare_.empty()) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    spare_.swap(recycled_);  // one lock per batch of records, not per record
+  }
+  if (spare_.empty()) return std::make_unique<SampleRecord>();
+  RecordPtr record = std::move(spare_.back());
+  spare_.pop_back();
+  return record;
+}
+
+void AsyncSampleWriter::Submit(RecordPtr record) {
   std::unique_lock<std::mutex> lock(mutex_);
   changed_.wait(lock, [this] { return queue_.size() < kMaxQueued || write_error_; });
   RethrowWriteError();
-  queue_.push_back(Item{std::move(sample), std::move(messages)});
+  queue_.push_back(std::move(record));
   if (!awake_ && queue_.size() >= wake_batch_) {
     awake_ = true;
     changed_.notify_all();
@@ -56,7 +68,7 @@ void AsyncSampleWriter::RethrowWriteError() {
 
 void AsyncSampleWriter::WriteLoop() {
   std::unique_lock<std::mutex> lock(mutex_);
-  std::deque<Item> batch;
+  std::vector<RecordPtr> batch;
   while (true) {
     changed_.wait(lock, [this] { return (awake_ && !queue_.empty()) || stopping_; });
     if (queue_.empty()) return;  // stopping, with everything written
@@ -69,12 +81,13 @@ void AsyncSampleWriter::WriteLoop() {
     if (was_full) changed_.notify_all();  // Submit may wait for room
     std::exception_ptr error;
     try {
-      for (const Item& item : batch) outputs_->Write(item.sample, item.messages);
+      for (const RecordPtr& record : batch) outputs_->Write(record->sample, record->messages);
     } catch (...) {
       error = std::current_exception();
     }
-    batch.clear();
     lock.lock();
+    recycled_.insert(recycled_.end(), std::make_move_iterator(batch.begin()), std::make_move_iterator(batch.end()));
+    batch.clear();
     writing_ = false;
     if (error) write_error_ = error;
     awake_ = awake_ || !queue_.empty();  // samples that came meanwhile: the next batch

@@ -42,7 +42,7 @@ SimulatorNode::SimulatorNode(::ros::NodeHandle node, ::ros::NodeHandle private_n
   if (case_.settings.publish) {
     bool use_sim_time = false;
     ::ros::param::get("/use_sim_time", use_sim_time);
-    auto publisher = std::make_unique<TopicPublisher>(node_, private_node_, ToBodyMarkers(case_.model), use_sim_time,
+    auto publisher = std::make_unique<TopicPublisher>(node_, private_node_, case_.model, use_sim_time,
                                                       [this] { control_.Notify(); });
     publisher_ = publisher.get();
     outputs_->AddLiveSink(std::move(publisher));
@@ -135,7 +135,10 @@ void SimulatorNode::StartRun() {
 }
 
 void SimulatorNode::Collect(const OutputSample& sample) {
-  pending_.push_back(PendingSample{sample, converter_->Convert(sample, simulation_->state())});
+  AsyncSampleWriter::RecordPtr record = writer_->Acquire();
+  record->sample = sample;  // into the recycled record's storage
+  converter_->Convert(sample, simulation_->state(), &record->messages);
+  pending_.push_back(std::move(record));
 }
 
 void SimulatorNode::AdvanceOneChunk() {
@@ -190,7 +193,7 @@ void SimulatorNode::SendNext() {
     Wait(Clock::now() + kPollPeriod);
     return;
   }
-  const double t = pending_.front().sample.t;
+  const double t = pending_.front()->sample.t;
   const Clock::time_point now = Clock::now();
   if (anchor_pace_) {
     pacer_.Anchor(t, now);
@@ -201,7 +204,7 @@ void SimulatorNode::SendNext() {
     Wait(due);
     return;
   }
-  writer_->Submit(std::move(pending_.front().sample), std::move(pending_.front().messages));
+  writer_->Submit(std::move(pending_.front()));
   pending_.pop_front();
   if (samples_sent_++ == 0) first_sent_wall_ = now;
   last_sent_t_ = t;
@@ -213,7 +216,7 @@ void SimulatorNode::SendNext() {
 }
 
 void SimulatorNode::FlushPending() {
-  for (PendingSample& next : pending_) writer_->Submit(std::move(next.sample), std::move(next.messages));
+  for (AsyncSampleWriter::RecordPtr& next : pending_) writer_->Submit(std::move(next));
   pending_.clear();
   writer_->Flush();
 }

@@ -4,21 +4,32 @@
 /// them never hold up the solver. Samples are written in the order they are submitted, none is dropped: when
 /// the writer falls kMaxQueued samples behind, Submit waits for it. Waking the thread costs a context switch
 /// (several microseconds, as much as a small model's step): it is woken once `wake_batch` samples wait, or
-/// by Wake() and Flush().
+/// by Wake() and Flush(). Records travel between the threads by pointer and are recycled: once written, a
+/// record goes back to the run loop (Acquire), whose next sample reuses its vectors and strings, so a
+/// sample costs no allocation on either thread after the first few.
 
 #include <condition_variable>
-#include <deque>
 #include <exception>
+#include <memory>
 #include <mutex>
 #include <thread>
+#include <vector>
 
 #include "flexmbd/ros/sample_fan_out.hpp"
 
 namespace flexmbd {
 namespace ros {
 
+/// A sample and its messages, on their way from the run loop to the sinks.
+struct SampleRecord {
+  OutputSample sample;
+  SampleMessages messages;
+};
+
 class AsyncSampleWriter {
  public:
+  using RecordPtr = std::unique_ptr<SampleRecord>;
+
   /// Samples the writer may lag behind the solver before Submit waits: bounds the memory of a burst.
   static constexpr size_t kMaxQueued = 10000;
 
@@ -28,7 +39,10 @@ class AsyncSampleWriter {
   /// Writes what is queued, then stops the thread.
   ~AsyncSampleWriter();
 
-  void Submit(OutputSample sample, SampleMessages messages);
+  /// Run-loop side: a record to fill, one the writer has written (its storage kept) or else a new one.
+  RecordPtr Acquire();
+
+  void Submit(RecordPtr record);
 
   /// Wakes the thread for the samples queued (call before waiting: they are then written meanwhile).
   void Wake();
@@ -38,10 +52,6 @@ class AsyncSampleWriter {
   void Flush();
 
  private:
-  struct Item {
-    OutputSample sample;
-    SampleMessages messages;
-  };
   void WriteLoop();
   void RethrowWriteError();
 
@@ -49,8 +59,10 @@ class AsyncSampleWriter {
   size_t wake_batch_;
   std::mutex mutex_;
   std::condition_variable changed_;
-  std::deque<Item> queue_;
-  bool writing_ = false;  ///< the thread holds an item it took off the queue
+  std::vector<RecordPtr> queue_;     ///< submitted, not yet taken by the thread
+  std::vector<RecordPtr> recycled_;  ///< written, for Acquire
+  std::vector<RecordPtr> spare_;     ///< run loop's own stock of recycled records (taken without the lock)
+  bool writing_ = false;  ///< the thread holds records it took off the queue
   bool awake_ = false;    ///< the thread writes until the queue is empty
   bool stopping_ = false;
   std::exception_ptr write_error_;
