@@ -12,6 +12,7 @@ AsyncSampleWriter::AsyncSampleWriter(SampleFanOut* outputs, size_t wake_batch)
 AsyncSampleWriter::~AsyncSampleWriter() {
   {
     std::lock_guard<std::mutex> lock(mutex_);
+    queue_.insert(queue_.end(), std::make_move_iterator(outbox_.begin()), std::make_move_iterator(outbox_.end()));
     stopping_ = true;
   }
   changed_.notify_all();
@@ -30,32 +31,27 @@ AsyncSampleWriter::RecordPtr AsyncSampleWriter::Acquire() {
 }
 
 void AsyncSampleWriter::Submit(RecordPtr record) {
+  outbox_.push_back(std::move(record));
+  if (outbox_.size() >= wake_batch_) Wake();
+}
+
+void AsyncSampleWriter::Flush() {
+  Wake();
   std::unique_lock<std::mutex> lock(mutex_);
-  changed_.wait(lock, [this] { return queue_.size() < kMaxQueued || write_error_; });
+  changed_.wait(lock, [this] { return (queue_.empty() && !writing_) || write_error_; });
   RethrowWriteError();
-  queue_.push_back(std::move(record));
-  if (!awake_ && queue_.size() >= wake_batch_) {
-    awake_ = true;
-    changed_.notify_all();
-  }
 }
 
 void AsyncSampleWriter::Wake() {
-  std::lock_guard<std::mutex> lock(mutex_);
+  std::unique_lock<std::mutex> lock(mutex_);
+  changed_.wait(lock, [this] { return queue_.size() < kMaxQueued || write_error_; });
+  RethrowWriteError();
+  queue_.insert(queue_.end(), std::make_move_iterator(outbox_.begin()), std::make_move_iterator(outbox_.end()));
+  outbox_.clear();
   if (!awake_ && !queue_.empty()) {
     awake_ = true;
     changed_.notify_all();
   }
-}
-
-void AsyncSampleWriter::Flush() {
-  std::unique_lock<std::mutex> lock(mutex_);
-  if (!queue_.empty()) {
-    awake_ = true;
-    changed_.notify_all();
-  }
-  changed_.wait(lock, [this] { return (queue_.empty() && !writing_) || write_error_; });
-  RethrowWriteError();
 }
 
 void AsyncSampleWriter::RethrowWriteError() {
@@ -63,6 +59,7 @@ void AsyncSampleWriter::RethrowWriteError() {
   std::exception_ptr error = write_error_;
   write_error_ = nullptr;
   queue_.clear();
+  outbox_.clear();
   std::rethrow_exception(error);
 }
 
