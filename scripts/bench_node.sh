@@ -67,18 +67,15 @@ PY
 
 seconds_now() { date +%s.%N; }
 
-# Best of 5 wall times of the runner, and its CPU time (user + system) in that run [s]. Extra arguments go
-# to the runner (e.g. --csv FILE).
-runner_seconds() {  # runner_seconds URDF CASE_YAML [ARGUMENTS...]
-  local best=1e9 best_cpu=0 start wall cpu
-  for _ in 1 2 3 4 5; do
-    start="$(seconds_now)"
-    cpu="$( { TIMEFORMAT='%U %S'; time "${bin}/flexmbd_run" --urdf "$1" --config "$2" "${@:3}" >/dev/null; } 2>&1 |
-      awk '{print $1 + $2}')"
-    wall="$(echo "$(seconds_now) ${start}" | awk '{print $1 - $2}')"
-    if awk "BEGIN {exit !(${wall} < ${best})}"; then best="${wall}" best_cpu="${cpu}"; fi
-  done
-  echo "${best} ${best_cpu}"
+# One run of the runner: prints "<wall seconds> <CPU seconds (user + system)>". Extra arguments go to the
+# runner (e.g. --csv FILE).
+runner_run() {  # runner_run URDF CASE_YAML [ARGUMENTS...]
+  local start wall cpu
+  start="$(seconds_now)"
+  cpu="$( { TIMEFORMAT='%U %S'; time "${bin}/flexmbd_run" --urdf "$1" --config "$2" "${@:3}" >/dev/null; } 2>&1 |
+    awk '{print $1 + $2}')"
+  wall="$(echo "$(seconds_now) ${start}" | awk '{print $1 - $2}')"
+  echo "${wall} ${cpu}"
 }
 
 # Runs the node on a case, with the benchmark subscriber if SUBSCRIBERS is 1; prints "<run wall seconds>
@@ -105,18 +102,33 @@ node_run() {  # node_run URDF CASE_YAML REAL_TIME_FACTOR SUBSCRIBERS
 
 ratio() { echo "$1 $2" | awk '{printf "%.2f", $1 / $2}'; }
 
+# Keeps the best (smallest wall time) of repeated runs: best_of NAME WALL REST... sets NAME_wall and NAME_rest.
+best_of() {
+  local name="$1" wall="$2" previous="${1}_wall"
+  if [[ -z "${!previous:-}" ]] || awk "BEGIN {exit !(${wall} < ${!previous})}"; then
+    printf -v "${name}_wall" '%s' "${wall}"
+    printf -v "${name}_rest" '%s' "${*:3}"
+  fi
+}
+
+# Best of 5 of the node and of the runner (without output, with its CSV), the three runs interleaved so that
+# a shared machine's load changes weigh on all alike.
 overhead() {  # overhead LABEL URDF CASE_YAML SUBSCRIBERS
-  local runner runner_cpu runner_csv runner_csv_cpu best=1e9 best_cpu=0 node_seconds node_cpu subscriber_line
-  read -r runner runner_cpu < <(runner_seconds "$2" "$3")
-  read -r runner_csv runner_csv_cpu < <(runner_seconds "$2" "$3" --csv "${work}/runner.csv")
+  local runner_wall="" runner_rest="" csv_wall="" csv_rest="" node_wall="" node_rest="" wall rest
   for _ in 1 2 3 4 5; do
-    read -r node_seconds node_cpu subscriber_line < <(node_run "$2" "$3" 0.0 "$4")
-    if awk "BEGIN {exit !(${node_seconds} < ${best})}"; then best="${node_seconds}" best_cpu="${node_cpu}"; fi
+    read -r wall rest < <(runner_run "$2" "$3")
+    best_of runner "${wall}" "${rest}"
+    read -r wall rest < <(runner_run "$2" "$3" --csv "${work}/runner.csv")
+    best_of csv "${wall}" "${rest}"
+    read -r wall rest < <(node_run "$2" "$3" 0.0 "$4")
+    best_of node "${wall}" "${rest}"
   done
+  local node_cpu subscriber_line
+  read -r node_cpu subscriber_line <<<"${node_rest}"
   echo "  $1:"
-  echo "    wall: node ${best} s; runner without output ${runner} s (ratio $(ratio "${best}" "${runner}"))," \
-       "with its CSV ${runner_csv} s (ratio $(ratio "${best}" "${runner_csv}"))"
-  echo "    CPU (user + system, all threads): node ${best_cpu} s, runner ${runner_cpu} s, with CSV ${runner_csv_cpu} s"
+  echo "    wall: node ${node_wall} s; runner without output ${runner_wall} s (ratio $(ratio "${node_wall}" "${runner_wall}")),"\
+       "with its CSV ${csv_wall} s (ratio $(ratio "${node_wall}" "${csv_wall}"))"
+  echo "    CPU (user + system, all threads): node ${node_cpu} s, runner ${runner_rest} s, with CSV ${csv_rest} s"
   echo "    subscriber: ${subscriber_line}"
 }
 

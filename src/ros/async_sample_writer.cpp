@@ -48,10 +48,12 @@ void AsyncSampleWriter::Wake() {
   RethrowWriteError();
   queue_.insert(queue_.end(), std::make_move_iterator(outbox_.begin()), std::make_move_iterator(outbox_.end()));
   outbox_.clear();
-  if (!awake_ && !queue_.empty()) {
-    awake_ = true;
-    changed_.notify_all();
-  }
+  // a thread busy writing takes the queue when it is done; one asleep is woken (a system call, costly on a
+  // VM), after the lock is released so that it does not wake into a held lock
+  const bool wake = !awake_ && !writing_ && !queue_.empty();
+  awake_ = awake_ || wake;
+  lock.unlock();
+  if (wake) changed_.notify_all();
 }
 
 void AsyncSampleWriter::RethrowWriteError() {

@@ -60,7 +60,6 @@ void FillNamedRecords(const std::vector<Info>& infos, const std::vector<Record>&
 ::ros::Time ToStamp(double t) { return ::ros::Time(t); }
 
 void FillJointState(const Model& model, const OutputSample& sample, sensor_msgs::JointState* msg) {
-  msg->header.stamp = ToStamp(sample.t);
   msg->name = model.variable_names();
   SetVector(sample.position, &msg->position);
   SetVector(sample.velocity, &msg->velocity);
@@ -68,7 +67,6 @@ void FillJointState(const Model& model, const OutputSample& sample, sensor_msgs:
 }
 
 void FillEnergy(const OutputSample& sample, Energy* msg) {
-  msg->header.stamp = ToStamp(sample.t);
   msg->kinetic = sample.kinetic;
   msg->potential = sample.potential;
   msg->external_work = sample.external_work;
@@ -78,7 +76,6 @@ void FillEnergy(const OutputSample& sample, Energy* msg) {
 
 void FillJointReactions(const Model& model, const OutputSample& sample, JointReactions* msg) {
   const size_t n = model.joints().size();
-  msg->header.stamp = ToStamp(sample.t);
   msg->name.resize(n);
   msg->force.resize(n);
   msg->moment.resize(n);
@@ -90,13 +87,11 @@ void FillJointReactions(const Model& model, const OutputSample& sample, JointRea
 }
 
 void FillSolverStep(const OutputSample& sample, SolverStep* msg) {
-  msg->header.stamp = ToStamp(sample.t);
   msg->dt = sample.dt;
   msg->iterations = sample.iterations;
 }
 
 void FillJointContacts(const std::vector<StopInfo>& stops, const OutputSample& sample, JointContactArray* msg) {
-  msg->header.stamp = ToStamp(sample.t);
   FillNamedRecords(stops, sample.stops, &msg->contacts,
                    [](const StopInfo& info, const StopSample& value, JointContact* contact) {
                      contact->joint = info.joint;
@@ -110,7 +105,6 @@ void FillJointContacts(const std::vector<StopInfo>& stops, const OutputSample& s
 
 void FillJointFriction(const std::vector<FrictionInfo>& frictions, const OutputSample& sample,
                        JointFrictionArray* msg) {
-  msg->header.stamp = ToStamp(sample.t);
   FillNamedRecords(frictions, sample.friction, &msg->joints,
                    [](const FrictionInfo& info, const FrictionSample& value, JointFriction* friction) {
                      friction->joint = info.joint;

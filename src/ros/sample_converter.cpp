@@ -14,10 +14,12 @@ void SampleConverter::Convert(const OutputSample& sample, const State& state, Sa
   FillJointContacts(model_.stops(), sample, &messages->contacts);
   FillJointFriction(model_.frictions(), sample, &messages->friction);
   const uint32_t seq = next_seq_++;
+  const ::ros::Time stamp = ToStamp(sample.t);
   for (std_msgs::Header* header :
        {&messages->joint_state.header, &messages->energy.header, &messages->reactions.header,
         &messages->solver.header, &messages->contacts.header, &messages->friction.header}) {
     header->seq = seq;
+    header->stamp = stamp;
   }
   messages->has_transforms = !last_transform_time_ || state.t > *last_transform_time_;
   if (messages->has_transforms) {

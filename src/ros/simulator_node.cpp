@@ -23,7 +23,7 @@ constexpr std::chrono::milliseconds kPollPeriod(20);
 constexpr std::chrono::milliseconds kDrainTime(500);
 // Samples the writer thread collects before it is woken when the run goes as fast as it can (paced runs
 // wake it for every sample): one wake-up then serves many samples.
-constexpr size_t kUnpacedWakeBatch = 64;
+constexpr size_t kUnpacedWakeBatch = 256;
 
 std::string FormatTime(double t) {
   std::ostringstream text;

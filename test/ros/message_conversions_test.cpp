@@ -51,7 +51,6 @@ TEST(MessageConversions, JointStateNamesTheVariablesInModelOrder) {
   EXPECT_EQ(msg.position, (std::vector<double>{0.1, 0.2}));
   EXPECT_EQ(msg.velocity, (std::vector<double>{1.1, 1.2}));
   EXPECT_EQ(msg.effort, (std::vector<double>{2.1, 2.2}));
-  EXPECT_NEAR(msg.header.stamp.toSec(), 1.25, kStampResolution);
 }
 
 TEST(MessageConversions, EnergyCopiesEveryTerm) {
@@ -140,7 +139,6 @@ TEST(MessageConversions, ContactsNameEveryStopAndCopyItsRecord) {
   JointContactArray msg;
   FillJointContacts(kStops, SampleWithStops(3, 0.0), &msg);
   ASSERT_EQ(msg.contacts.size(), 3u);
-  EXPECT_NEAR(msg.header.stamp.toSec(), 2.5, kStampResolution);
   const JointContact& upper = msg.contacts[1];
   EXPECT_EQ(upper.joint, "B1");
   EXPECT_EQ(upper.stop, "upper");
@@ -187,7 +185,6 @@ TEST(MessageConversions, FrictionNamesEveryJointAndCopiesItsRecord) {
   JointFrictionArray msg;
   FillJointFriction(frictions, sample, &msg);
   ASSERT_EQ(msg.joints.size(), 2u);
-  EXPECT_NEAR(msg.header.stamp.toSec(), 0.5, kStampResolution);
   EXPECT_EQ(msg.joints[0].joint, "B1");
   EXPECT_TRUE(msg.joints[0].sticking);
   EXPECT_EQ(msg.joints[0].work, 0.125);

@@ -69,8 +69,9 @@ TEST(SampleConverter, TransformStampsBracketEverySampleOfARun) {
   }
 }
 
-TEST(SampleConverter, NumbersEveryMessageOfASampleWithItsIndex) {
-  // Reference: header.seq = the sample's index in the run, the same on every sample topic (docs/ros.md).
+TEST(SampleConverter, HeadersCarryTheSampleIndexAndTime) {
+  // Reference: header.seq = the sample's index in the run and header.stamp its time, the same on every
+  // sample topic (docs/ros.md).
   // the beam arm, sampled at every step of its first 3 ms (a few steps: the beam is slow to step)
   ModelSpec spec = LoadModelSpec(test::SourcePath("test/data/urdf/beam_arm.urdf"),
                                  test::SourcePath("test/data/yaml/beam_arm.yaml"));
@@ -80,18 +81,23 @@ TEST(SampleConverter, NumbersEveryMessageOfASampleWithItsIndex) {
   SampleConverter converter(model, "world");
   Simulation simulation(model);
   std::vector<SampleMessages> converted;
+  std::vector<double> times;
   simulation.Run([&](const OutputSample& sample) {
     converted.emplace_back();
     converter.Convert(sample, simulation.state(), &converted.back());
+    times.push_back(sample.t);
   });
   ASSERT_GT(converted.size(), 2u);
   for (uint32_t k = 0; k < converted.size(); ++k) {
     const SampleMessages& messages = converted[k];
-    for (uint32_t seq : {messages.joint_state.header.seq, messages.energy.header.seq, messages.reactions.header.seq,
-                         messages.solver.header.seq, messages.contacts.header.seq, messages.friction.header.seq}) {
-      EXPECT_EQ(seq, k);
+    for (const std_msgs::Header* header :
+         {&messages.joint_state.header, &messages.energy.header, &messages.reactions.header, &messages.solver.header,
+          &messages.contacts.header, &messages.friction.header}) {
+      EXPECT_EQ(header->seq, k);
+      EXPECT_NEAR(header->stamp.toSec(), times[k], kStampResolution) << "sample " << k;
     }
   }
+  EXPECT_GT(times.back(), 0.0);
   // the beam's 7 node frames and the tip's link frame, every step
   ASSERT_TRUE(converted.back().has_transforms);
   EXPECT_EQ(converted.back().transforms.transforms.size(), 8u);

@@ -3,7 +3,8 @@
 /// Conversions from the core's output (OutputSample, State, Model) to ROS messages. Pure functions: no
 /// master, no publishing. The per-sample ones fill a message in place: a message filled again for a later
 /// sample of the same model keeps its arrays and strings, so converting allocates nothing after the first
-/// sample (the node recycles its messages).
+/// sample (the node recycles its messages). They leave the header alone: SampleConverter stamps and numbers
+/// the messages of a sample, once for all.
 
 #include <ros/time.h>
 #include <sensor_msgs/JointState.h>

@@ -37,9 +37,9 @@ class SampleConverter {
   SampleConverter(const Model& model, std::string world_frame);
 
   /// Fills `messages` with those of `sample`, taken while the simulation is at `state` (state.t >=
-  /// sample.t); `messages` may hold an earlier sample's, whose storage it reuses. Their header.seq is the
-  /// sample's index in the run (0 first): what roscpp's publisher numbers them on the wire, so that a bag
-  /// holds the bytes a subscriber receives.
+  /// sample.t); `messages` may hold an earlier sample's, whose storage it reuses. Their header.stamp is the
+  /// sample's time and header.seq its index in the run (0 first): what roscpp's publisher numbers them on
+  /// the wire, so that a bag holds the bytes a subscriber receives.
   void Convert(const OutputSample& sample, const State& state, SampleMessages* messages);
 
  private:
