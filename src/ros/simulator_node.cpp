@@ -21,8 +21,8 @@ constexpr std::chrono::milliseconds kPollPeriod(20);
 // the queues are empty: at the end of a run the node stays this long for its subscribers to take them
 // (a full 10000-sample queue drains in about 0.25 s on loopback; bench/node/README.md).
 constexpr std::chrono::milliseconds kDrainTime(500);
-// Samples the writer thread collects before it is woken when the run goes as fast as it can (paced runs
-// wake it for every sample): one wake-up then serves many samples.
+// Samples handed to the writer thread together (one lock, at most one wake-up) when the run goes as fast as
+// it can; paced runs hand over every sample at once.
 constexpr size_t kUnpacedWakeBatch = 256;
 
 std::string FormatTime(double t) {
