@@ -37,8 +37,10 @@ void BagSink::Write(const SampleMessages& messages) {
   bag_.write(topics_.energy, time, messages.energy);
   bag_.write(topics_.reactions, time, messages.reactions);
   bag_.write(topics_.solver, time, messages.solver);
-  if (messages.transforms && !messages.transforms->transforms.empty()) {
-    bag_.write(topics_.tf, BagTime(messages.transforms->transforms.front().header.stamp), *messages.transforms);
+  if (!messages.contacts.contacts.empty()) bag_.write(topics_.contacts, time, messages.contacts);
+  if (!messages.friction.joints.empty()) bag_.write(topics_.friction, time, messages.friction);
+  if (messages.has_transforms && !messages.transforms.transforms.empty()) {
+    bag_.write(topics_.tf, BagTime(messages.transforms.transforms.front().header.stamp), messages.transforms);
   }
 }
 

@@ -2,6 +2,8 @@
 
 #include <Eigen/Geometry>
 
+#include "flexmbd/common/error.hpp"
+
 namespace flexmbd {
 namespace ros {
 namespace {
@@ -9,13 +11,12 @@ namespace {
 // Marker sizes relative to the model's length scale (its largest node distance from the origin).
 constexpr double kComSphereDiameter = 0.06;
 constexpr double kStickWidth = 0.015;
+constexpr double kBeamNodeDiameter = 0.03;
 
-geometry_msgs::Vector3 ToVector3(const Vec3& v) {
-  geometry_msgs::Vector3 out;
-  out.x = v.x();
-  out.y = v.y();
-  out.z = v.z();
-  return out;
+void SetVector3(const Vec3& v, geometry_msgs::Vector3* out) {
+  out->x = v.x();
+  out->y = v.y();
+  out->z = v.z();
 }
 
 geometry_msgs::Point ToPoint(const Vec3& v) {
@@ -26,12 +27,12 @@ geometry_msgs::Point ToPoint(const Vec3& v) {
   return out;
 }
 
-std::vector<double> ToVector(const Eigen::VectorXd& v) { return std::vector<double>(v.data(), v.data() + v.size()); }
+void SetVector(const Eigen::VectorXd& v, std::vector<double>* out) { out->assign(v.data(), v.data() + v.size()); }
 
-visualization_msgs::Marker BodyMarker(const BodyInfo& body, int id, int type) {
+visualization_msgs::Marker FrameMarker(const std::string& frame, const std::string& ns, int id, int type) {
   visualization_msgs::Marker marker;
-  marker.header.frame_id = body.name;
-  marker.ns = "bodies";
+  marker.header.frame_id = frame;
+  marker.ns = ns;
   marker.id = id;
   marker.type = type;
   marker.action = visualization_msgs::Marker::ADD;
@@ -44,73 +45,95 @@ visualization_msgs::Marker BodyMarker(const BodyInfo& body, int id, int type) {
   return marker;
 }
 
+// One message entry per record of the model: Set(infos[k], records[k], &entries[k]). The sample's records
+// follow the model's list (OutputSample): the same order and size.
+template <typename Info, typename Record, typename Entry, typename Set>
+void FillNamedRecords(const std::vector<Info>& infos, const std::vector<Record>& records, std::vector<Entry>* entries,
+                      Set set) {
+  FLEXMBD_DEMAND(records.size() == infos.size());
+  entries->resize(infos.size());
+  for (size_t k = 0; k < infos.size(); ++k) set(infos[k], records[k], &(*entries)[k]);
+}
+
 }  // namespace
 
 ::ros::Time ToStamp(double t) { return ::ros::Time(t); }
 
-sensor_msgs::JointState ToJointState(const Model& model, const OutputSample& sample) {
-  sensor_msgs::JointState msg;
-  msg.header.stamp = ToStamp(sample.t);
-  msg.name = model.variable_names();
-  msg.position = ToVector(sample.position);
-  msg.velocity = ToVector(sample.velocity);
-  msg.effort = ToVector(sample.effort);
-  return msg;
+void FillJointState(const Model& model, const OutputSample& sample, sensor_msgs::JointState* msg) {
+  msg->name = model.variable_names();
+  SetVector(sample.position, &msg->position);
+  SetVector(sample.velocity, &msg->velocity);
+  SetVector(sample.effort, &msg->effort);
 }
 
-Energy ToEnergy(const OutputSample& sample) {
-  Energy msg;
-  msg.header.stamp = ToStamp(sample.t);
-  msg.kinetic = sample.kinetic;
-  msg.potential = sample.potential;
-  msg.external_work = sample.external_work;
-  msg.dissipated = sample.dissipated;
-  msg.numerical_dissipation = sample.numerical_dissipation;
-  return msg;
+void FillEnergy(const OutputSample& sample, Energy* msg) {
+  msg->kinetic = sample.kinetic;
+  msg->potential = sample.potential;
+  msg->external_work = sample.external_work;
+  msg->dissipated = sample.dissipated;
+  msg->numerical_dissipation = sample.numerical_dissipation;
 }
 
-JointReactions ToJointReactions(const Model& model, const OutputSample& sample) {
-  JointReactions msg;
-  msg.header.stamp = ToStamp(sample.t);
-  msg.name.reserve(model.joints().size());
-  msg.force.reserve(model.joints().size());
-  msg.moment.reserve(model.joints().size());
-  for (size_t k = 0; k < model.joints().size(); ++k) {
-    msg.name.push_back(model.joints()[k]->name());
-    msg.force.push_back(ToVector3(sample.reaction_force_W[k]));
-    msg.moment.push_back(ToVector3(sample.reaction_moment[k]));
+void FillJointReactions(const Model& model, const OutputSample& sample, JointReactions* msg) {
+  const size_t n = model.joints().size();
+  msg->name.resize(n);
+  msg->force.resize(n);
+  msg->moment.resize(n);
+  for (size_t k = 0; k < n; ++k) {
+    msg->name[k] = model.joints()[k]->name();
+    SetVector3(sample.reaction_force_W[k], &msg->force[k]);
+    SetVector3(sample.reaction_moment[k], &msg->moment[k]);
   }
-  return msg;
 }
 
-SolverStep ToSolverStep(const OutputSample& sample) {
-  SolverStep msg;
-  msg.header.stamp = ToStamp(sample.t);
-  msg.dt = sample.dt;
-  msg.iterations = sample.iterations;
-  return msg;
+void FillSolverStep(const OutputSample& sample, SolverStep* msg) {
+  msg->dt = sample.dt;
+  msg->iterations = sample.iterations;
 }
 
-tf2_msgs::TFMessage ToLinkTransforms(const Model& model, const State& state, const std::string& world_frame) {
-  tf2_msgs::TFMessage msg;
+void FillJointContacts(const std::vector<StopInfo>& stops, const OutputSample& sample, JointContactArray* msg) {
+  FillNamedRecords(stops, sample.stops, &msg->contacts,
+                   [](const StopInfo& info, const StopSample& value, JointContact* contact) {
+                     contact->joint = info.joint;
+                     contact->stop = info.stop;
+                     contact->in_contact = value.in_contact;
+                     contact->force = value.force;
+                     contact->torque = value.torque;
+                     contact->approach = value.approach;
+                   });
+}
+
+void FillJointFriction(const std::vector<FrictionInfo>& frictions, const OutputSample& sample,
+                       JointFrictionArray* msg) {
+  FillNamedRecords(frictions, sample.friction, &msg->joints,
+                   [](const FrictionInfo& info, const FrictionSample& value, JointFriction* friction) {
+                     friction->joint = info.joint;
+                     friction->sticking = value.sticking;
+                     friction->torque = value.torque;
+                     friction->normal_force = value.normal_force;
+                     friction->slip_velocity = value.slip_velocity;
+                     friction->work = value.work;
+                   });
+}
+
+void FillTransforms(const std::vector<TransformFrame>& frames, const State& state, const std::string& world_frame,
+                    tf2_msgs::TFMessage* msg) {
   const ::ros::Time stamp = ToStamp(state.t);
-  msg.transforms.reserve(model.bodies().size());
-  for (const BodyInfo& body : model.bodies()) {
-    const NodeState& node = state.nodes[body.node];
-    const Vec3 p_WB = node.x + node.R * body.p_NBo_N;
-    const Eigen::Quaterniond q_WB(node.R);
-    geometry_msgs::TransformStamped transform;
+  msg->transforms.resize(frames.size());
+  for (size_t k = 0; k < frames.size(); ++k) {
+    const NodeState& node = state.nodes[frames[k].node];
+    const Vec3 p_WF = node.x + node.R * frames[k].p_NF_N;
+    const Eigen::Quaterniond q_WF(node.R);
+    geometry_msgs::TransformStamped& transform = msg->transforms[k];
     transform.header.stamp = stamp;
     transform.header.frame_id = world_frame;
-    transform.child_frame_id = body.name;
-    transform.transform.translation = ToVector3(p_WB);
-    transform.transform.rotation.x = q_WB.x();
-    transform.transform.rotation.y = q_WB.y();
-    transform.transform.rotation.z = q_WB.z();
-    transform.transform.rotation.w = q_WB.w();
-    msg.transforms.push_back(transform);
+    transform.child_frame_id = frames[k].name;
+    SetVector3(p_WF, &transform.transform.translation);
+    transform.transform.rotation.x = q_WF.x();
+    transform.transform.rotation.y = q_WF.y();
+    transform.transform.rotation.z = q_WF.z();
+    transform.transform.rotation.w = q_WF.w();
   }
-  return msg;
 }
 
 visualization_msgs::MarkerArray ToBodyMarkers(const Model& model) {
@@ -121,13 +144,14 @@ visualization_msgs::MarkerArray ToBodyMarkers(const Model& model) {
     // the node sits at the centre of mass with the link frame's axes: a point p_N of the node frame is at
     // p_N - p_NBo_N in the link frame
     const Vec3 p_BoBcm_B = -body.p_NBo_N;
-    visualization_msgs::Marker sphere = BodyMarker(body, static_cast<int>(2 * k), visualization_msgs::Marker::SPHERE);
+    visualization_msgs::Marker sphere =
+        FrameMarker(body.name, "bodies", static_cast<int>(2 * k), visualization_msgs::Marker::SPHERE);
     sphere.pose.position = ToPoint(p_BoBcm_B);
     sphere.scale.x = sphere.scale.y = sphere.scale.z = kComSphereDiameter * scale;
     msg.markers.push_back(sphere);
 
     visualization_msgs::Marker sticks =
-        BodyMarker(body, static_cast<int>(2 * k + 1), visualization_msgs::Marker::LINE_LIST);
+        FrameMarker(body.name, "bodies", static_cast<int>(2 * k + 1), visualization_msgs::Marker::LINE_LIST);
     sticks.scale.x = kStickWidth * scale;
     for (const Joint* joint : model.joints()) {
       for (const Joint::Attachment* side : {&joint->parent(), &joint->child()}) {
@@ -137,6 +161,15 @@ visualization_msgs::MarkerArray ToBodyMarkers(const Model& model) {
       }
     }
     if (!sticks.points.empty()) msg.markers.push_back(sticks);
+  }
+  int beam_marker = 0;
+  for (const BeamInfo& beam : model.beams()) {
+    for (size_t k = 0; k < beam.nodes.size(); ++k) {
+      visualization_msgs::Marker node = FrameMarker(BeamNodeFrameName(beam.name, k), "beam_nodes", beam_marker++,
+                                                    visualization_msgs::Marker::SPHERE);
+      node.scale.x = node.scale.y = node.scale.z = kBeamNodeDiameter * scale;
+      msg.markers.push_back(node);
+    }
   }
   return msg;
 }

@@ -4,18 +4,28 @@ namespace flexmbd {
 namespace ros {
 
 SampleConverter::SampleConverter(const Model& model, std::string world_frame)
-    : model_(model), world_frame_(std::move(world_frame)) {}
+    : model_(model), world_frame_(std::move(world_frame)), frames_(TransformFrames(model)) {}
 
-SampleMessages SampleConverter::Convert(const OutputSample& sample, const State& state) {
-  SampleMessages messages{ToJointState(model_, sample), ToEnergy(sample), ToJointReactions(model_, sample),
-                          ToSolverStep(sample), std::nullopt};
-  messages.joint_state.header.seq = messages.energy.header.seq = messages.reactions.header.seq =
-      messages.solver.header.seq = next_seq_++;
-  if (!last_transform_time_ || state.t > *last_transform_time_) {
-    messages.transforms = ToLinkTransforms(model_, state, world_frame_);
+void SampleConverter::Convert(const OutputSample& sample, const State& state, SampleMessages* messages) {
+  FillJointState(model_, sample, &messages->joint_state);
+  FillEnergy(sample, &messages->energy);
+  FillJointReactions(model_, sample, &messages->reactions);
+  FillSolverStep(sample, &messages->solver);
+  FillJointContacts(model_.stops(), sample, &messages->contacts);
+  FillJointFriction(model_.frictions(), sample, &messages->friction);
+  const uint32_t seq = next_seq_++;
+  const ::ros::Time stamp = ToStamp(sample.t);
+  for (std_msgs::Header* header :
+       {&messages->joint_state.header, &messages->energy.header, &messages->reactions.header,
+        &messages->solver.header, &messages->contacts.header, &messages->friction.header}) {
+    header->seq = seq;
+    header->stamp = stamp;
+  }
+  messages->has_transforms = !last_transform_time_ || state.t > *last_transform_time_;
+  if (messages->has_transforms) {
+    FillTransforms(frames_, state, world_frame_, &messages->transforms);
     last_transform_time_ = state.t;
   }
-  return messages;
 }
 
 }  // namespace ros

@@ -21,9 +21,9 @@ constexpr std::chrono::milliseconds kPollPeriod(20);
 // the queues are empty: at the end of a run the node stays this long for its subscribers to take them
 // (a full 10000-sample queue drains in about 0.25 s on loopback; bench/node/README.md).
 constexpr std::chrono::milliseconds kDrainTime(500);
-// Samples the writer thread collects before it is woken when the run goes as fast as it can (paced runs
-// wake it for every sample): one wake-up then serves many samples.
-constexpr size_t kUnpacedWakeBatch = 64;
+// Samples handed to the writer thread together (one lock, at most one wake-up) when the run goes as fast as
+// it can; paced runs hand over every sample at once.
+constexpr size_t kUnpacedWakeBatch = 256;
 
 std::string FormatTime(double t) {
   std::ostringstream text;
@@ -42,7 +42,7 @@ SimulatorNode::SimulatorNode(::ros::NodeHandle node, ::ros::NodeHandle private_n
   if (case_.settings.publish) {
     bool use_sim_time = false;
     ::ros::param::get("/use_sim_time", use_sim_time);
-    auto publisher = std::make_unique<TopicPublisher>(node_, private_node_, ToBodyMarkers(case_.model), use_sim_time,
+    auto publisher = std::make_unique<TopicPublisher>(node_, private_node_, case_.model, use_sim_time,
                                                       [this] { control_.Notify(); });
     publisher_ = publisher.get();
     outputs_->AddLiveSink(std::move(publisher));
@@ -135,7 +135,10 @@ void SimulatorNode::StartRun() {
 }
 
 void SimulatorNode::Collect(const OutputSample& sample) {
-  pending_.push_back(PendingSample{sample, converter_->Convert(sample, simulation_->state())});
+  AsyncSampleWriter::RecordPtr record = writer_->Acquire();
+  record->sample = sample;  // into the recycled record's storage
+  converter_->Convert(sample, simulation_->state(), &record->messages);
+  pending_.push_back(std::move(record));
 }
 
 void SimulatorNode::AdvanceOneChunk() {
@@ -190,7 +193,7 @@ void SimulatorNode::SendNext() {
     Wait(Clock::now() + kPollPeriod);
     return;
   }
-  const double t = pending_.front().sample.t;
+  const double t = pending_.front()->sample.t;
   const Clock::time_point now = Clock::now();
   if (anchor_pace_) {
     pacer_.Anchor(t, now);
@@ -201,7 +204,7 @@ void SimulatorNode::SendNext() {
     Wait(due);
     return;
   }
-  writer_->Submit(std::move(pending_.front().sample), std::move(pending_.front().messages));
+  writer_->Submit(std::move(pending_.front()));
   pending_.pop_front();
   if (samples_sent_++ == 0) first_sent_wall_ = now;
   last_sent_t_ = t;
@@ -213,7 +216,7 @@ void SimulatorNode::SendNext() {
 }
 
 void SimulatorNode::FlushPending() {
-  for (PendingSample& next : pending_) writer_->Submit(std::move(next.sample), std::move(next.messages));
+  for (AsyncSampleWriter::RecordPtr& next : pending_) writer_->Submit(std::move(next));
   pending_.clear();
   writer_->Flush();
 }

@@ -9,6 +9,8 @@ TopicNames DefaultTopicNames() {
                     private_prefix + kEnergyTopic,
                     private_prefix + kReactionsTopic,
                     private_prefix + kSolverTopic,
+                    private_prefix + kContactsTopic,
+                    private_prefix + kFrictionTopic,
                     kTfTopic,
                     private_prefix + kMarkersTopic};
 }

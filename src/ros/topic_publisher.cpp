@@ -27,21 +27,28 @@ TopicNames ResolveTopicNames(const ::ros::NodeHandle& node, const ::ros::NodeHan
                     private_node.resolveName(kEnergyTopic),
                     private_node.resolveName(kReactionsTopic),
                     private_node.resolveName(kSolverTopic),
+                    private_node.resolveName(kContactsTopic),
+                    private_node.resolveName(kFrictionTopic),
                     node.resolveName(kTfTopic),
                     private_node.resolveName(kMarkersTopic)};
 }
 
-TopicPublisher::TopicPublisher(::ros::NodeHandle& node, ::ros::NodeHandle& private_node,
-                               const visualization_msgs::MarkerArray& markers, bool publish_clock,
-                               const std::function<void()>& on_connect)
+TopicPublisher::TopicPublisher(::ros::NodeHandle& node, ::ros::NodeHandle& private_node, const Model& model,
+                               bool publish_clock, const std::function<void()>& on_connect)
     : joint_states_(AdvertiseSamples<sensor_msgs::JointState>(node, kJointStatesTopic, on_connect)),
       energy_(AdvertiseSamples<Energy>(private_node, kEnergyTopic, on_connect)),
       reactions_(AdvertiseSamples<JointReactions>(private_node, kReactionsTopic, on_connect)),
       solver_(AdvertiseSamples<SolverStep>(private_node, kSolverTopic, on_connect)),
       tf_(node.advertise<tf2_msgs::TFMessage>(kTfTopic, kSampleQueueSize)),
       markers_(private_node.advertise<visualization_msgs::MarkerArray>(kMarkersTopic, 1, /*latch=*/true)) {
+  if (!model.stops().empty()) {
+    contacts_ = AdvertiseSamples<JointContactArray>(private_node, kContactsTopic, on_connect);
+  }
+  if (!model.frictions().empty()) {
+    friction_ = AdvertiseSamples<JointFrictionArray>(private_node, kFrictionTopic, on_connect);
+  }
   if (publish_clock) clock_ = node.advertise<rosgraph_msgs::Clock>(kClockTopic, kClockQueueSize);
-  markers_.publish(markers);
+  markers_.publish(ToBodyMarkers(model));
 }
 
 void TopicPublisher::Write(const SampleMessages& messages) {
@@ -51,16 +58,18 @@ void TopicPublisher::Write(const SampleMessages& messages) {
     clock.clock = messages.joint_state.header.stamp;
     clock_.publish(clock);
   }
-  if (messages.transforms) tf_.publish(*messages.transforms);
+  if (messages.has_transforms) tf_.publish(messages.transforms);
   joint_states_.publish(messages.joint_state);
   energy_.publish(messages.energy);
   reactions_.publish(messages.reactions);
   solver_.publish(messages.solver);
+  if (contacts_) contacts_.publish(messages.contacts);
+  if (friction_) friction_.publish(messages.friction);
 }
 
 bool TopicPublisher::HasSubscribers() const {
   for (const ::ros::Publisher* publisher :
-       {&joint_states_, &energy_, &reactions_, &solver_, &tf_, &markers_, &clock_}) {
+       {&joint_states_, &energy_, &reactions_, &solver_, &contacts_, &friction_, &tf_, &markers_, &clock_}) {
     if (*publisher && publisher->getNumSubscribers() > 0) return true;
   }
   return false;

@@ -126,10 +126,10 @@ int main(int argc, char** argv) {
     }
     flexmbd::Simulation simulation(model);
     flexmbd::OutputSample last;
+    flexmbd::ros::SampleMessages messages;  // refilled for every sample, reusing its storage
     try {
       simulation.Run([&](const flexmbd::OutputSample& sample) {
-        const flexmbd::ros::SampleMessages messages =
-            converter ? converter->Convert(sample, simulation.state()) : flexmbd::ros::SampleMessages();
+        if (converter) converter->Convert(sample, simulation.state(), &messages);
         outputs.Write(sample, messages);
         last = sample;
       });

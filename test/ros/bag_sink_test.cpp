@@ -30,11 +30,12 @@ std::vector<SampleMessages> RecordDoublePendulum(const std::string& path, BagCom
   Simulation simulation(model);
   std::vector<SampleMessages> written;
   BagSink bag(path, compression, DefaultTopicNames(), ToBodyMarkers(model));
-  simulation.Begin(
-      [&](const OutputSample& sample) { written.push_back(converter.Convert(sample, simulation.state())); });
-  simulation.AdvanceTo(1.0, model.solver().t_end, [&](const OutputSample& sample) {
-    written.push_back(converter.Convert(sample, simulation.state()));
-  });
+  const Simulation::SampleSink convert = [&](const OutputSample& sample) {
+    written.emplace_back();
+    converter.Convert(sample, simulation.state(), &written.back());
+  };
+  simulation.Begin(convert);
+  simulation.AdvanceTo(1.0, model.solver().t_end, convert);
   for (const SampleMessages& messages : written) bag.Write(messages);
   bag.Close();
   return written;
@@ -65,6 +66,42 @@ TEST(BagSink, HoldsEverySampleExactly) {
   const std::vector<SampleMessages> written = RecordDoublePendulum(path, BagCompression::kNone);
   ASSERT_EQ(written.size(), 101u);  // t = 0, 0.01, ..., 1 s at 100 samples/s
   ExpectBagHolds(path, written);
+  // the double pendulum has no stops and no friction: no such topics
+  EXPECT_TRUE(ReadTopic<JointContactArray>(path, DefaultTopicNames().contacts).empty());
+  EXPECT_TRUE(ReadTopic<JointFrictionArray>(path, DefaultTopicNames().friction).empty());
+}
+
+TEST(BagSink, RecordsContactsAndFrictionOfEverySample) {
+  // Reference: hand-made stop and friction records (the loader has no backlash or friction yet), written
+  // through the conversion the converter uses and read back exactly.
+  const std::string path = testing::TempDir() + "bag_sink_contacts.bag";
+  const Model model = test::DoublePendulum();
+  const std::vector<StopInfo> stops{{"shoulder", "lower", 0}, {"shoulder", "upper", 0}};
+  const std::vector<FrictionInfo> frictions{{"elbow", 1}};
+  std::vector<SampleMessages> written(3);
+  {
+    BagSink bag(path, BagCompression::kNone, DefaultTopicNames(), ToBodyMarkers(model));
+    for (size_t k = 0; k < written.size(); ++k) {
+      OutputSample sample;
+      sample.t = 0.1 * static_cast<double>(k);
+      sample.stops = {StopSample{false, 0.0, 0.0, 0.0}, StopSample{k > 0, 5.0 * k, -2.5 * k, 1.0e-5 * k}};
+      sample.friction = {FrictionSample{k == 1, 0.1 * k, 3.0, 0.01 * k, 0.002 * k}};
+      FillJointContacts(stops, sample, &written[k].contacts);
+      FillJointFriction(frictions, sample, &written[k].friction);
+      written[k].contacts.header.seq = written[k].friction.header.seq = static_cast<uint32_t>(k);
+      bag.Write(written[k]);
+    }
+  }
+  const auto contacts = ReadTopic<JointContactArray>(path, DefaultTopicNames().contacts);
+  const auto friction = ReadTopic<JointFrictionArray>(path, DefaultTopicNames().friction);
+  ASSERT_EQ(contacts.size(), written.size());
+  ASSERT_EQ(friction.size(), written.size());
+  for (size_t k = 0; k < written.size(); ++k) {
+    EXPECT_EQ(contacts[k], written[k].contacts) << "sample " << k;
+    EXPECT_EQ(friction[k], written[k].friction) << "sample " << k;
+  }
+  EXPECT_EQ(contacts[2].contacts[1].stop, "upper");
+  EXPECT_EQ(contacts[2].contacts[1].force, 10.0);
 }
 
 TEST(BagSink, Lz4BagHoldsTheSameSamples) {

@@ -18,5 +18,12 @@ inline Model DoublePendulum() {
                                   SourcePath("config/double_pendulum/double_pendulum.yaml")));
 }
 
+/// test/data/{urdf,yaml}/beam_arm.*: beam 'arm' clamped at (0, 0, 1) m along the world x axis, 1 m long, 2 cubic
+/// elements (nodes every 1/6 m), carrying the rigid body 'tip' on a hinge at its end.
+inline Model BeamArm() {
+  return BuildModel(
+      LoadModelSpec(SourcePath("test/data/urdf/beam_arm.urdf"), SourcePath("test/data/yaml/beam_arm.yaml")));
+}
+
 }  // namespace test
 }  // namespace flexmbd

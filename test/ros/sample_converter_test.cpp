@@ -28,17 +28,20 @@ TEST(SampleConverter, SendsTransformsOncePerStateAtTheStateTime) {
 
   state.t = 0.02;
   sample.t = 0.01;
-  const SampleMessages first = converter.Convert(sample, state);
-  ASSERT_TRUE(first.transforms.has_value());
-  EXPECT_NEAR(first.transforms->transforms[0].header.stamp.toSec(), 0.02, kStampResolution);
-  EXPECT_NEAR(first.joint_state.header.stamp.toSec(), 0.01, kStampResolution);
+  SampleMessages messages;
+  converter.Convert(sample, state, &messages);
+  ASSERT_TRUE(messages.has_transforms);
+  EXPECT_NEAR(messages.transforms.transforms[0].header.stamp.toSec(), 0.02, kStampResolution);
+  EXPECT_NEAR(messages.joint_state.header.stamp.toSec(), 0.01, kStampResolution);
 
   sample.t = 0.015;
-  EXPECT_FALSE(converter.Convert(sample, state).transforms.has_value());
+  converter.Convert(sample, state, &messages);  // refilled: the flag of the previous sample must not stay
+  EXPECT_FALSE(messages.has_transforms);
 
   state.t = 0.03;
   sample.t = 0.025;
-  EXPECT_TRUE(converter.Convert(sample, state).transforms.has_value());
+  converter.Convert(sample, state, &messages);
+  EXPECT_TRUE(messages.has_transforms);
 }
 
 TEST(SampleConverter, TransformStampsBracketEverySampleOfARun) {
@@ -50,9 +53,10 @@ TEST(SampleConverter, TransformStampsBracketEverySampleOfARun) {
   Simulation simulation(model);
   std::vector<double> sample_times, transform_times;
   simulation.Run([&](const OutputSample& sample) {
-    const SampleMessages messages = converter.Convert(sample, simulation.state());
+    SampleMessages messages;
+    converter.Convert(sample, simulation.state(), &messages);
     sample_times.push_back(messages.joint_state.header.stamp.toSec());
-    if (messages.transforms) transform_times.push_back(messages.transforms->transforms[0].header.stamp.toSec());
+    if (messages.has_transforms) transform_times.push_back(messages.transforms.transforms[0].header.stamp.toSec());
   });
   ASSERT_GT(sample_times.size(), 100u);
   ASSERT_TRUE(std::is_sorted(transform_times.begin(), transform_times.end()));
@@ -63,6 +67,40 @@ TEST(SampleConverter, TransformStampsBracketEverySampleOfARun) {
     ASSERT_NE(after, transform_times.end()) << "no transform at or after t = " << t;
     EXPECT_LE(*after - t, dt_max + kStampResolution) << "t = " << t;
   }
+}
+
+TEST(SampleConverter, HeadersCarryTheSampleIndexAndTime) {
+  // Reference: header.seq = the sample's index in the run and header.stamp its time, the same on every
+  // sample topic (docs/ros.md).
+  // the beam arm, sampled at every step of its first 3 ms (a few steps: the beam is slow to step)
+  ModelSpec spec = LoadModelSpec(test::SourcePath("test/data/urdf/beam_arm.urdf"),
+                                 test::SourcePath("test/data/yaml/beam_arm.yaml"));
+  spec.output.rate_hz = 0.0;
+  spec.solver.t_end = 3.0e-3;
+  const Model model = BuildModel(spec);
+  SampleConverter converter(model, "world");
+  Simulation simulation(model);
+  std::vector<SampleMessages> converted;
+  std::vector<double> times;
+  simulation.Run([&](const OutputSample& sample) {
+    converted.emplace_back();
+    converter.Convert(sample, simulation.state(), &converted.back());
+    times.push_back(sample.t);
+  });
+  ASSERT_GT(converted.size(), 2u);
+  for (uint32_t k = 0; k < converted.size(); ++k) {
+    const SampleMessages& messages = converted[k];
+    for (const std_msgs::Header* header :
+         {&messages.joint_state.header, &messages.energy.header, &messages.reactions.header, &messages.solver.header,
+          &messages.contacts.header, &messages.friction.header}) {
+      EXPECT_EQ(header->seq, k);
+      EXPECT_NEAR(header->stamp.toSec(), times[k], kStampResolution) << "sample " << k;
+    }
+  }
+  EXPECT_GT(times.back(), 0.0);
+  // the beam's 7 node frames and the tip's link frame, every step
+  ASSERT_TRUE(converted.back().has_transforms);
+  EXPECT_EQ(converted.back().transforms.transforms.size(), 8u);
 }
 
 }  // namespace

@@ -1,7 +1,10 @@
 #pragma once
 /// @file
 /// Conversions from the core's output (OutputSample, State, Model) to ROS messages. Pure functions: no
-/// master, no publishing.
+/// master, no publishing. The per-sample ones fill a message in place: a message filled again for a later
+/// sample of the same model keeps its arrays and strings, so converting allocates nothing after the first
+/// sample (the node recycles its messages). They leave the header alone: SampleConverter stamps and numbers
+/// the messages of a sample, once for all.
 
 #include <ros/time.h>
 #include <sensor_msgs/JointState.h>
@@ -9,11 +12,15 @@
 #include <visualization_msgs/MarkerArray.h>
 
 #include <string>
+#include <vector>
 
 #include "flexmbd/Energy.h"
+#include "flexmbd/JointContactArray.h"
+#include "flexmbd/JointFrictionArray.h"
 #include "flexmbd/JointReactions.h"
 #include "flexmbd/SolverStep.h"
 #include "flexmbd/model/model.hpp"
+#include "flexmbd/ros/transform_frames.hpp"
 #include "flexmbd/solver/output_sample.hpp"
 
 namespace flexmbd {
@@ -23,21 +30,32 @@ namespace ros {
 ::ros::Time ToStamp(double t);
 
 /// Position, velocity and effort of every joint variable; names are Model::variable_names(), in order.
-sensor_msgs::JointState ToJointState(const Model& model, const OutputSample& sample);
+void FillJointState(const Model& model, const OutputSample& sample, sensor_msgs::JointState* msg);
 
-Energy ToEnergy(const OutputSample& sample);
+void FillEnergy(const OutputSample& sample, Energy* msg);
 
 /// Reactions of every joint, named and ordered as Model::joints().
-JointReactions ToJointReactions(const Model& model, const OutputSample& sample);
+void FillJointReactions(const Model& model, const OutputSample& sample, JointReactions* msg);
 
-SolverStep ToSolverStep(const OutputSample& sample);
+void FillSolverStep(const OutputSample& sample, SolverStep* msg);
 
-/// One transform per body: its link frame (at node x + R p_NBo_N, orientation R) in `world_frame`,
+/// One entry per stop: sample.stops[k] named by stops[k] (Model::stops(): the same order and size).
+void FillJointContacts(const std::vector<StopInfo>& stops, const OutputSample& sample, JointContactArray* msg);
+
+/// One entry per frictional joint: sample.friction[k] named by frictions[k] (Model::frictions(): the same
+/// order and size).
+void FillJointFriction(const std::vector<FrictionInfo>& frictions, const OutputSample& sample,
+                       JointFrictionArray* msg);
+
+/// One transform per frame of `frames` (TransformFrames), placed by its node in `state`, in `world_frame`,
 /// stamped with the state's time.
-tf2_msgs::TFMessage ToLinkTransforms(const Model& model, const State& state, const std::string& world_frame);
+void FillTransforms(const std::vector<TransformFrame>& frames, const State& state, const std::string& world_frame,
+                    tf2_msgs::TFMessage* msg);
 
-/// Stick-figure markers for rviz, in each body's link frame and locked to it (so they follow /tf and are
-/// published once): a sphere at the centre of mass and lines from it to the body's joints.
+/// Markers for rviz, each locked to a tf frame (so they follow /tf and are published once): per body a
+/// sphere at the centre of mass and lines from it to the body's joints, in its link frame; per beam node a
+/// sphere at the node, in its node frame (TransformFrames), so the string of spheres traces the deformed
+/// centre line.
 visualization_msgs::MarkerArray ToBodyMarkers(const Model& model);
 
 }  // namespace ros

@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "flexmbd/ros/message_conversions.hpp"
 
@@ -18,25 +19,33 @@ struct SampleMessages {
   Energy energy;
   JointReactions reactions;
   SolverStep solver;
-  /// Link frames at the state's time. A sample is interpolated inside the step that ends at the state, so
-  /// transforms are stamped with the state's own time (exact poses) and sent once per such step: stamps
-  /// then bracket every sample time, and tf interpolates between them.
-  std::optional<tf2_msgs::TFMessage> transforms;
+  /// One entry per stop of the model; with none (a model without stops) the message is neither published
+  /// nor recorded.
+  JointContactArray contacts;
+  /// One entry per frictional joint; with none, neither published nor recorded.
+  JointFrictionArray friction;
+  /// Link and beam node frames at the state's time, when has_transforms. A sample is interpolated inside the
+  /// step that ends at the state, so transforms are stamped with the state's own time (exact poses) and sent
+  /// once per such step: stamps then bracket every sample time, and tf interpolates between them.
+  bool has_transforms = false;
+  tf2_msgs::TFMessage transforms;
 };
 
 class SampleConverter {
  public:
-  /// @param model must outlive the converter. @param world_frame parent frame of the link transforms.
+  /// @param model must outlive the converter. @param world_frame parent frame of the transforms.
   SampleConverter(const Model& model, std::string world_frame);
 
-  /// Messages of `sample`, taken while the simulation is at `state` (state.t >= sample.t). Their header.seq
-  /// is the sample's index in the run (0 first): what roscpp's publisher numbers them on the wire, so that a
-  /// bag holds the bytes a subscriber receives.
-  SampleMessages Convert(const OutputSample& sample, const State& state);
+  /// Fills `messages` with those of `sample`, taken while the simulation is at `state` (state.t >=
+  /// sample.t); `messages` may hold an earlier sample's, whose storage it reuses. Their header.stamp is the
+  /// sample's time and header.seq its index in the run (0 first): what roscpp's publisher numbers them on
+  /// the wire, so that a bag holds the bytes a subscriber receives.
+  void Convert(const OutputSample& sample, const State& state, SampleMessages* messages);
 
  private:
   const Model& model_;
   std::string world_frame_;
+  std::vector<TransformFrame> frames_;
   uint32_t next_seq_ = 0;
   std::optional<double> last_transform_time_;  ///< state time of the last transforms sent [s]
 };

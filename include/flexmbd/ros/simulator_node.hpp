@@ -49,12 +49,6 @@ class SimulatorNode {
  private:
   using Clock = std::chrono::steady_clock;
 
-  // A sample computed and not yet sent: the solver may run ahead of the pace and of a pause.
-  struct PendingSample {
-    OutputSample sample;
-    SampleMessages messages;
-  };
-
   void StartRun();
   void Collect(const OutputSample& sample);
   void AdvanceOneChunk();
@@ -82,7 +76,8 @@ class SimulatorNode {
   std::unique_ptr<SampleConverter> converter_;
   std::unique_ptr<Simulation> simulation_;
   const Simulation::SampleSink collect_ = [this](const OutputSample& sample) { Collect(sample); };
-  std::deque<PendingSample> pending_;
+  std::deque<AsyncSampleWriter::RecordPtr> pending_;  ///< computed, not yet sent: the solver may run ahead
+                                                      ///< of the pace and of a pause
   std::optional<double> last_sent_t_;  ///< time of the last sample released to the writer [s]
   long samples_sent_ = 0;
   Clock::time_point first_sent_wall_;  ///< when the run's first sample was sent

@@ -15,6 +15,8 @@ constexpr char kClockTopic[] = "/clock";
 constexpr char kEnergyTopic[] = "energy";
 constexpr char kReactionsTopic[] = "reactions";
 constexpr char kSolverTopic[] = "solver";
+constexpr char kContactsTopic[] = "contacts";
+constexpr char kFrictionTopic[] = "friction";
 constexpr char kMarkersTopic[] = "markers";
 
 /// Fully resolved topic names.
@@ -23,6 +25,8 @@ struct TopicNames {
   std::string energy;        ///< flexmbd/Energy
   std::string reactions;     ///< flexmbd/JointReactions
   std::string solver;        ///< flexmbd/SolverStep
+  std::string contacts;      ///< flexmbd/JointContactArray (models with stops)
+  std::string friction;      ///< flexmbd/JointFrictionArray (models with frictional joints)
   std::string tf;            ///< tf2_msgs/TFMessage
   std::string markers;       ///< visualization_msgs/MarkerArray
 };

@@ -18,11 +18,11 @@ TopicNames ResolveTopicNames(const ::ros::NodeHandle& node, const ::ros::NodeHan
 
 class TopicPublisher : public MessageSink {
  public:
-  /// Advertises `joint_states` and `/tf` in `node`'s namespace, `~energy`, `~reactions`, `~solver` and the
-  /// latched `~markers` (published once, here) in `private_node`'s, and `/clock` if `publish_clock`.
+  /// Advertises `joint_states` and `/tf` in `node`'s namespace, `~energy`, `~reactions`, `~solver`,
+  /// `~contacts` if `model` has stops, `~friction` if it has frictional joints, and the latched `~markers`
+  /// (ToBodyMarkers, published once, here) in `private_node`'s, and `/clock` if `publish_clock`.
   /// `on_connect` is called (from a spinner thread) whenever a subscriber connects to a sample topic.
-  TopicPublisher(::ros::NodeHandle& node, ::ros::NodeHandle& private_node,
-                 const visualization_msgs::MarkerArray& markers, bool publish_clock,
+  TopicPublisher(::ros::NodeHandle& node, ::ros::NodeHandle& private_node, const Model& model, bool publish_clock,
                  const std::function<void()>& on_connect);
 
   /// Publishes while ROS is up (after a shutdown it does nothing); the clock follows the sample time.
@@ -35,7 +35,7 @@ class TopicPublisher : public MessageSink {
   bool HasSubscribers() const;
 
  private:
-  ::ros::Publisher joint_states_, energy_, reactions_, solver_, tf_, markers_, clock_;
+  ::ros::Publisher joint_states_, energy_, reactions_, solver_, contacts_, friction_, tf_, markers_, clock_;
 };
 
 }  // namespace ros
