@@ -29,7 +29,9 @@ TEST(EffectEvents, ContactIntervalsPerStopCloseAtTheEndOfTheRun) {
       {0.6, 0, JointStop::kOpen, JointStop::kContact},    {0.65, 1, JointStop::kOpen, JointStop::kRetracted},
       {0.7, 0, JointStop::kContact, JointStop::kRetracted}, {0.8, 0, JointStop::kRetracted, JointStop::kOpen},
       {0.85, 1, JointStop::kRetracted, JointStop::kOpen}, {0.93, 0, JointStop::kOpen, JointStop::kContact}};
-  EXPECT_EQ(DescribeEffectIntervals(model, events, 1.0),
+  State end = model.initial_state();
+  end.t = 1.0;
+  EXPECT_EQ(DescribeEffectIntervals(model, events, end),
             "stop hinge lower: 3 contact interval(s) [0.5, 0.52] [0.6, 0.7] [0.93, 1] s\n"
             "stop hinge upper: 0 contact interval(s)\n");
 }

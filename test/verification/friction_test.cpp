@@ -53,7 +53,7 @@ ModelSpec FrictionalRotor(double omega0, const FrictionSpec& friction, double t_
 
 double FirstStickTime(const Recording& run) {
   for (const EffectEvent& e : run.events) {
-    if (e.to == JointFriction::kSticking) return e.t;
+    if (e.to == FrictionEffect::kSticking) return e.t;
   }
   return -1;
 }
@@ -157,8 +157,8 @@ TEST(Friction, StickSlipOscillatorMatchesPiecewiseSolution) {
   std::vector<std::pair<double, double>> sticks;
   double begin = 0;
   for (const EffectEvent& e : run.events) {
-    if (e.to == JointFriction::kSticking) begin = e.t;
-    if (e.from == JointFriction::kSticking) sticks.emplace_back(begin, e.t);
+    if (e.to == FrictionEffect::kSticking) begin = e.t;
+    if (e.from == FrictionEffect::kSticking) sticks.emplace_back(begin, e.t);
   }
   ASSERT_GE(sticks.size(), 3u);
   EXPECT_NEAR(sticks[0].second, f_s / (kSpring * kSpeed), 2e-3) << "first breakaway at k V t = F_s";

@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "flexmbd/effects/joint_friction.hpp"
+#include "flexmbd/effects/friction_effect.hpp"
 #include "flexmbd/effects/joint_stop.hpp"
 #include "flexmbd/effects/modal_effect.hpp"
 #include "flexmbd/effects/variable_effects.hpp"
@@ -84,7 +84,7 @@ class Model {
   const std::vector<const ModalEffect*>& modal_effects() const { return modal_effects_; }
   const std::vector<FrictionInfo>& frictions() const { return frictions_; }
   /// The friction elements, in frictions() order.
-  const std::vector<const JointFriction*>& friction_effects() const { return friction_effects_; }
+  const std::vector<const FrictionEffect*>& friction_effects() const { return friction_effects_; }
   /// Name of each joint variable: the joint name, with "/k" appended for the k-th of several.
   const std::vector<std::string>& variable_names() const { return variable_names_; }
 
@@ -112,7 +112,7 @@ class Model {
   std::vector<const JointStop*> stop_effects_;
   std::vector<const ModalEffect*> modal_effects_;
   std::vector<FrictionInfo> frictions_;
-  std::vector<const JointFriction*> friction_effects_;
+  std::vector<const FrictionEffect*> friction_effects_;
   std::vector<std::string> node_names_;  ///< "body <name>" or "beam <name> node <k>", per node
   std::vector<std::string> variable_names_;
   std::vector<std::string> multiplier_names_;

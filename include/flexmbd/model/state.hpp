@@ -51,7 +51,7 @@ struct State {
   double peak_speed = 0.0;          ///< largest node speed so far [m/s]: scale of the local error test
   double peak_spin = 0.0;           ///< largest node angular speed so far [rad/s]
   double external_work = 0.0;       ///< work of applied loads and drives since t = 0 [J]
-  double dissipated_physical = 0.0; ///< energy dissipated by dampers since t = 0 [J]
+  double dissipated_physical = 0.0; ///< energy dissipated by dampers, friction, stop and beam damping since t = 0 [J]
   double dissipated_numerical = 0.0;///< energy removed by the integrator's dissipation since t = 0 [J]
 };
 

@@ -50,7 +50,7 @@ struct OutputSample {
   double kinetic = 0;            ///< [J]
   double potential = 0;          ///< gravity, springs and beam strain energy [J]
   double external_work = 0;      ///< cumulative work of applied loads and drives [J]
-  double dissipated = 0;         ///< cumulative energy dissipated by dampers [J]
+  double dissipated = 0;         ///< cumulative energy dissipated by dampers, friction, stop and beam damping [J]
   double numerical_dissipation = 0;  ///< cumulative energy removed by the integrator [J]
   double dt = 0;                 ///< size of the step that produced the sample [s]
   int iterations = 0;            ///< Newton iterations of that step

@@ -4,7 +4,7 @@
 #include <sstream>
 
 #include "flexmbd/common/error.hpp"
-#include "flexmbd/effects/joint_friction.hpp"
+#include "flexmbd/effects/friction_effect.hpp"
 #include "flexmbd/effects/joint_stop.hpp"
 #include "flexmbd/elements/applied_load.hpp"
 #include "flexmbd/model/effect_validation.hpp"
@@ -323,7 +323,7 @@ Model BuildModel(const ModelSpec& spec) {
         ValidateFriction(Prefix(spec) + "joint '" + joint.name + "': ", friction, joint.type);
         const bool sticks = friction.law != FrictionSpec::Law::kRegularised;
         const int slot = static_cast<int>(model.modal_effects_.size());
-        auto element = std::make_unique<JointFriction>(
+        auto element = std::make_unique<FrictionEffect>(
             friction, *model.joints_.back(), model.variable_unknown(v), sticks ? multiplier : -1,
             sticks ? model.multiplier_unknown(multiplier) : -1,
             model.multiplier_unknown(model.joints_.back()->first_multiplier()), slot);
@@ -331,7 +331,7 @@ Model BuildModel(const ModelSpec& spec) {
           model.multiplier_names_.push_back("friction " + model.variable_names_[v]);
           ++multiplier;
         }
-        state.effects[slot].mode = JointFriction::InitialMode(state.qdot[v]);
+        state.effects[slot].mode = FrictionEffect::InitialMode(state.qdot[v]);
         model.frictions_.push_back({joint.name, v});
         model.friction_effects_.push_back(element.get());
         model.modal_effects_.push_back(element.get());

@@ -51,10 +51,10 @@ std::string DescribeEffectIntervals(const Model& model, const std::vector<Effect
         << " contact interval(s)" << ListIntervals(intervals) << '\n';
   }
   for (size_t k = 0; k < model.frictions().size(); ++k) {
-    const JointFriction& friction = *model.friction_effects()[k];
+    const FrictionEffect& friction = *model.friction_effects()[k];
     const int slot = friction.slot();
     const auto intervals =
-        Intervals(events, slot, JointFriction::kSticking, model.initial_state().effects[slot].mode, t_end);
+        Intervals(events, slot, FrictionEffect::kSticking, model.initial_state().effects[slot].mode, t_end);
     out << "friction " << model.frictions()[k].joint << ": sticking threshold v0 = "
         << friction.StickingSpeed(state.effects[slot]) << " m/s, largest slip speed " << state.effects[slot].reference
         << " m/s, dissipated " << state.effects[slot].work << " J, " << intervals.size() << " sticking interval(s)"

@@ -29,7 +29,7 @@ OutputSample MakeSample(const Model& model, const State& state, const StepContex
     s.reaction_moment.push_back(joint->num_constraints() == 6 ? Vec3(-lambda.tail<3>()) : Vec3::Zero());
   }
   for (const JointStop* stop : model.stop_effects()) s.stops.push_back(stop->Sample(state));
-  for (const JointFriction* friction : model.friction_effects()) s.friction.push_back(friction->Sample(state));
+  for (const FrictionEffect* friction : model.friction_effects()) s.friction.push_back(friction->Sample(state));
   EnergyTally energy;
   for (const auto& element : model.elements()) element->AddEnergy(state, model.solver().gravity, &energy);
   s.kinetic = energy.kinetic;

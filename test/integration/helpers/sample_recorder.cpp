@@ -35,6 +35,8 @@ SampleRecorder::SampleRecorder(const std::string& node_name) : spinner_(1, &queu
   subscribers_.push_back(Subscribe(prefix + "reactions", &Samples::reactions));
   subscribers_.push_back(Subscribe(prefix + "solver", &Samples::solver));
   subscribers_.push_back(Subscribe("/tf", &Samples::transforms));
+  subscribers_.push_back(Subscribe(prefix + "contacts", &Samples::contacts));
+  subscribers_.push_back(Subscribe(prefix + "friction", &Samples::friction));
   spinner_.start();
 }
 

@@ -19,7 +19,8 @@ namespace test {
 
 class SampleRecorder {
  public:
-  /// Subscribes to joint_states and /tf (root namespace) and /<node_name>/{energy,reactions,solver}.
+  /// Subscribes to joint_states and /tf (root namespace) and /<node_name>/{energy,reactions,solver,contacts,
+  /// friction} (the last two are published only for models with stops or friction).
   explicit SampleRecorder(const std::string& node_name);
   ~SampleRecorder();
 

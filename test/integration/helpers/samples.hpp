@@ -15,6 +15,8 @@ struct Samples {
   std::vector<JointReactions> reactions;
   std::vector<SolverStep> solver;
   std::vector<tf2_msgs::TFMessage> transforms;
+  std::vector<JointContactArray> contacts;  ///< only for models with stops
+  std::vector<JointFrictionArray> friction;  ///< only for models with friction
 };
 
 /// Simulated time of a message [s].

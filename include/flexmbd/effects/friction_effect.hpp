@@ -21,12 +21,12 @@
 
 namespace flexmbd {
 
-class JointFriction : public ModalEffect {
+class FrictionEffect : public ModalEffect {
  public:
   enum Mode { kSticking = 0, kSlidingPositive = 1, kSlidingNegative = 2 };
 
   /// @param stick_multiplier the sticking multiplier (-1 for the regularised law, which has none)
-  JointFriction(const FrictionSpec& spec, const Joint& joint, int variable_unknown, int stick_multiplier,
+  FrictionEffect(const FrictionSpec& spec, const Joint& joint, int variable_unknown, int stick_multiplier,
                 int stick_multiplier_unknown, int joint_multiplier_unknown, int slot);
 
   void AddResidual(const StepContext& ctx, Eigen::Ref<Eigen::VectorXd> r,

@@ -1,4 +1,4 @@
-#include "flexmbd/effects/joint_friction.hpp"
+#include "flexmbd/effects/friction_effect.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -20,7 +20,7 @@ constexpr double kCaptureSpeeds = 2.0;
 constexpr double kLanding = 0.98;
 }  // namespace
 
-JointFriction::JointFriction(const FrictionSpec& spec, const Joint& joint, int variable_unknown, int stick_multiplier,
+FrictionEffect::FrictionEffect(const FrictionSpec& spec, const Joint& joint, int variable_unknown, int stick_multiplier,
                              int stick_multiplier_unknown, int joint_multiplier_unknown, int slot)
     : ModalEffect(slot),
       spec_(spec),
@@ -37,12 +37,12 @@ JointFriction::JointFriction(const FrictionSpec& spec, const Joint& joint, int v
   for (int k = 0; k < 3; ++k) unknowns_.push_back(joint_multiplier_unknown + k);
 }
 
-Vec3 JointFriction::AxisW(const State& state) const {
+Vec3 FrictionEffect::AxisW(const State& state) const {
   const Mat3 R_WJ = parent_node_ < 0 ? R_NJ_ : Mat3(state.nodes[parent_node_].R * R_NJ_);
   return R_WJ * axis_J_.normalized();
 }
 
-double JointFriction::NormalForce(const Vec3& lambda, const Vec3& axis_W, Vec3* d_dlambda) const {
+double FrictionEffect::NormalForce(const Vec3& lambda, const Vec3& axis_W, Vec3* d_dlambda) const {
   *d_dlambda = Vec3::Zero();
   if (spec_.law == FrictionSpec::Law::kConstantTorque) return 0.0;
   const Vec3 radial = lambda - axis_W * axis_W.dot(lambda);
@@ -51,21 +51,21 @@ double JointFriction::NormalForce(const Vec3& lambda, const Vec3& axis_W, Vec3* 
   return magnitude + spec_.preload;
 }
 
-double JointFriction::Bound(double mu, double normal) const {
+double FrictionEffect::Bound(double mu, double normal) const {
   return spec_.law == FrictionSpec::Law::kConstantTorque ? spec_.torque : mu * spec_.radius * normal;
 }
 
-double JointFriction::StickingSpeed(const EffectState& effect) const {
+double FrictionEffect::StickingSpeed(const EffectState& effect) const {
   if (spec_.v0 > 0) return spec_.v0;
   return std::max(kAutoStickingFraction * effect.reference, kMinAutoStickingSpeed);
 }
 
-double JointFriction::EndRate(const StepContext& ctx, int variable) {
+double FrictionEffect::EndRate(const StepContext& ctx, int variable) {
   const VariableStep& q = (*ctx.variables)[variable];
   return 2.0 * (q.q_f - q.q_i) / ctx.h - q.qdot_i;
 }
 
-JointFriction::StepForce JointFriction::Evaluate(const StepContext& ctx) const {
+FrictionEffect::StepForce FrictionEffect::Evaluate(const StepContext& ctx) const {
   StepForce f;
   const int mode = TrialMode(ctx);
   if (ctx.mode == AnalysisMode::kStatic || (mode == kSticking && spec_.law != FrictionSpec::Law::kRegularised)) {
@@ -90,7 +90,7 @@ JointFriction::StepForce JointFriction::Evaluate(const StepContext& ctx) const {
   return f;
 }
 
-void JointFriction::AddResidual(const StepContext& ctx, Eigen::Ref<Eigen::VectorXd> r,
+void FrictionEffect::AddResidual(const StepContext& ctx, Eigen::Ref<Eigen::VectorXd> r,
                                 Eigen::Ref<Eigen::VectorXd> magnitude) const {
   const bool sticking = TrialMode(ctx) == kSticking && ctx.mode != AnalysisMode::kStatic;
   if (stick_multiplier_ >= 0) {
@@ -108,7 +108,7 @@ void JointFriction::AddResidual(const StepContext& ctx, Eigen::Ref<Eigen::Vector
   magnitude[0] += std::abs(force);
 }
 
-void JointFriction::AddTangent(const StepContext& ctx, Eigen::Ref<Eigen::MatrixXd> J) const {
+void FrictionEffect::AddTangent(const StepContext& ctx, Eigen::Ref<Eigen::MatrixXd> J) const {
   const bool sticking = TrialMode(ctx) == kSticking && ctx.mode != AnalysisMode::kStatic;
   if (stick_multiplier_ >= 0) {
     if (sticking) {
@@ -123,23 +123,23 @@ void JointFriction::AddTangent(const StepContext& ctx, Eigen::Ref<Eigen::MatrixX
   for (int k = 0; k < 3; ++k) J(0, local_joint_multipliers_ + k) -= f.d_dlambda[k];
 }
 
-double JointFriction::StickingResidual(const StepContext& ctx) const {
+double FrictionEffect::StickingResidual(const StepContext& ctx) const {
   const VariableStep& q = (*ctx.variables)[variable_];
   return q.q_f - q.q_i - 0.5 * ctx.h * q.qdot_i;
 }
 
-double JointFriction::StepDissipation(const StepContext& ctx) const {
+double FrictionEffect::StepDissipation(const StepContext& ctx) const {
   const VariableStep& q = (*ctx.variables)[variable_];
   const bool sticking = TrialMode(ctx) == kSticking && stick_multiplier_ >= 0;
   const double force = sticking ? -(*ctx.lambda)[stick_multiplier_] : Evaluate(ctx).force;
   return -force * (q.q_f - q.q_i);
 }
 
-void JointFriction::AddStepWork(const StepContext& ctx, StepWork* work) const {
+void FrictionEffect::AddStepWork(const StepContext& ctx, StepWork* work) const {
   work->dissipated += StepDissipation(ctx);
 }
 
-int JointFriction::ReviseMode(const StepContext& ctx) const {
+int FrictionEffect::ReviseMode(const StepContext& ctx) const {
   const int mode = TrialMode(ctx);
   if (spec_.law == FrictionSpec::Law::kRegularised) return mode;
   if (mode == kSticking) {
@@ -159,7 +159,7 @@ int JointFriction::ReviseMode(const StepContext& ctx) const {
   return Direction(mode) * EndRate(ctx, variable_) < 0 && slow ? kSticking : mode;
 }
 
-StepLimit JointFriction::Limit(const StepContext& ctx, const State& end) const {
+StepLimit FrictionEffect::Limit(const StepContext& ctx, const State& end) const {
   StepLimit limit;
   if (spec_.law == FrictionSpec::Law::kRegularised || TrialMode(ctx) == kSticking) return limit;
   const double v_i = ctx.start->qdot[variable_], v_f = end.qdot[variable_];
@@ -181,7 +181,7 @@ StepLimit JointFriction::Limit(const StepContext& ctx, const State& end) const {
   return limit;
 }
 
-void JointFriction::Commit(const StepContext& ctx, const State& end, EffectState* effect) const {
+void FrictionEffect::Commit(const StepContext& ctx, const State& end, EffectState* effect) const {
   effect->work += StepDissipation(ctx);
   const double speed = spec_.radius * std::abs(end.qdot[variable_]);
   effect->reference = std::max(effect->reference, speed);
@@ -192,7 +192,7 @@ void JointFriction::Commit(const StepContext& ctx, const State& end, EffectState
   if (effect->mode == kSticking && ctx.start->effects[slot()].mode != kSticking) ++effect->events;
 }
 
-FrictionSample JointFriction::Sample(const State& state) const {
+FrictionSample FrictionEffect::Sample(const State& state) const {
   FrictionSample s;
   const EffectState& effect = state.effects[slot()];
   Vec3 unused;
