@@ -151,17 +151,27 @@ ModelSpec SliderOntoElasticStop(StopSpec::Law law, double stiffness, double rest
   return spec;
 }
 
+double MeasuredRestitution(double e, int steps_per_contact) {
+  ModelSpec spec = SliderOntoElasticStop(StopSpec::Law::kLinear, 1.0e4, e);
+  spec.joints[0].effects[0].stops[0].steps_per_contact = steps_per_contact;
+  const std::vector<OutputSample> samples = RunAll(spec);
+  EXPECT_EQ(Contacts(samples, 0).size(), 1u);
+  EXPECT_FALSE(samples.back().stops[0].in_contact);
+  return -samples.back().velocity[0] / kSliderSpeed;
+}
+
 TEST(ElasticStop, LinearLawReboundsWithTheGivenRestitution) {
   for (double e : {0.3, 0.6, 0.9}) {
-    const std::vector<OutputSample> samples = RunAll(SliderOntoElasticStop(StopSpec::Law::kLinear, 1.0e4, e));
-    ASSERT_EQ(Contacts(samples, 0).size(), 1u);
-    const double measured = -samples.back().velocity[0] / kSliderSpeed;
     // The damping number is exact for the continuous law (docs/theory.md (C4)); what remains is the time
-    // discretisation of an impact resolved in 20 or more steps, measured at 1.5e-4 to 3e-4 of e: 1e-3 of e
-    // (the issue asks for 2%).
-    constexpr double kRestitutionTolerance = 1.0e-3;
-    EXPECT_NEAR(measured, e, kRestitutionTolerance * e) << "e = " << e;
-    EXPECT_FALSE(samples.back().stops[0].in_contact);
+    // discretisation of the impact, which the contact rule (C6) resolves in steps_per_contact steps. At the
+    // default 20 the issue's bound applies, 2% of e (measured 0.84%, 0.34%, 0.1%) ...
+    constexpr double kDefaultResolutionTolerance = 0.02;
+    const double coarse = MeasuredRestitution(e, 20);
+    EXPECT_NEAR(coarse, e, kDefaultResolutionTolerance * e) << "e = " << e;
+    // ... and it converges with the resolution: 4 times the steps divide it by 4.2 or more (measured; the
+    // onset and separation steps, where the law has a kink, keep it near first order), at least 3 required.
+    const double fine = MeasuredRestitution(e, 80);
+    EXPECT_LT(std::abs(fine - e), std::abs(coarse - e) / 3) << "e = " << e;
   }
 }
 

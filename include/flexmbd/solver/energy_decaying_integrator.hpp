@@ -46,6 +46,8 @@ class EnergyDecayingIntegrator : public TimeIntegrator {
   bool ReviseModes();
   // The effects' step-size requests and their state at the end of the accepted step.
   void CommitEffects(const State& start, State* end, StepLimit* limit) const;
+  // True when an effect's own step rule replaces the local error test for the converged step.
+  bool EffectsGovernStep() const;
   void Commit(const State& start, const Eigen::VectorXd& unknowns, double h,
               const std::vector<NodeSchemeCoefficients>& coefficients, State* end);
 

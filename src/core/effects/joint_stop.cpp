@@ -170,6 +170,11 @@ StepLimit ElasticStop::Limit(const StepContext& ctx, const State& end) const {
   return limit;
 }
 
+bool ElasticStop::GovernsStep(const StepContext& ctx) const {
+  const StepForce f = Evaluate(ctx);
+  return f.a_i > 0 || f.a_f > 0;
+}
+
 void ElasticStop::Commit(const StepContext& ctx, const State& end, EffectState* effect) const {
   const StepForce f = Evaluate(ctx);
   if (effect->mode != kRetracted) effect->mode = f.a_f > 0 ? kContact : kOpen;

@@ -160,11 +160,18 @@ StepResult EnergyDecayingIntegrator::Step(const State& start, double h, State* e
   }
   Commit(start, unknowns, h, coefficients.nodes, end);
   CommitEffects(start, end, &result.limit);
-  result.error = LocalErrorEstimate(*end, start.h_prev, model_.solver().error_tol);
+  result.error = EffectsGovernStep() ? 0.0 : LocalErrorEstimate(*end, start.h_prev, model_.solver().error_tol);
   const bool too_large = model_.solver().adaptive && result.error > 1.0;
   result.status = too_large ? StepStatus::kRejectedError : StepStatus::kAccepted;
   if (result.limit.retry < h) result.status = StepStatus::kRejectedEvent;
   return result;
+}
+
+bool EnergyDecayingIntegrator::EffectsGovernStep() const {
+  for (const ModalEffect* effect : model_.modal_effects()) {
+    if (effect->GovernsStep(builder_.context())) return true;
+  }
+  return false;
 }
 
 void EnergyDecayingIntegrator::CommitEffects(const State& start, State* end, StepLimit* limit) const {
