@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "case_builders.hpp"
+#include "run_trace.hpp"
 #include "flexmbd/solver/simulation.hpp"
 
 namespace flexmbd {
@@ -65,22 +66,8 @@ void SetFlapRate(double rate, ModelSpec* spec) {
   spec->bodies[1].w_WB_W = Vec3(0, rate, 0);
 }
 
-struct Trace {
-  std::vector<OutputSample> samples;
-  std::vector<EffectEvent> events;
-};
-
-Trace RunAll(const ModelSpec& spec) {
-  const Model model = BuildModel(spec);
-  Simulation simulation(model);
-  Trace run;
-  simulation.Run([&run](const OutputSample& s) { run.samples.push_back(s); });
-  run.events = simulation.effect_events();
-  return run;
-}
-
 // Time of the accepted step before the one that ended at t (steps are sampled one by one).
-double StepStart(const Trace& run, double t) {
+double StepStart(const test::Trace& run, double t) {
   double start = 0;
   for (const OutputSample& s : run.samples) {
     if (s.t < t) start = s.t;
@@ -91,7 +78,7 @@ double StepStart(const Trace& run, double t) {
 // Time sums of fixed steps agree with the step ends to round-off.
 constexpr double kTimeRoundOff = 1.0e-12;
 
-void ExpectEventInStep(const Trace& run, const EffectEvent& event, double instant, int from, int to) {
+void ExpectEventInStep(const test::Trace& run, const EffectEvent& event, double instant, int from, int to) {
   EXPECT_EQ(event.from, from);
   EXPECT_EQ(event.to, to);
   EXPECT_GT(event.t, instant) << "the event precedes its instant";
@@ -100,7 +87,7 @@ void ExpectEventInStep(const Trace& run, const EffectEvent& event, double instan
 
 TEST(ConditionalStop, OpenStopRetractsAtTheThresholdAndEngagesBelowTheLowerOne) {
   // The flap rests away from its stop: the gap stays open, so the rule acts at the threshold instants.
-  const Trace run = RunAll(HubAndFlap(1.0));
+  const test::Trace run = test::RunTrace(HubAndFlap(1.0));
   ASSERT_EQ(run.events.size(), 2u);
   ExpectEventInStep(run, run.events[0], kRetractTime, JointStop::kOpen, JointStop::kRetracted);
   ExpectEventInStep(run, run.events[1], kEngageTime, JointStop::kRetracted, JointStop::kOpen);
@@ -111,7 +98,7 @@ TEST(ConditionalStop, RetractedStopExertsNoForceAndStaysRetractedWhileClosed) {
   constexpr double kFlapRate = -0.5;
   ModelSpec spec = HubAndFlap(1.0);
   SetFlapRate(kFlapRate, &spec);
-  const Trace run = RunAll(spec);
+  const test::Trace run = test::RunTrace(spec);
   // One event: at 0.885 s the hub is slow again but the flap is beyond the stop, so it does not engage.
   ASSERT_EQ(run.events.size(), 1u);
   ExpectEventInStep(run, run.events[0], kRetractTime, JointStop::kOpen, JointStop::kRetracted);
@@ -128,7 +115,7 @@ TEST(ConditionalStop, RetractedStopExertsNoForceAndStaysRetractedWhileClosed) {
 
   // The same flap without the rule bounces off the stop.
   spec.joints[1].effects[0].stops[0].retraction = {};
-  const Trace control = RunAll(spec);
+  const test::Trace control = test::RunTrace(spec);
   ASSERT_EQ(control.events.size(), 2u);
   EXPECT_GT(control.samples.back().velocity[1], 0.0);
 }
@@ -158,7 +145,7 @@ TEST(ConditionalStop, StopInContactRetractsAtTheSeparation) {
   lift.scale.value = 1.0;
   lift.scale.duration = 1.0;
   spec.loads.push_back(lift);
-  const Trace run = RunAll(spec);
+  const test::Trace run = test::RunTrace(spec);
   // Contact from the first step, retraction at the separation, engagement below the lower threshold.
   ASSERT_EQ(run.events.size(), 3u);
   EXPECT_EQ(run.events[0].to, JointStop::kContact);

@@ -7,25 +7,12 @@
 #include <vector>
 
 #include "case_builders.hpp"
+#include "run_trace.hpp"
 #include "flexmbd/common/error.hpp"
 #include "flexmbd/solver/simulation.hpp"
 
 namespace flexmbd {
 namespace {
-
-struct Recording {
-  std::vector<OutputSample> samples;
-  std::vector<EffectEvent> events;
-};
-
-Recording RunAll(const ModelSpec& spec) {
-  const Model model = BuildModel(spec);
-  Simulation simulation(model);
-  Recording run;
-  simulation.Run([&run](const OutputSample& s) { run.samples.push_back(s); });
-  run.events = simulation.effect_events();
-  return run;
-}
 
 // Rotor J = 0.5 kg m^2 on a frictional revolute joint, no gravity: the normal force is the preload alone.
 constexpr double kInertia = 0.5, kRadius = 0.02, kPreload = 100.0, kMuS = 0.3, kMuK = 0.2;
@@ -51,7 +38,7 @@ ModelSpec FrictionalRotor(double omega0, const FrictionSpec& friction, double t_
   return spec;
 }
 
-double FirstStickTime(const Recording& run) {
+double FirstStickTime(const test::Trace& run) {
   for (const EffectEvent& e : run.events) {
     if (e.to == FrictionEffect::kSticking) return e.t;
   }
@@ -60,7 +47,7 @@ double FirstStickTime(const Recording& run) {
 
 TEST(Friction, SpinDownStopsAtAnalyticTimeAndStaysStuck) {
   constexpr double kOmega0 = 10.0, kV0 = 1.0e-4;
-  const Recording run = RunAll(FrictionalRotor(kOmega0, Friction(kMuS, kMuK, kV0), 15.0));
+  const test::Trace run = test::RunTrace(FrictionalRotor(kOmega0, Friction(kMuS, kMuK, kV0), 15.0));
   const double t_star = kInertia * kOmega0 / kKineticTorque;  // 12.5 s
   // Sticking begins once the slip speed is below v0, at most v0 / (rho * deceleration) = 6e-3 s before t*;
   // 1e-3 t* (the issue asks for 1%) bounds it.
@@ -83,7 +70,7 @@ TEST(Friction, SpinDownStopsAtAnalyticTimeAndStaysStuck) {
 
 TEST(Friction, EqualCoefficientsGivePlainCoulomb) {
   constexpr double kOmega0 = 10.0, kV0 = 1.0e-4;
-  const Recording run = RunAll(FrictionalRotor(kOmega0, Friction(kMuK, kMuK, kV0), 15.0));
+  const test::Trace run = test::RunTrace(FrictionalRotor(kOmega0, Friction(kMuK, kMuK, kV0), 15.0));
   const double t_star = kInertia * kOmega0 / kKineticTorque;
   constexpr double kStopTimeTolerance = 1.0e-3;  // as in the spin-down test
   EXPECT_NEAR(FirstStickTime(run), t_star, kStopTimeTolerance * t_star);
@@ -104,7 +91,7 @@ TEST(Friction, BreakawayWhenTorqueExceedsStaticBound) {
   moment.scale.value = kEnd;
   moment.scale.duration = kEnd;
   spec.loads.push_back(moment);
-  const Recording run = RunAll(spec);
+  const test::Trace run = test::RunTrace(spec);
   const double t_b = kStaticTorque / kRate;
   for (const OutputSample& s : run.samples) {
     if (s.t < t_b - kStep) {
@@ -146,7 +133,7 @@ TEST(Friction, StickSlipOscillatorMatchesPiecewiseSolution) {
   pull.scale.value = 10.0;
   pull.scale.duration = 10.0;
   spec.loads.push_back(pull);
-  const Recording run = RunAll(spec);
+  const test::Trace run = test::RunTrace(spec);
 
   const double f_s = kStaticMu * kMassKg * kG, f_k = kKineticMu * kMassKg * kG, w = std::sqrt(kSpring / kMassKg);
   const double a = (f_s - f_k) * w / kSpring;
@@ -196,7 +183,7 @@ TEST(Friction, RegularisedLawApproachesCoulombAsSpeedShrinks) {
     f.law = FrictionSpec::Law::kRegularised;
     ModelSpec spec = FrictionalRotor(kOmega0, f, t_check);
     spec.solver.dt_max = 0.01;
-    errors.push_back(std::abs(RunAll(spec).samples.back().velocity[0] - coulomb));
+    errors.push_back(std::abs(test::RunTrace(spec).samples.back().velocity[0] - coulomb));
   }
   EXPECT_LT(errors[1], errors[0]);
   EXPECT_LT(errors[2], errors[1]);
@@ -220,7 +207,7 @@ TEST(Friction, NormalForceOfAStuckPendulumIsItsWeightPlusPreload) {
   f.preload = kHoldPreload;
   f.v0 = 1.0e-4;
   spec.joints[0].effects[0].frictions = {f};
-  const Recording run = RunAll(spec);
+  const test::Trace run = test::RunTrace(spec);
   for (size_t k = 1; k < run.samples.size(); ++k) {
     const FrictionSample& s = run.samples[k].friction[0];
     EXPECT_TRUE(s.sticking);

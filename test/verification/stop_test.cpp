@@ -7,18 +7,13 @@
 #include <vector>
 
 #include "case_builders.hpp"
+#include "run_trace.hpp"
 #include "flexmbd/solver/simulation.hpp"
 
 namespace flexmbd {
 namespace {
 
-std::vector<OutputSample> RunAll(const ModelSpec& spec) {
-  const Model model = BuildModel(spec);
-  Simulation simulation(model);
-  std::vector<OutputSample> samples;
-  simulation.Run([&samples](const OutputSample& s) { samples.push_back(s); });
-  return samples;
-}
+std::vector<OutputSample> RunAll(const ModelSpec& spec) { return test::RunTrace(spec).samples; }
 
 // One contact of stop 0: the samples from the last one before it to the first one after it.
 struct Contact {
