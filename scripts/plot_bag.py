@@ -33,6 +33,11 @@ SAMPLE_TYPES = {
     "reactions": "flexmbd/JointReactions",
     "solver": "flexmbd/SolverStep",
 }
+# published only by models with stops or frictional joints
+OPTIONAL_TYPES = {
+    "contacts": "flexmbd/JointContactArray",
+    "friction": "flexmbd/JointFrictionArray",
+}
 # the CSV's energy columns, in its order; total = kinetic + potential
 ENERGY_FIELDS = ("kinetic", "potential", "total", "external_work", "dissipated", "numerical_dissipation")
 
@@ -41,7 +46,7 @@ def find_sample_topics(bag):
     """Returns {kind: topic} for the sample topics, found by message type (any node name)."""
     found = {}
     for topic, info in bag.get_type_and_topic_info().topics.items():
-        for kind, msg_type in SAMPLE_TYPES.items():
+        for kind, msg_type in list(SAMPLE_TYPES.items()) + list(OPTIONAL_TYPES.items()):
             if info.msg_type == msg_type:
                 if kind in found:
                     raise BagError("two %s topics (%s, %s): expected one node's samples"
@@ -84,6 +89,14 @@ def read_columns(path):
                 add("joint.%s.reaction_force_%s" % (name, axis), getattr(reactions.force[k], axis))
             for axis in "xyz":
                 add("joint.%s.reaction_moment_%s" % (name, axis), getattr(reactions.moment[k], axis))
+    for contacts in messages.get("contacts", []):
+        for c in contacts.contacts:
+            for field in ("in_contact", "force", "torque", "approach"):
+                add("stop.%s.%s.%s" % (c.joint, c.stop, field), float(getattr(c, field)))
+    for friction in messages.get("friction", []):
+        for f in friction.joints:
+            for field in ("sticking", "torque", "normal_force", "slip_velocity", "work"):
+                add("friction.%s.%s" % (f.joint, field), float(getattr(f, field)))
     for energy in messages["energy"]:
         for field in ENERGY_FIELDS:
             add("energy." + field, energy.kinetic + energy.potential if field == "total" else getattr(energy, field))

@@ -8,6 +8,8 @@ The CSV's first row is a header and its first column is `t` (time, s). Columns a
   joint.<name>.reaction_force_<x|y|z> -> <stem>_joint_reaction_force.png (force [N])
   joint.<name>.reaction_moment_<x|y|z> -> <stem>_joint_reaction_moment.png (moment [N m])
   joint.<name>.<other>   -> <stem>_joint_<other>.png
+  stop.<joint>.<stop>.<q> -> <stem>_stop_<q>.png      (in_contact, force [N], torque, approach [m])
+  friction.<joint>.<q>   -> <stem>_friction_<q>.png     (sticking, torque, normal_force [N], slip_velocity, work)
   energy.<kind>          -> <stem>_energy.png           (energy [J])
   solver.dt              -> <stem>_solver_dt.png        (step size [s], log scale)
   solver.iterations      -> <stem>_solver_iterations.png (Newton iterations per step)
@@ -42,6 +44,15 @@ KNOWN_GROUPS = {
     "joint_effort": ("Joint efforts", "effort [N m or N]", False),
     "joint_reaction_force": ("Joint reaction forces (on the child, world frame)", "force [N]", False),
     "joint_reaction_moment": ("Joint reaction moments (on the child)", "moment [N m]", False),
+    "stop_in_contact": ("Stops in contact", "in contact (1) or open (0)", False),
+    "stop_force": ("Stop contact forces", "force [N]", False),
+    "stop_torque": ("Stop forces on the joint variables", "torque [N m or N]", False),
+    "stop_approach": ("Stop approaches (elastic stops)", "approach [m]", False),
+    "friction_sticking": ("Joints sticking", "sticking (1) or sliding (0)", False),
+    "friction_torque": ("Friction forces on the joint variables", "torque [N m or N]", False),
+    "friction_normal_force": ("Friction normal forces", "force [N]", False),
+    "friction_slip_velocity": ("Slip velocities at the races", "velocity [m/s]", False),
+    "friction_work": ("Energy dissipated by friction", "energy [J]", False),
     "energy": ("Energy", "energy [J]", False),
     "solver_dt": ("Solver step size", "step size [s]", True),
     "solver_iterations": ("Newton iterations per step", "iterations", False),
@@ -100,6 +111,8 @@ def group_key(name):
         if component:  # joint.<name>.reaction_force_x -> one plot for all components
             return "joint_" + component.group(1), "%s %s" % (joint, component.group(2))
         return "joint_" + quantity, joint
+    if parts[0] in ("stop", "friction") and len(parts) >= 3:  # one plot per quantity, a line per stop or joint
+        return parts[0] + "_" + parts[-1], ".".join(parts[1:-1])
     if parts[0] == "energy" and len(parts) >= 2:
         return "energy", ".".join(parts[1:])
     if parts[0] == "solver" and len(parts) >= 2:
