@@ -7,10 +7,7 @@
 #include <cmath>
 
 #include "helpers/csv_table.hpp"
-#include "helpers/node_process.hpp"
-#include "helpers/runner.hpp"
-#include "helpers/sample_recorder.hpp"
-#include "helpers/temp_dir.hpp"
+#include "helpers/node_run.hpp"
 
 namespace flexmbd {
 namespace test {
@@ -25,37 +22,17 @@ constexpr double kMass = 2.0, kArm = 0.5, kInertia = 0.16667 + kMass * kArm * kA
 constexpr double kStopAngle = 1.0472, kRadius = 0.1, kStiffness = 5.0e6, kExponent = 1.5;
 // Same run, same steps: the node's records equal the runner's CSV to its 17 digits.
 constexpr double kSameRunTolerance = 1.0e-9;
-constexpr std::chrono::seconds kRunTimeout(60), kExitTimeout(20);
 
-struct RunRecord {
-  bool reached_end = false;
-  std::string node_output;
-  Samples topics;
-  CsvTable csv;
-};
-
-RunRecord RecordRun() {
-  const TempDir dir("flexmbd_effect_contacts");
-  RunRecord record;
-  {
-    SampleRecorder recorder(kNodeName);
-    NodeProcess node(kNodeName, {"_real_time_factor:=0.0", "_wait_for_subscribers:=1", "_keep_alive:=true"});
-    record.reached_end = recorder.WaitUntil(
-        [](const Samples& s) { return !s.contacts.empty() && TimeOf(s.contacts.back()) >= kEndTime - 1e-9; },
-        kRunTimeout);
-    node.Interrupt();
-    node.WaitForExit(kExitTimeout);
-    record.node_output = node.Output();
-    record.topics = recorder.Snapshot();
-  }
-  const std::string csv = dir.File("runner.csv");
-  if (RunRunner(kUrdf, kConfig, "--csv " + csv) == 0) record.csv = ReadCsv(csv);
-  return record;
+NodeRun RecordRun() {
+  return RecordNodeAndRunner({kNodeName, kUrdf, kConfig, /*record_bag=*/false,
+                              [](const Samples& s) {
+                                return !s.contacts.empty() && TimeOf(s.contacts.back()) >= kEndTime - 1e-9;
+                              }});
 }
 
 class EffectContacts : public testing::Test {
  protected:
-  static void SetUpTestSuite() { record_ = new RunRecord(RecordRun()); }
+  static void SetUpTestSuite() { record_ = new NodeRun(RecordRun()); }
   static void TearDownTestSuite() { delete record_; }
   void SetUp() override {
     ASSERT_TRUE(record_->reached_end) << "~contacts did not reach t = " << kEndTime << " s; node output:\n"
@@ -68,10 +45,10 @@ class EffectContacts : public testing::Test {
     }
     throw std::runtime_error("no stop hinge/upper in ~contacts");
   }
-  static RunRecord* record_;
+  static NodeRun* record_;
 };
 
-RunRecord* EffectContacts::record_ = nullptr;
+NodeRun* EffectContacts::record_ = nullptr;
 
 TEST_F(EffectContacts, ImpactsHappenWithForcesBetweenRestAndTheElasticPeak) {
   // Released from rest, the rod meets the stop at w^2 = 2 m g a sin(60 deg) / I; the contact point then

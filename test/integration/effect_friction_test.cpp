@@ -7,10 +7,7 @@
 #include <cmath>
 
 #include "helpers/csv_table.hpp"
-#include "helpers/node_process.hpp"
-#include "helpers/runner.hpp"
-#include "helpers/sample_recorder.hpp"
-#include "helpers/temp_dir.hpp"
+#include "helpers/node_run.hpp"
 
 namespace flexmbd {
 namespace test {
@@ -24,46 +21,26 @@ constexpr double kEndTime = 30.0;
 constexpr double kSameRunTolerance = 1.0e-9;
 // The case: mu_k 0.15 on 0.02 m races, 50 N preload.
 constexpr double kKineticBoundPerNewton = 0.15 * 0.02, kPreload = 50.0;
-constexpr std::chrono::seconds kRunTimeout(60), kExitTimeout(20);
 
-struct RunRecord {
-  bool reached_end = false;
-  std::string node_output;
-  Samples topics;
-  CsvTable csv;
-};
-
-RunRecord RecordRun() {
-  const TempDir dir("flexmbd_effect_friction");
-  RunRecord record;
-  {
-    SampleRecorder recorder(kNodeName);
-    NodeProcess node(kNodeName, {"_real_time_factor:=0.0", "_wait_for_subscribers:=1", "_keep_alive:=true"});
-    record.reached_end = recorder.WaitUntil(
-        [](const Samples& s) { return !s.friction.empty() && TimeOf(s.friction.back()) >= kEndTime - 1e-9; },
-        kRunTimeout);
-    node.Interrupt();
-    node.WaitForExit(kExitTimeout);
-    record.node_output = node.Output();
-    record.topics = recorder.Snapshot();
-  }
-  const std::string csv = dir.File("runner.csv");
-  if (RunRunner(kUrdf, kConfig, "--csv " + csv) == 0) record.csv = ReadCsv(csv);
-  return record;
+NodeRun RecordRun() {
+  return RecordNodeAndRunner({kNodeName, kUrdf, kConfig, /*record_bag=*/false,
+                              [](const Samples& s) {
+                                return !s.friction.empty() && TimeOf(s.friction.back()) >= kEndTime - 1e-9;
+                              }});
 }
 
 class EffectFriction : public testing::Test {
  protected:
-  static void SetUpTestSuite() { record_ = new RunRecord(RecordRun()); }
+  static void SetUpTestSuite() { record_ = new NodeRun(RecordRun()); }
   static void TearDownTestSuite() { delete record_; }
   void SetUp() override {
     ASSERT_TRUE(record_->reached_end) << "~friction did not reach t = " << kEndTime << " s; node output:\n"
                                       << record_->node_output;
   }
-  static RunRecord* record_;
+  static NodeRun* record_;
 };
 
-RunRecord* EffectFriction::record_ = nullptr;
+NodeRun* EffectFriction::record_ = nullptr;
 
 TEST_F(EffectFriction, EveryHingeSlidesAndSticks) {
   const std::vector<JointFrictionArray>& friction = record_->topics.friction;
