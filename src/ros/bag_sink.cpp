@@ -39,6 +39,7 @@ void BagSink::Write(const SampleMessages& messages) {
   bag_.write(topics_.solver, time, messages.solver);
   if (!messages.contacts.contacts.empty()) bag_.write(topics_.contacts, time, messages.contacts);
   if (!messages.friction.joints.empty()) bag_.write(topics_.friction, time, messages.friction);
+  if (!messages.beam_loads.stations.empty()) bag_.write(topics_.beam_loads, time, messages.beam_loads);
   if (messages.has_transforms && !messages.transforms.transforms.empty()) {
     bag_.write(topics_.tf, BagTime(messages.transforms.transforms.front().header.stamp), messages.transforms);
   }

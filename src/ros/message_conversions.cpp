@@ -116,6 +116,29 @@ void FillJointFriction(const std::vector<FrictionInfo>& frictions, const OutputS
                    });
 }
 
+void FillBeamLoads(const std::vector<BeamStationInfo>& stations, const OutputSample& sample, BeamLoadsArray* msg) {
+  FillNamedRecords(stations, sample.beam_stations, &msg->stations,
+                   [](const BeamStationInfo& info, const BeamStationSample& value, BeamStationLoads* station) {
+                     station->beam = info.beam;
+                     station->station = info.index;
+                     station->s = info.s;
+                     station->N = value.load[0];
+                     station->V2 = value.load[1];
+                     station->V3 = value.load[2];
+                     station->T = value.load[3];
+                     station->M2 = value.load[4];
+                     station->M3 = value.load[5];
+                     station->e1 = value.strain[0];
+                     station->g2 = value.strain[1];
+                     station->g3 = value.strain[2];
+                     station->k1 = value.strain[3];
+                     station->k2 = value.strain[4];
+                     station->k3 = value.strain[5];
+                     SetVector3(value.displacement, &station->displacement);
+                     SetVector3(value.rotation, &station->rotation);
+                   });
+}
+
 void FillTransforms(const std::vector<TransformFrame>& frames, const State& state, const std::string& world_frame,
                     tf2_msgs::TFMessage* msg) {
   const ::ros::Time stamp = ToStamp(state.t);

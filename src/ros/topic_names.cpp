@@ -11,6 +11,7 @@ TopicNames DefaultTopicNames() {
                     private_prefix + kSolverTopic,
                     private_prefix + kContactsTopic,
                     private_prefix + kFrictionTopic,
+                    private_prefix + kBeamLoadsTopic,
                     kTfTopic,
                     private_prefix + kMarkersTopic};
 }

@@ -29,6 +29,7 @@ TopicNames ResolveTopicNames(const ::ros::NodeHandle& node, const ::ros::NodeHan
                     private_node.resolveName(kSolverTopic),
                     private_node.resolveName(kContactsTopic),
                     private_node.resolveName(kFrictionTopic),
+                    private_node.resolveName(kBeamLoadsTopic),
                     node.resolveName(kTfTopic),
                     private_node.resolveName(kMarkersTopic)};
 }
@@ -46,6 +47,9 @@ TopicPublisher::TopicPublisher(::ros::NodeHandle& node, ::ros::NodeHandle& priva
   }
   if (!model.frictions().empty()) {
     friction_ = AdvertiseSamples<JointFrictionArray>(private_node, kFrictionTopic, on_connect);
+  }
+  if (!model.beam_stations().empty()) {
+    beam_loads_ = AdvertiseSamples<BeamLoadsArray>(private_node, kBeamLoadsTopic, on_connect);
   }
   if (publish_clock) clock_ = node.advertise<rosgraph_msgs::Clock>(kClockTopic, kClockQueueSize);
   markers_.publish(ToBodyMarkers(model));
@@ -65,19 +69,25 @@ void TopicPublisher::Write(const SampleMessages& messages) {
   solver_.publish(messages.solver);
   if (contacts_) contacts_.publish(messages.contacts);
   if (friction_) friction_.publish(messages.friction);
+  if (beam_loads_) beam_loads_.publish(messages.beam_loads);
 }
 
 bool TopicPublisher::HasSubscribers() const {
   for (const ::ros::Publisher* publisher :
-       {&joint_states_, &energy_, &reactions_, &solver_, &contacts_, &friction_, &tf_, &markers_, &clock_}) {
+       {&joint_states_, &energy_, &reactions_, &solver_, &contacts_, &friction_, &beam_loads_, &tf_, &markers_,
+        &clock_}) {
     if (*publisher && publisher->getNumSubscribers() > 0) return true;
   }
   return false;
 }
 
 int TopicPublisher::MinSampleSubscribers() const {
-  return static_cast<int>(std::min({joint_states_.getNumSubscribers(), energy_.getNumSubscribers(),
-                                    reactions_.getNumSubscribers(), solver_.getNumSubscribers()}));
+  uint32_t fewest = std::min({joint_states_.getNumSubscribers(), energy_.getNumSubscribers(),
+                              reactions_.getNumSubscribers(), solver_.getNumSubscribers()});
+  for (const ::ros::Publisher* optional : {&contacts_, &friction_, &beam_loads_}) {
+    if (*optional) fewest = std::min(fewest, optional->getNumSubscribers());
+  }
+  return static_cast<int>(fewest);
 }
 
 }  // namespace ros

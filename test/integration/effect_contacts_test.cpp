@@ -6,7 +6,8 @@
 
 #include <cmath>
 
-#include "helpers/recorded_run.hpp"
+#include "helpers/csv_table.hpp"
+#include "helpers/node_run.hpp"
 
 namespace flexmbd {
 namespace test {
@@ -22,13 +23,16 @@ constexpr double kStopAngle = 1.0472, kRadius = 0.1, kStiffness = 5.0e6, kExpone
 // Same run, same steps: the node's records equal the runner's CSV to its 17 digits.
 constexpr double kSameRunTolerance = 1.0e-9;
 
+NodeRun RecordRun() {
+  return RecordNodeAndRunner({kNodeName, kUrdf, kConfig, /*record_bag=*/false,
+                              [](const Samples& s) {
+                                return !s.contacts.empty() && TimeOf(s.contacts.back()) >= kEndTime - 1e-9;
+                              }});
+}
+
 class EffectContacts : public testing::Test {
  protected:
-  static void SetUpTestSuite() {
-    record_ = new RecordedRun(RecordNodeAndRunner(kNodeName, kUrdf, kConfig, [](const Samples& s) {
-      return !s.contacts.empty() && TimeOf(s.contacts.back()) >= kEndTime - 1e-9;
-    }));
-  }
+  static void SetUpTestSuite() { record_ = new NodeRun(RecordRun()); }
   static void TearDownTestSuite() { delete record_; }
   void SetUp() override {
     ASSERT_TRUE(record_->reached_end) << "~contacts did not reach t = " << kEndTime << " s; node output:\n"
@@ -41,10 +45,10 @@ class EffectContacts : public testing::Test {
     }
     throw std::runtime_error("no stop hinge/upper in ~contacts");
   }
-  static RecordedRun* record_;
+  static NodeRun* record_;
 };
 
-RecordedRun* EffectContacts::record_ = nullptr;
+NodeRun* EffectContacts::record_ = nullptr;
 
 TEST_F(EffectContacts, ImpactsHappenWithForcesBetweenRestAndTheElasticPeak) {
   // Released from rest, the rod meets the stop at w^2 = 2 m g a sin(60 deg) / I; the contact point then

@@ -6,7 +6,8 @@
 
 #include <cmath>
 
-#include "helpers/recorded_run.hpp"
+#include "helpers/csv_table.hpp"
+#include "helpers/node_run.hpp"
 
 namespace flexmbd {
 namespace test {
@@ -21,22 +22,25 @@ constexpr double kSameRunTolerance = 1.0e-9;
 // The case: mu_k 0.15 on 0.02 m races, 50 N preload.
 constexpr double kKineticBoundPerNewton = 0.15 * 0.02, kPreload = 50.0;
 
+NodeRun RecordRun() {
+  return RecordNodeAndRunner({kNodeName, kUrdf, kConfig, /*record_bag=*/false,
+                              [](const Samples& s) {
+                                return !s.friction.empty() && TimeOf(s.friction.back()) >= kEndTime - 1e-9;
+                              }});
+}
+
 class EffectFriction : public testing::Test {
  protected:
-  static void SetUpTestSuite() {
-    record_ = new RecordedRun(RecordNodeAndRunner(kNodeName, kUrdf, kConfig, [](const Samples& s) {
-      return !s.friction.empty() && TimeOf(s.friction.back()) >= kEndTime - 1e-9;
-    }));
-  }
+  static void SetUpTestSuite() { record_ = new NodeRun(RecordRun()); }
   static void TearDownTestSuite() { delete record_; }
   void SetUp() override {
     ASSERT_TRUE(record_->reached_end) << "~friction did not reach t = " << kEndTime << " s; node output:\n"
                                       << record_->node_output;
   }
-  static RecordedRun* record_;
+  static NodeRun* record_;
 };
 
-RecordedRun* EffectFriction::record_ = nullptr;
+NodeRun* EffectFriction::record_ = nullptr;
 
 TEST_F(EffectFriction, EveryHingeSlidesAndSticks) {
   const std::vector<JointFrictionArray>& friction = record_->topics.friction;

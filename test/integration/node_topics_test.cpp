@@ -7,12 +7,9 @@
 
 #include <cmath>
 
-#include "helpers/bag_samples.hpp"
 #include "helpers/csv_table.hpp"
-#include "helpers/node_process.hpp"
-#include "helpers/runner.hpp"
+#include "helpers/node_run.hpp"
 #include "helpers/sample_recorder.hpp"
-#include "helpers/temp_dir.hpp"
 
 namespace flexmbd {
 namespace test {
@@ -33,51 +30,24 @@ constexpr double kSameRunTolerance = 1.0e-12;
 // The joints hold to the Newton tolerance (tol = 1e-8, relative): link frames sit on the joint axes to well
 // under a micrometre.
 constexpr double kJointPlacementTolerance = 1.0e-6;
-// Bounds on start-up, a 2 s run at full speed and shutdown on a loaded 2-core machine; met in well under 1 s.
-constexpr std::chrono::seconds kRunTimeout(60);
-constexpr std::chrono::seconds kExitTimeout(20);
 
-struct RunRecord {
-  bool reached_end = false;
-  std::optional<int> exit_status;
-  std::string node_output;
-  Samples topics;
-  Samples bag;
-  CsvTable csv;
-};
-
-RunRecord RecordRun() {
-  const TempDir dir("flexmbd_node_topics");
-  const std::string bag = dir.File("node.bag");
-  RunRecord record;
-  {
-    SampleRecorder recorder(kNodeName);
-    NodeProcess node(kNodeName,
-                     {"_bag:=" + bag, "_real_time_factor:=0.0", "_wait_for_subscribers:=1", "_keep_alive:=true"});
-    record.reached_end = recorder.WaitForTime(kEndTime, kRunTimeout);
-    node.Interrupt();
-    record.exit_status = node.WaitForExit(kExitTimeout);
-    record.node_output = node.Output();
-    record.topics = recorder.Snapshot();
-  }
-  record.bag = ReadBagSamples(bag, kNodeName);
-  const std::string csv = dir.File("runner.csv");
-  if (RunRunner(kUrdf, kConfig, "--csv " + csv) == 0) record.csv = ReadCsv(csv);
-  return record;
+NodeRun RecordRun() {
+  return RecordNodeAndRunner({kNodeName, kUrdf, kConfig, /*record_bag=*/true,
+                              [](const Samples& s) { return EverySampleTopicReached(s, kEndTime); }});
 }
 
 class NodeTopics : public testing::Test {
  protected:
-  static void SetUpTestSuite() { record_ = new RunRecord(RecordRun()); }
+  static void SetUpTestSuite() { record_ = new NodeRun(RecordRun()); }
   static void TearDownTestSuite() { delete record_; }
   void SetUp() override {
     ASSERT_TRUE(record_->reached_end) << "the topics did not reach t = " << kEndTime << " s; node output:\n"
                                       << record_->node_output;
   }
-  static RunRecord* record_;
+  static NodeRun* record_;
 };
 
-RunRecord* NodeTopics::record_ = nullptr;
+NodeRun* NodeTopics::record_ = nullptr;
 
 TEST_F(NodeTopics, NodeExitsWithZeroOnSigint) {
   EXPECT_EQ(record_->exit_status, std::optional<int>(0)) << record_->node_output;

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include "../integration/helpers/bag_samples.hpp"
+#include "../integration/helpers/beam_loads_csv.hpp"
 #include "../integration/helpers/csv_table.hpp"
 #include "flexmbd/ros/topic_names.hpp"
 #include "ros_test_util.hpp"
@@ -52,6 +53,17 @@ TEST(RunnerBag, HoldsTheSamplesOfTheCsv) {
     EXPECT_EQ(bag.solver[k].dt, row[csv.Column("solver.dt")]) << "row " << k;
     EXPECT_EQ(bag.solver[k].iterations, row[csv.Column("solver.iterations")]) << "row " << k;
   }
+}
+
+TEST(RunnerBag, HoldsTheBeamLoadsOfTheCsv) {
+  // The beam arm with stations of the ~beam_loads rostest: the bag and the CSV of one run, so exactly equal.
+  const std::string bag_path = testing::TempDir() + "runner_beam.bag";
+  const std::string csv_path = testing::TempDir() + "runner_beam.csv";
+  ASSERT_EQ(test::RunRunner("test/data/urdf/beam_arm.urdf", "test/integration/data/beam_arm_stations.yaml",
+                            "--bag " + bag_path + " --csv " + csv_path),
+            0);
+  const test::Samples bag = test::ReadBagSamples(bag_path, std::string(kDefaultNodeName).substr(1));
+  test::ExpectBeamLoadsMatchCsv(bag.beam_loads, test::ReadCsv(csv_path), 0.0);
 }
 
 TEST(RunnerBag, UnwritableBagPathExitsWithTwo) {

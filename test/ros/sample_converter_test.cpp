@@ -72,10 +72,12 @@ TEST(SampleConverter, TransformStampsBracketEverySampleOfARun) {
 TEST(SampleConverter, HeadersCarryTheSampleIndexAndTime) {
   // Reference: header.seq = the sample's index in the run and header.stamp its time, the same on every
   // sample topic (docs/ros.md).
-  // the beam arm, sampled at every step of its first 3 ms (a few steps: the beam is slow to step)
+  // the beam arm with one station, sampled at every step of its first 3 ms (a few steps: the beam is slow to
+  // step)
   ModelSpec spec = LoadModelSpec(test::SourcePath("test/data/urdf/beam_arm.urdf"),
                                  test::SourcePath("test/data/yaml/beam_arm.yaml"));
   spec.output.rate_hz = 0.0;
+  spec.output.beam_stations["arm"] = {0.5};
   spec.solver.t_end = 3.0e-3;
   const Model model = BuildModel(spec);
   SampleConverter converter(model, "world");
@@ -92,12 +94,14 @@ TEST(SampleConverter, HeadersCarryTheSampleIndexAndTime) {
     const SampleMessages& messages = converted[k];
     for (const std_msgs::Header* header :
          {&messages.joint_state.header, &messages.energy.header, &messages.reactions.header, &messages.solver.header,
-          &messages.contacts.header, &messages.friction.header}) {
+          &messages.contacts.header, &messages.friction.header, &messages.beam_loads.header}) {
       EXPECT_EQ(header->seq, k);
       EXPECT_NEAR(header->stamp.toSec(), times[k], kStampResolution) << "sample " << k;
     }
   }
   EXPECT_GT(times.back(), 0.0);
+  ASSERT_EQ(converted.back().beam_loads.stations.size(), 1u);
+  EXPECT_EQ(converted.back().beam_loads.stations[0].beam, "arm");
   // the beam's 7 node frames and the tip's link frame, every step
   ASSERT_TRUE(converted.back().has_transforms);
   EXPECT_EQ(converted.back().transforms.transforms.size(), 8u);

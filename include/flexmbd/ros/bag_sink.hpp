@@ -1,8 +1,9 @@
 #pragma once
 /// @file
 /// Records every sample to a bag through the rosbag C++ API (no master needed). Layout (docs/ros.md): the
-/// sample topics of TopicNames, each message recorded at its header stamp (~contacts and ~friction only
-/// for a model that has stops or frictional joints), plus the markers once at the start.
+/// sample topics of TopicNames, each message recorded at its header stamp (~contacts, ~friction and
+/// ~beam_loads only for a model that has stops, frictional joints or beam stations), plus the markers once at
+/// the start.
 
 #include <rosbag/bag.h>
 

@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "flexmbd/BeamLoadsArray.h"
 #include "flexmbd/Energy.h"
 #include "flexmbd/JointContactArray.h"
 #include "flexmbd/JointFrictionArray.h"
@@ -46,6 +47,10 @@ void FillJointContacts(const std::vector<StopInfo>& stops, const OutputSample& s
 /// order and size).
 void FillJointFriction(const std::vector<FrictionInfo>& frictions, const OutputSample& sample,
                        JointFrictionArray* msg);
+
+/// One entry per beam station: sample.beam_stations[k] named by stations[k] (Model::beam_stations(): the same
+/// order and size).
+void FillBeamLoads(const std::vector<BeamStationInfo>& stations, const OutputSample& sample, BeamLoadsArray* msg);
 
 /// One transform per frame of `frames` (TransformFrames), placed by its node in `state`, in `world_frame`,
 /// stamped with the state's time.

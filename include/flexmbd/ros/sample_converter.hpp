@@ -24,6 +24,8 @@ struct SampleMessages {
   JointContactArray contacts;
   /// One entry per frictional joint; with none, neither published nor recorded.
   JointFrictionArray friction;
+  /// One entry per station of output.beam_stations; with none, neither published nor recorded.
+  BeamLoadsArray beam_loads;
   /// Link and beam node frames at the state's time, when has_transforms. A sample is interpolated inside the
   /// step that ends at the state, so transforms are stamped with the state's own time (exact poses) and sent
   /// once per such step: stamps then bracket every sample time, and tf interpolates between them.

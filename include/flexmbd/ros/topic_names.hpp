@@ -17,6 +17,7 @@ constexpr char kReactionsTopic[] = "reactions";
 constexpr char kSolverTopic[] = "solver";
 constexpr char kContactsTopic[] = "contacts";
 constexpr char kFrictionTopic[] = "friction";
+constexpr char kBeamLoadsTopic[] = "beam_loads";
 constexpr char kMarkersTopic[] = "markers";
 
 /// Fully resolved topic names.
@@ -27,6 +28,7 @@ struct TopicNames {
   std::string solver;        ///< flexmbd/SolverStep
   std::string contacts;      ///< flexmbd/JointContactArray (models with stops)
   std::string friction;      ///< flexmbd/JointFrictionArray (models with frictional joints)
+  std::string beam_loads;    ///< flexmbd/BeamLoadsArray (models with beam stations)
   std::string tf;            ///< tf2_msgs/TFMessage
   std::string markers;       ///< visualization_msgs/MarkerArray
 };

@@ -19,7 +19,8 @@ TopicNames ResolveTopicNames(const ::ros::NodeHandle& node, const ::ros::NodeHan
 class TopicPublisher : public MessageSink {
  public:
   /// Advertises `joint_states` and `/tf` in `node`'s namespace, `~energy`, `~reactions`, `~solver`,
-  /// `~contacts` if `model` has stops, `~friction` if it has frictional joints, and the latched `~markers`
+  /// `~contacts` if `model` has stops, `~friction` if it has frictional joints, `~beam_loads` if it has beam
+  /// stations (output.beam_stations), and the latched `~markers`
   /// (ToBodyMarkers, published once, here) in `private_node`'s, and `/clock` if `publish_clock`.
   /// `on_connect` is called (from a spinner thread) whenever a subscriber connects to a sample topic.
   TopicPublisher(::ros::NodeHandle& node, ::ros::NodeHandle& private_node, const Model& model, bool publish_clock,
@@ -28,14 +29,16 @@ class TopicPublisher : public MessageSink {
   /// Publishes while ROS is up (after a shutdown it does nothing); the clock follows the sample time.
   void Write(const SampleMessages& messages) override;
 
-  /// Fewest subscribers over the sample topics (joint_states, ~energy, ~reactions, ~solver).
+  /// Fewest subscribers over the sample topics (joint_states, ~energy, ~reactions, ~solver, and ~contacts,
+  /// ~friction, ~beam_loads where advertised).
   int MinSampleSubscribers() const;
 
   /// True if any topic has a subscriber.
   bool HasSubscribers() const;
 
  private:
-  ::ros::Publisher joint_states_, energy_, reactions_, solver_, contacts_, friction_, tf_, markers_, clock_;
+  ::ros::Publisher joint_states_, energy_, reactions_, solver_, contacts_, friction_, beam_loads_, tf_, markers_,
+      clock_;
 };
 
 }  // namespace ros

@@ -37,6 +37,7 @@ SampleRecorder::SampleRecorder(const std::string& node_name) : spinner_(1, &queu
   subscribers_.push_back(Subscribe("/tf", &Samples::transforms));
   subscribers_.push_back(Subscribe(prefix + "contacts", &Samples::contacts));
   subscribers_.push_back(Subscribe(prefix + "friction", &Samples::friction));
+  subscribers_.push_back(Subscribe(prefix + "beam_loads", &Samples::beam_loads));
   spinner_.start();
 }
 
@@ -50,12 +51,12 @@ bool SampleRecorder::WaitUntil(const std::function<bool(const Samples&)>& done, 
   return arrived_.wait_for(lock, timeout, [&] { return done(samples_); });
 }
 
+bool EverySampleTopicReached(const Samples& s, double t) {
+  return Reached(s.joint_states, t) && Reached(s.energy, t) && Reached(s.reactions, t) && Reached(s.solver, t);
+}
+
 bool SampleRecorder::WaitForTime(double t, std::chrono::milliseconds timeout) {
-  return WaitUntil(
-      [t](const Samples& s) {
-        return Reached(s.joint_states, t) && Reached(s.energy, t) && Reached(s.reactions, t) && Reached(s.solver, t);
-      },
-      timeout);
+  return WaitUntil([t](const Samples& s) { return EverySampleTopicReached(s, t); }, timeout);
 }
 
 Samples SampleRecorder::Snapshot() const {

@@ -17,10 +17,14 @@
 namespace flexmbd {
 namespace test {
 
+/// True once every sample topic (joint_states, energy, reactions, solver) holds a message stamped at or after
+/// `t` [s].
+bool EverySampleTopicReached(const Samples& samples, double t);
+
 class SampleRecorder {
  public:
   /// Subscribes to joint_states and /tf (root namespace) and /<node_name>/{energy,reactions,solver,contacts,
-  /// friction} (the last two are published only for models with stops or friction).
+  /// friction,beam_loads} (the last three are published only for models with stops, friction or beam stations).
   explicit SampleRecorder(const std::string& node_name);
   ~SampleRecorder();
 

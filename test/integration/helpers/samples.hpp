@@ -17,6 +17,7 @@ struct Samples {
   std::vector<tf2_msgs::TFMessage> transforms;
   std::vector<JointContactArray> contacts;  ///< only for models with stops
   std::vector<JointFrictionArray> friction;  ///< only for models with friction
+  std::vector<BeamLoadsArray> beam_loads;    ///< only for models with beam stations
 };
 
 /// Simulated time of a message [s].

@@ -1,0 +1,99 @@
+// ~beam_loads on the beam arm of test/data (test/data/urdf/beam_arm.urdf: a 1 m beam clamped along the world
+// x axis carrying a 2 kg tip body) made stiff and started at its static equilibrium under gravity by
+// test/integration/data/beam_arm_stations.yaml, with stations at s = 0, 0.5 and 1 m, run to 0.5 s at 100
+// samples/s. One run serves every test: the node records its bag, the recorder the topics, the runner its CSV.
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "helpers/beam_loads_csv.hpp"
+#include "helpers/csv_table.hpp"
+#include "helpers/node_run.hpp"
+
+namespace flexmbd {
+namespace test {
+namespace {
+
+constexpr char kNodeName[] = "flexmbd_beam_loads";
+constexpr char kUrdf[] = "test/data/urdf/beam_arm.urdf";
+constexpr char kConfig[] = "test/integration/data/beam_arm_stations.yaml";
+constexpr double kEndTime = 0.5;
+constexpr size_t kSampleCount = 51;  // t = 0, 0.01, ..., 0.5 s
+// The stations of the YAML, in its order.
+const std::vector<double> kStations{0.0, 0.5, 1.0};
+// The arm: beam mass per length and length (YAML), tip mass (URDF), gravity along -z.
+constexpr double kBeamMassPerLength = 2.5, kLength = 1.0, kTipMass = 2.0, kG = 9.81;
+// Same run, same steps: the node's records equal the runner's CSV to its 17 digits.
+constexpr double kSameRunTolerance = 1.0e-9;
+
+NodeRun RecordRun() {
+  return RecordNodeAndRunner({kNodeName, kUrdf, kConfig, /*record_bag=*/true,
+                              [](const Samples& s) {
+                                return !s.beam_loads.empty() && TimeOf(s.beam_loads.back()) >= kEndTime - 1e-9;
+                              }});
+}
+
+class BeamLoads : public testing::Test {
+ protected:
+  static void SetUpTestSuite() { record_ = new NodeRun(RecordRun()); }
+  static void TearDownTestSuite() { delete record_; }
+  void SetUp() override {
+    ASSERT_TRUE(record_->reached_end) << "~beam_loads did not reach t = " << kEndTime << " s; node output:\n"
+                                      << record_->node_output;
+  }
+  static NodeRun* record_;
+};
+
+NodeRun* BeamLoads::record_ = nullptr;
+
+TEST_F(BeamLoads, MessagesNameTheConfiguredStations) {
+  // Reference: output.beam_stations.arm of the YAML: station k at kStations[k], every sample.
+  const std::vector<BeamLoadsArray>& messages = record_->topics.beam_loads;
+  ASSERT_EQ(messages.size(), kSampleCount);
+  for (const BeamLoadsArray& message : messages) {
+    ASSERT_EQ(message.stations.size(), kStations.size());
+    for (size_t k = 0; k < kStations.size(); ++k) {
+      EXPECT_EQ(message.stations[k].beam, "arm");
+      EXPECT_EQ(message.stations[k].station, static_cast<int>(k));
+      EXPECT_EQ(message.stations[k].s, kStations[k]);
+    }
+  }
+}
+
+TEST_F(BeamLoads, RecordsMatchTheRunnersCsv) {
+  ASSERT_EQ(record_->csv.rows.size(), kSampleCount) << "the runner did not write its CSV";
+  ExpectBeamLoadsMatchCsv(record_->topics.beam_loads, record_->csv, kSameRunTolerance);
+}
+
+TEST_F(BeamLoads, NodesBagHoldsWhatWasPublished) {
+  // Reference: the messages received; the bag keeps float64 and the header as published.
+  const std::vector<BeamLoadsArray>& bag = record_->bag.beam_loads;
+  ASSERT_EQ(bag.size(), record_->topics.beam_loads.size());
+  for (size_t k = 0; k < bag.size(); ++k) EXPECT_EQ(bag[k], record_->topics.beam_loads[k]) << "sample " << k;
+}
+
+TEST_F(BeamLoads, BendingMomentsCarryTheWeightBeyondEachStation) {
+  // At rest a section carries the weight beyond it: about section axis 2 (= world y, the beam lies along x) the
+  // part beyond s exerts M2(s) = g (m (L - s)^2 / 2 + m_tip (L - s)), g (m L^2 / 2 + m_tip L) = 31.88 N m at the
+  // root. The lever arms are those of the undeformed arm to within its shortening, at most theta_tip^2 L / 2 =
+  // 1e-4 L (theta_tip = 0.014 rad); the lumped weights have the exact moment about the root and the 2 cubic
+  // elements give the quartic moment curve of the uniform weight to 1e-4 of the root moment (measured 5e-5 at
+  // the root, 9e-5 at s = L/2): 5e-4 of the root moment bounds both. Bending about axis 3 (M3) has no load.
+  const double root_moment = kG * (kBeamMassPerLength * kLength * kLength / 2 + kTipMass * kLength);
+  constexpr double kBendingTolerance = 5.0e-4;
+  for (const BeamLoadsArray& message : record_->topics.beam_loads) {
+    ASSERT_EQ(message.stations.size(), kStations.size());
+    for (const BeamStationLoads& station : message.stations) {
+      const double arm = kLength - station.s;
+      const double expected = kG * (kBeamMassPerLength * arm * arm / 2 + kTipMass * arm);
+      EXPECT_NEAR(station.M2, expected, kBendingTolerance * root_moment)
+          << "s = " << station.s << " m, t = " << TimeOf(message) << " s";
+      EXPECT_NEAR(station.M3, 0.0, kBendingTolerance * root_moment) << "s = " << station.s << " m";
+    }
+  }
+}
+
+}  // namespace
+}  // namespace test
+}  // namespace flexmbd
