@@ -94,6 +94,23 @@ TEST_F(BeamLoads, BendingMomentsCarryTheWeightBeyondEachStation) {
   }
 }
 
+TEST_F(BeamLoads, ShearForcesCarryTheWeightBeyondEachStation) {
+  // The same balance for forces: V3(s) = -g (m (L - s) + m_tip) (section axis 3 = world z, up), 44.1 N at the
+  // root. The weights are lumped at the nodes, L / 6 apart (2 cubic elements): the staircase of shear they
+  // make differs from the continuous line by up to half a node's weight, g m L / 12 = 2.0 N, which bounds
+  // the recovered value. The axial force is the shear turned by the slope, at most 44.1 N x 0.014 = 0.6 N.
+  const double node_weight_half = kG * kBeamMassPerLength * kLength / 12;
+  const double axial_bound = kG * (kBeamMassPerLength * kLength + kTipMass) * 0.014;
+  for (const BeamLoadsArray& message : record_->topics.beam_loads) {
+    for (const BeamStationLoads& station : message.stations) {
+      const double expected = -kG * (kBeamMassPerLength * (kLength - station.s) + kTipMass);
+      EXPECT_NEAR(station.V3, expected, node_weight_half) << "s = " << station.s << " m, t = " << TimeOf(message);
+      EXPECT_NEAR(station.N, 0.0, axial_bound) << "s = " << station.s << " m";
+      EXPECT_NEAR(station.V2, 0.0, node_weight_half) << "s = " << station.s << " m";
+    }
+  }
+}
+
 }  // namespace
 }  // namespace test
 }  // namespace flexmbd

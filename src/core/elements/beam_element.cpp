@@ -370,18 +370,32 @@ void BeamElement::AddStepWork(const StepContext& ctx, StepWork* work) const {
 BeamElement::Section BeamElement::SectionAt(const State& state, double s) const {
   FLEXMBD_DEMAND(s >= -1.0e-12 * length_ && s <= length_ * (1.0 + 1.0e-12));
   const Configuration c = AtState(state);
-  const ShapeTable table = TableAt(order_, length_, {2.0 * s / length_ - 1.0});
-  const StrainJacobian j = LineariseAt(*interpolation_, table, c.x, c.R);
+  const double xi = 2.0 * s / length_ - 1.0;
+  const ShapeTable table = TableAt(order_, length_, {xi});
+  Section section;
+  section.R = LineariseAt(*interpolation_, table, c.x, c.R).R[0];
+  for (int k = 0; k <= order_; ++k) section.x += table.N[0][k] * c.x[k];
+  // Strains are recovered at the Gauss points, where the reduced rule makes them accurate (the shear strains
+  // between them carry the parasitic part that reduced integration removes from the energy), and carried to
+  // s by the polynomial through them (docs/theory.md, "Station outputs").
+  const StrainJacobian gauss = LineariseAt(*interpolation_, interpolation_->gauss, c.x, c.R);
   Eigen::VectorXd rates(6 * (order_ + 1));
   for (int k = 0; k <= order_; ++k) {
     rates.segment<3>(6 * k) = state.nodes[nodes_[k]].v;
     rates.segment<3>(6 * k + 3) = state.nodes[nodes_[k]].w;
   }
-  Section section;
-  section.strain = j.strain[0];
-  section.load = stiffness_ * (j.strain[0] + damping_ * (j.B[0] * rates));
-  section.R = j.R[0];
-  for (int k = 0; k <= order_; ++k) section.x += table.N[0][k] * c.x[k];
+  const std::vector<double>& points = ReducedGauss(order_).points;
+  section.strain.setZero();
+  Vec6 strain_and_damping = Vec6::Zero();
+  for (size_t g = 0; g < points.size(); ++g) {
+    double weight = 1.0;
+    for (size_t m = 0; m < points.size(); ++m) {
+      if (m != g) weight *= (xi - points[m]) / (points[g] - points[m]);
+    }
+    section.strain += weight * gauss.strain[g];
+    strain_and_damping += weight * (gauss.strain[g] + damping_ * (gauss.B[g] * rates));
+  }
+  section.load = stiffness_ * strain_and_damping;
   return section;
 }
 
