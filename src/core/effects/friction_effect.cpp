@@ -163,7 +163,7 @@ StepLimit FrictionEffect::Limit(const StepContext& ctx, const State& end) const 
   StepLimit limit;
   if (spec_.law == FrictionSpec::Law::kRegularised || TrialMode(ctx) == kSticking) return limit;
   const double v_i = ctx.start->qdot[variable_], v_f = end.qdot[variable_];
-  const double v_end = EndRate(ctx, variable_);
+  const double v_end = v_f;
   if (Direction(TrialMode(ctx)) * v_end < 0) {
     // Redo the step to end just before the slip stops (linear in the rate), where it can stick gently.
     limit.retry = kLanding * ctx.h * std::abs(v_i) / (std::abs(v_i) + std::abs(v_end));
