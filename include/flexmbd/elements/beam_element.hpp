@@ -80,7 +80,10 @@ class BeamElement : public Element {
   // The dynamic step's damping forces (B7) from the mid-step linearisation.
   Eigen::VectorXd StepDampingForces(const StepContext& ctx, const Linearisation& mid, const std::vector<Vec6>& strain_i,
                                     const std::vector<Vec6>& strain_f, const Eigen::VectorXd& increments,
-                                    const Eigen::VectorXd& weighted) const;
+                                    const Eigen::VectorXd& weighted, double strain_round_off) const;
+  // Round-off of a strain computed from these node positions: eps times the largest coordinate over the
+  // element length [-].
+  double StrainRoundOff(const std::vector<NodeStep>& steps) const;
 
   std::string name_;
   std::vector<int> nodes_;

@@ -284,17 +284,30 @@ Eigen::VectorXd BeamElement::Forces(const StepContext& ctx, const std::vector<No
   const std::vector<Vec6> strain_f = GaussStrains(end), strain_i = GaussStrains(start);
   const double V_f = Energy(strain_f), V_i = Energy(strain_i);
   const double mismatch = (V_f - V_i) - G.dot(increments);
-  const double round_off = 100.0 * std::numeric_limits<double>::epsilon() * (std::abs(V_f) + std::abs(V_i));
+  // V_f - V_i carries the round-off of the strains, about eps x / length each, times the stresses: in a stiff
+  // section at rest it dwarfs eps V, and the correction (divided by the squared increments) would turn it
+  // into forces that Newton cannot remove.
+  const double strain_round_off = StrainRoundOff(steps);
+  double stress_work = 0;
+  for (size_t g = 0; g < stress.size(); ++g) stress_work += interpolation_->weight_ds[g] * stress[g].cwiseAbs().sum();
+  const double round_off = 100.0 * std::numeric_limits<double>::epsilon() * (std::abs(V_f) + std::abs(V_i)) +
+                           100.0 * strain_round_off * stress_work;
   const double norm = increments.dot(weighted);
   if (std::abs(mismatch) > round_off && norm > 0.0) G += mismatch / norm * weighted;
-  if (damping_ > 0.0) G += StepDampingForces(ctx, lin, strain_i, strain_f, increments, weighted);
+  if (damping_ > 0.0) G += StepDampingForces(ctx, lin, strain_i, strain_f, increments, weighted, strain_round_off);
   return G;
+}
+
+double BeamElement::StrainRoundOff(const std::vector<NodeStep>& steps) const {
+  double coordinate = length_;
+  for (const NodeStep& s : steps) coordinate = std::max({coordinate, s.x_i.norm(), s.x_f.norm()});
+  return std::numeric_limits<double>::epsilon() * coordinate / length_;
 }
 
 Eigen::VectorXd BeamElement::StepDampingForces(const StepContext& ctx, const Linearisation& mid,
                                                const std::vector<Vec6>& strain_i, const std::vector<Vec6>& strain_f,
-                                               const Eigen::VectorXd& increments,
-                                               const Eigen::VectorXd& weighted) const {
+                                               const Eigen::VectorXd& increments, const Eigen::VectorXd& weighted,
+                                               double strain_round_off) const {
   // Section forces mu C (e_f - e_i) / h paired with a strain-increment operator B_m = B_mid + (de - B_mid d)
   // (W d)^T / (d^T W d), for which B_m d = de exactly (B7): the forces then do the work
   // -mu sum_g w_g de^T C de / h over the increments d.
@@ -304,7 +317,8 @@ Eigen::VectorXd BeamElement::StepDampingForces(const StepContext& ctx, const Lin
   for (size_t g = 0; g < strain_f.size(); ++g) {
     const Vec6 de = strain_f[g] - strain_i[g];
     const Vec6 stress = damping_ * (stiffness_ * de) / ctx.h;
-    const Vec6 mismatch = de - mid.B[g] * increments;
+    Vec6 mismatch = de - mid.B[g] * increments;
+    if (mismatch.cwiseAbs().maxCoeff() <= 100.0 * strain_round_off) mismatch.setZero();  // round-off, as above
     f += interpolation_->weight_ds[g] * (mid.B[g].transpose() * stress + mismatch.dot(stress) / norm * weighted);
   }
   return f;
