@@ -234,9 +234,10 @@ void SimulatorNode::ReportEnd() {
   ROS_INFO_STREAM("flexmbd: finished at t = " << simulation_->state().t << " s; " << samples_sent_
                                               << " samples sent in " << wall.count() << " s wall time");
   ROS_INFO_STREAM("flexmbd: " << simulation_->statistics().Summary());
-  std::istringstream intervals(
-      DescribeEffectIntervals(simulation_->model(), simulation_->effect_events(), simulation_->state()));
-  for (std::string line; std::getline(intervals, line);) ROS_INFO_STREAM("flexmbd: " << line);
+  for (const std::string& line :
+       DescribeEffectIntervals(simulation_->model(), simulation_->effect_events(), simulation_->state())) {
+    ROS_INFO_STREAM("flexmbd: " << line);
+  }
 }
 
 void SimulatorNode::LetSubscribersDrain() {

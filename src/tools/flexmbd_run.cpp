@@ -5,7 +5,6 @@
 
 #include <cstdio>
 #include <optional>
-#include <sstream>
 #include <string>
 #include <vector>
 
@@ -47,9 +46,10 @@ void PrintSummary(const flexmbd::Simulation& simulation, const flexmbd::OutputSa
   std::printf("flexmbd_run: energy kinetic %.6g J, potential %.6g J, external work %.6g J, dissipated %.6g J, "
               "numerical dissipation %.6g J\n",
               last.kinetic, last.potential, last.external_work, last.dissipated, last.numerical_dissipation);
-  std::istringstream intervals(
-      flexmbd::DescribeEffectIntervals(simulation.model(), simulation.effect_events(), simulation.state()));
-  for (std::string line; std::getline(intervals, line);) std::printf("flexmbd_run: %s\n", line.c_str());
+  for (const std::string& line :
+       flexmbd::DescribeEffectIntervals(simulation.model(), simulation.effect_events(), simulation.state())) {
+    std::printf("flexmbd_run: %s\n", line.c_str());
+  }
 }
 
 // solver.analysis: eigen. Linearises about the initial state (or its static equilibrium) and prints the mode

@@ -32,8 +32,8 @@ TEST(EffectEvents, ContactIntervalsPerStopCloseAtTheEndOfTheRun) {
   State end = model.initial_state();
   end.t = 1.0;
   EXPECT_EQ(DescribeEffectIntervals(model, events, end),
-            "stop hinge lower: 3 contact interval(s) [0.5, 0.52] [0.6, 0.7] [0.93, 1] s\n"
-            "stop hinge upper: 0 contact interval(s)\n");
+            (std::vector<std::string>{"stop hinge lower: 3 contact interval(s) [0.5, 0.52] [0.6, 0.7] [0.93, 1] s",
+                                      "stop hinge upper: 0 contact interval(s)"}));
 }
 
 }  // namespace

@@ -12,6 +12,10 @@
 
 namespace flexmbd {
 
+/// A step redone to locate an event (a stop reached, a slip coming to rest) ends at this fraction of the event's
+/// time interpolated linearly over the step: just short of it, so the event falls in the next step.
+constexpr double kEventLanding = 0.98;
+
 /// Step sizes an effect asks for after a converged step [s]; infinity means no request.
 struct StepLimit {
   double retry = std::numeric_limits<double>::infinity();  ///< reject the step, redo it with this size

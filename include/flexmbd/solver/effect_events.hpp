@@ -18,9 +18,10 @@ struct EffectEvent {
   int from = 0, to = 0;
 };
 
-/// One line per stop and frictional joint: the intervals in contact (or sticking), the last one closed at the
+/// One line (without newline) per stop and frictional joint: the intervals in contact (or sticking), the last one closed at the
 /// state's time if still open, e.g. "stop B1 upper: 2 contact interval(s) [0.51, 0.52] [0.93, 1] s"; for
 /// friction also the sticking threshold v0 in force and the energy dissipated.
-std::string DescribeEffectIntervals(const Model& model, const std::vector<EffectEvent>& events, const State& state);
+std::vector<std::string> DescribeEffectIntervals(const Model& model, const std::vector<EffectEvent>& events,
+                                                 const State& state);
 
 }  // namespace flexmbd

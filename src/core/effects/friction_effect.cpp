@@ -15,9 +15,8 @@ constexpr double kSpeedBands[] = {2.0, 5.0, 10.0, 20.0};
 constexpr double kSpeedTargets[] = {0.5, 1.0, 2.5, 5.0};
 // A slip that reverses within a step sticks there if its speed at the start was at most this many v0 (the
 // impulse that stops it is then of the order of the friction force times the step); a faster one is
-// redone shorter, ending at kLanding of the interpolated stop.
+// redone shorter, ending at kEventLanding of the interpolated stop.
 constexpr double kCaptureSpeeds = 2.0;
-constexpr double kLanding = 0.98;
 }  // namespace
 
 FrictionEffect::FrictionEffect(const FrictionSpec& spec, const Joint& joint, int variable_unknown, int stick_multiplier,
@@ -60,6 +59,12 @@ double FrictionEffect::StickingSpeed(const EffectState& effect) const {
   return std::max(kAutoStickingFraction * effect.reference, kMinAutoStickingSpeed);
 }
 
+double FrictionEffect::RegularisedFactor(double v, double* d_dv) const {
+  const double decay = std::exp(-std::abs(v) / spec_.v0);
+  *d_dv = decay / spec_.v0;
+  return (1.0 - decay) * (v > 0 ? 1.0 : v < 0 ? -1.0 : 0.0);
+}
+
 double FrictionEffect::EndRate(const StepContext& ctx, int variable) {
   const VariableStep& q = (*ctx.variables)[variable];
   return 2.0 * (q.q_f - q.q_i) / ctx.h - q.qdot_i;
@@ -76,12 +81,11 @@ FrictionEffect::StepForce FrictionEffect::Evaluate(const StepContext& ctx) const
   f.normal = NormalForce(lambda, AxisW(*ctx.start), &d_normal);
   if (spec_.law == FrictionSpec::Law::kRegularised) {
     const VariableStep& q = (*ctx.variables)[variable_];
-    const double v = spec_.radius * (q.q_f - q.q_i) / ctx.h, v0 = spec_.v0;
-    const double sign = v > 0 ? 1.0 : v < 0 ? -1.0 : 0.0;
-    const double shape = 1.0 - std::exp(-std::abs(v) / v0);
-    f.force = -Bound(spec_.mu_k, f.normal) * shape * sign;
-    f.d_dq = -Bound(spec_.mu_k, f.normal) * std::exp(-std::abs(v) / v0) / v0 * spec_.radius / ctx.h;
-    f.d_dlambda = -spec_.mu_k * spec_.radius * shape * sign * d_normal;
+    double d_dv = 0;
+    const double factor = RegularisedFactor(spec_.radius * (q.q_f - q.q_i) / ctx.h, &d_dv);
+    f.force = -Bound(spec_.mu_k, f.normal) * factor;
+    f.d_dq = -Bound(spec_.mu_k, f.normal) * d_dv * spec_.radius / ctx.h;
+    f.d_dlambda = -spec_.mu_k * spec_.radius * factor * d_normal;
     return f;
   }
   const double s = Direction(mode);
@@ -163,10 +167,9 @@ StepLimit FrictionEffect::Limit(const StepContext& ctx, const State& end) const 
   StepLimit limit;
   if (spec_.law == FrictionSpec::Law::kRegularised || TrialMode(ctx) == kSticking) return limit;
   const double v_i = ctx.start->qdot[variable_], v_f = end.qdot[variable_];
-  const double v_end = v_f;
-  if (Direction(TrialMode(ctx)) * v_end < 0) {
+  if (Direction(TrialMode(ctx)) * v_f < 0) {
     // Redo the step to end just before the slip stops (linear in the rate), where it can stick gently.
-    limit.retry = kLanding * ctx.h * std::abs(v_i) / (std::abs(v_i) + std::abs(v_end));
+    limit.retry = kEventLanding * ctx.h * std::abs(v_i) / (std::abs(v_i) + std::abs(v_f));
     return limit;
   }
   const double speed = spec_.radius * std::abs(v_f), change = spec_.radius * std::abs(v_f - v_i);
@@ -200,8 +203,8 @@ FrictionSample FrictionEffect::Sample(const State& state) const {
   s.slip_velocity = spec_.radius * state.qdot[variable_];
   s.work = effect.work;
   if (spec_.law == FrictionSpec::Law::kRegularised) {
-    const double v = s.slip_velocity;
-    s.torque = -Bound(spec_.mu_k, s.normal_force) * (1.0 - std::exp(-std::abs(v) / spec_.v0)) * (v > 0 ? 1 : v < 0 ? -1 : 0);
+    double unused_rate = 0;
+    s.torque = -Bound(spec_.mu_k, s.normal_force) * RegularisedFactor(s.slip_velocity, &unused_rate);
     return s;
   }
   s.sticking = effect.mode == kSticking;

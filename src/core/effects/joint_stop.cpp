@@ -9,8 +9,6 @@ namespace {
 // of the gap's change over the step; otherwise it is redone shorter to end just before the contact, so a
 // contact never starts far from the stop (docs/theory.md, (C5)).
 constexpr double kEventFraction = 0.05;
-// The redone step ends at this fraction of the crossing time interpolated linearly in the gap.
-constexpr double kLanding = 0.98;
 // Slowest approach speed taken as an elastic contact's reference speed [m/s]: below it the Hunt-Crossley
 // damping chi = alpha_e / v_in of a resting contact would be unbounded.
 constexpr double kMinReferenceSpeed = 1.0e-6;
@@ -35,7 +33,7 @@ StepLimit JointStop::Limit(const StepContext& ctx, const State&) const {
   const VariableStep& q = (*ctx.variables)[variable_];
   const double g_i = Gap(q.q_i), g_f = Gap(q.q_f);
   const bool starts_far = g_i > kEventFraction * (g_i - g_f);
-  if (TrialMode(ctx) == kOpen && g_f < 0 && starts_far) limit.retry = kLanding * ctx.h * g_i / (g_i - g_f);
+  if (TrialMode(ctx) == kOpen && g_f < 0 && starts_far) limit.retry = kEventLanding * ctx.h * g_i / (g_i - g_f);
   return limit;
 }
 

@@ -40,27 +40,32 @@ std::vector<std::pair<double, double>> Intervals(const std::vector<EffectEvent>&
 }
 }  // namespace
 
-std::string DescribeEffectIntervals(const Model& model, const std::vector<EffectEvent>& events, const State& state) {
+std::vector<std::string> DescribeEffectIntervals(const Model& model, const std::vector<EffectEvent>& events,
+                                                 const State& state) {
   const double t_end = state.t;
-  std::ostringstream out;
+  std::vector<std::string> lines;
   for (size_t k = 0; k < model.stops().size(); ++k) {
     const int slot = model.stop_effects()[k]->slot();
     const auto intervals =
         Intervals(events, slot, JointStop::kContact, model.initial_state().effects[slot].mode, t_end);
-    out << "stop " << model.stops()[k].joint << ' ' << model.stops()[k].stop << ": " << intervals.size()
-        << " contact interval(s)" << ListIntervals(intervals) << '\n';
+    std::ostringstream line;
+    line << "stop " << model.stops()[k].joint << ' ' << model.stops()[k].stop << ": " << intervals.size()
+         << " contact interval(s)" << ListIntervals(intervals);
+    lines.push_back(line.str());
   }
   for (size_t k = 0; k < model.frictions().size(); ++k) {
     const FrictionEffect& friction = *model.friction_effects()[k];
     const int slot = friction.slot();
     const auto intervals =
         Intervals(events, slot, FrictionEffect::kSticking, model.initial_state().effects[slot].mode, t_end);
-    out << "friction " << model.frictions()[k].joint << ": sticking threshold v0 = "
-        << friction.StickingSpeed(state.effects[slot]) << " m/s, largest slip speed " << state.effects[slot].reference
-        << " m/s, dissipated " << state.effects[slot].work << " J, " << intervals.size() << " sticking interval(s)"
-        << ListIntervals(intervals) << '\n';
+    std::ostringstream line;
+    line << "friction " << model.frictions()[k].joint << ": sticking threshold v0 = "
+         << friction.StickingSpeed(state.effects[slot]) << " m/s, largest slip speed " << state.effects[slot].reference
+         << " m/s, dissipated " << state.effects[slot].work << " J, " << intervals.size() << " sticking interval(s)"
+         << ListIntervals(intervals);
+    lines.push_back(line.str());
   }
-  return out.str();
+  return lines;
 }
 
 }  // namespace flexmbd
