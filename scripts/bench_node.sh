@@ -1,10 +1,14 @@
 #!/usr/bin/env bash
 # Benchmarks the node against the runner and prints the figures (bench/node/README.md records them):
-#   1. overhead: wall time of the node publishing every sample (real_time_factor 0, from its first sample
-#      to its last), with no subscriber and with one on loopback, over the runner's (whole process, without
-#      output and with its CSV), best of 5 (the machine may be shared), at 100 samples/s on the double pendulum
-#      (config/double_pendulum/, 200 s: 20001 samples) and on a 40-link chain (1 s: 101 samples, about 40
-#      times the solver work per sample); target node/runner < 1.2;
+#   1. overhead: wall time of the node's run (real_time_factor 0, from its first sample to its last written)
+#      over the runner's run of the same case (as the runner reports it: also from its first sample to its
+#      last, without its start-up and loading), best of 5 (the machine may be shared): the node publishing
+#      with no subscriber and with one on loopback (the four sample topics, and the stop and friction
+#      topics where the case has them), the node recording its bag against the runner writing the same bag,
+#      and the node publishing against the runner writing its CSV; on the double pendulum at 100 samples/s
+#      (config/double_pendulum/, 200 s: 20001 samples), the antenna with friction (config/antenna/, 200 s:
+#      4001 samples) and a 40-link chain (1 s: 101 samples, about 40 times the solver work per sample);
+#      target node/runner < 1.2;
 #   2. throughput: the sample rate the node sustains to one subscriber on loopback: double-pendulum runs
 #      paced at real_time_factor 1 with rising output rates; sustained = no sample lost and the run keeps
 #      wall-clock pace (within 5 %).
@@ -65,22 +69,21 @@ open(params, "w").write("joints: {joint1: {initial: {position_deg: 30.0}}}\n"
 PY
 }
 
-seconds_now() { date +%s.%N; }
-
-# One run of the runner: prints "<wall seconds> <CPU seconds (user + system)>". Extra arguments go to the
-# runner (e.g. --csv FILE).
+# One run of the runner: prints "<run wall seconds, as the runner reports them> <process CPU seconds (user +
+# system)>". Extra arguments go to the runner (e.g. --csv FILE).
 runner_run() {  # runner_run URDF CASE_YAML [ARGUMENTS...]
-  local start wall cpu
-  start="$(seconds_now)"
-  cpu="$( { TIMEFORMAT='%U %S'; time "${bin}/flexmbd_run" --urdf "$1" --config "$2" "${@:3}" >/dev/null; } 2>&1 |
-    awk '{print $1 + $2}')"
-  wall="$(echo "$(seconds_now) ${start}" | awk '{print $1 - $2}')"
-  echo "${wall} ${cpu}"
+  local cpu run_seconds
+  cpu="$( { TIMEFORMAT='%U %S'; time "${bin}/flexmbd_run" --urdf "$1" --config "$2" "${@:3}" >"${work}/runner.txt"; } \
+    2>&1 | awk '{print $1 + $2}')"
+  run_seconds="$(sed -n 's/.*samples written in \([0-9.e+-]*\) s wall time.*/\1/p' "${work}/runner.txt")"
+  [[ -n "${run_seconds}" ]] || die "the runner did not finish its run: $(cat "${work}/runner.txt")"
+  echo "${run_seconds} ${cpu}"
 }
 
 # Runs the node on a case, with the benchmark subscriber if SUBSCRIBERS is 1; prints "<run wall seconds>
 # <process CPU seconds> <subscriber's line>". The node's CPU time includes its start-up and all its threads.
-node_run() {  # node_run URDF CASE_YAML REAL_TIME_FACTOR SUBSCRIBERS
+# Extra arguments go to the node (e.g. _bag:=FILE).
+node_run() {  # node_run URDF CASE_YAML REAL_TIME_FACTOR SUBSCRIBERS [ARGUMENTS...]
   rosparam set -t "$1" /robot_description
   rosparam delete /flexmbd >/dev/null 2>&1 || true
   rosparam load "$2" /flexmbd
@@ -91,7 +94,7 @@ node_run() {  # node_run URDF CASE_YAML REAL_TIME_FACTOR SUBSCRIBERS
     subscriber_pid=$!
   fi
   local cpu
-  cpu="$( { TIMEFORMAT='%U %S'; time "${bin}/flexmbd_node" "_real_time_factor:=$3" "_wait_for_subscribers:=$4" \
+  cpu="$( { TIMEFORMAT='%U %S'; time "${bin}/flexmbd_node" "_real_time_factor:=$3" "_wait_for_subscribers:=$4" "${@:5}" \
     >"${work}/node.txt" 2>&1; } 2>&1 | awk '{print $1 + $2}')"
   [[ -z "${subscriber_pid}" ]] || wait "${subscriber_pid}"
   local run_seconds
@@ -111,35 +114,54 @@ best_of() {
   fi
 }
 
-# Best of 5 of the node and of the runner (without output, with its CSV), the three runs interleaved so that
-# a shared machine's load changes weigh on all alike.
-overhead() {  # overhead LABEL URDF CASE_YAML SUBSCRIBERS
+# Best of 5 of the node and of the runner, their runs interleaved so that a shared machine's load changes
+# weigh on both alike. RECORDING: "none" (the node publishes; the runner writes no output, then its CSV)
+# or "bag" (both write the bag).
+overhead() {  # overhead LABEL URDF CASE_YAML SUBSCRIBERS RECORDING
   local runner_wall="" runner_rest="" csv_wall="" csv_rest="" node_wall="" node_rest="" wall rest
+  local node_args=() runner_args=()
+  if [[ "$5" == bag ]]; then
+    node_args=("_bag:=${work}/node.bag")
+    runner_args=(--bag "${work}/runner.bag")
+  fi
   for _ in 1 2 3 4 5; do
-    read -r wall rest < <(runner_run "$2" "$3")
+    read -r wall rest < <(runner_run "$2" "$3" "${runner_args[@]}")
     best_of runner "${wall}" "${rest}"
-    read -r wall rest < <(runner_run "$2" "$3" --csv "${work}/runner.csv")
-    best_of csv "${wall}" "${rest}"
-    read -r wall rest < <(node_run "$2" "$3" 0.0 "$4")
+    if [[ "$5" == none ]]; then
+      read -r wall rest < <(runner_run "$2" "$3" --csv "${work}/runner.csv")
+      best_of csv "${wall}" "${rest}"
+    fi
+    read -r wall rest < <(node_run "$2" "$3" 0.0 "$4" "${node_args[@]}")
     best_of node "${wall}" "${rest}"
   done
   local node_cpu subscriber_line
   read -r node_cpu subscriber_line <<<"${node_rest}"
   echo "  $1:"
-  echo "    wall: node ${node_wall} s; runner without output ${runner_wall} s (ratio $(ratio "${node_wall}" "${runner_wall}")),"\
-       "with its CSV ${csv_wall} s (ratio $(ratio "${node_wall}" "${csv_wall}"))"
-  echo "    CPU (user + system, all threads): node ${node_cpu} s, runner ${runner_rest} s, with CSV ${csv_rest} s"
+  if [[ "$5" == none ]]; then
+    echo "    run wall time: node ${node_wall} s; runner without output ${runner_wall} s (ratio" \
+         "$(ratio "${node_wall}" "${runner_wall}")), with its CSV ${csv_wall} s (ratio $(ratio "${node_wall}" "${csv_wall}"))"
+    echo "    CPU (user + system, whole process, all threads): node ${node_cpu} s, runner ${runner_rest} s," \
+         "with CSV ${csv_rest} s"
+  else
+    echo "    run wall time: node ${node_wall} s; runner ${runner_wall} s (ratio $(ratio "${node_wall}" "${runner_wall}"))"
+    echo "    CPU (user + system, whole process, all threads): node ${node_cpu} s, runner ${runner_rest} s"
+  fi
   echo "    subscriber: ${subscriber_line}"
 }
 
 echo "flexmbd node benchmark: $(nproc) cores, load average $(cut -d' ' -f1-3 /proc/loadavg), $(date -u +%Y-%m-%d)"
 
-echo "overhead, node publishing / runner (best of 5; target < 1.2):"
+echo "overhead, node / runner, run wall time (best of 5; target < 1.2):"
 write_case "${work}/pendulum_200s.yaml" "${case_yaml}" 200.0 100.0
-overhead "double pendulum, 20001 samples, no subscriber" "${urdf}" "${work}/pendulum_200s.yaml" 0
-overhead "double pendulum, 20001 samples, one subscriber" "${urdf}" "${work}/pendulum_200s.yaml" 1
+overhead "double pendulum, 20001 samples, no subscriber" "${urdf}" "${work}/pendulum_200s.yaml" 0 none
+overhead "double pendulum, 20001 samples, one subscriber" "${urdf}" "${work}/pendulum_200s.yaml" 1 none
+overhead "double pendulum, 20001 samples, bag, no subscriber" "${urdf}" "${work}/pendulum_200s.yaml" 0 bag
+antenna_urdf="${FLEXMBD_REPO_ROOT}/config/antenna/antenna.urdf"
+antenna_yaml="${FLEXMBD_REPO_ROOT}/config/antenna/antenna_friction.yaml"
+overhead "antenna with friction, 4001 samples, one subscriber" "${antenna_urdf}" "${antenna_yaml}" 1 none
+overhead "antenna with friction, 4001 samples, bag, no subscriber" "${antenna_urdf}" "${antenna_yaml}" 0 bag
 write_chain "${work}/chain40.urdf" "${work}/chain40.yaml" 40
-overhead "40-link chain, 101 samples, one subscriber" "${work}/chain40.urdf" "${work}/chain40.yaml" 1
+overhead "40-link chain, 101 samples, one subscriber" "${work}/chain40.urdf" "${work}/chain40.yaml" 1 none
 
 t_end=3.0
 echo "throughput: double pendulum, ${t_end} s at real_time_factor 1, one subscriber on loopback:"

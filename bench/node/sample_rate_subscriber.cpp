@@ -1,5 +1,7 @@
-// Benchmark subscriber for scripts/bench_node.sh: receives a node's sample topics on loopback and reports
-// how many samples arrived, how many were lost (gaps in header.seq, the sample index) and at what rate.
+// Benchmark subscriber for scripts/bench_node.sh: receives a node's sample topics on loopback (the four
+// every node has, and ~contacts, ~friction and ~beam_loads, which carry messages where the model has stops,
+// frictional joints or beam stations) and reports how many samples arrived, how many were lost (gaps in
+// header.seq, the sample index) and at what rate.
 //   sample_rate_subscriber NODE_NAME [IDLE_SECONDS]
 // Ends once messages have stopped for IDLE_SECONDS (default 3) after the first one; prints one line:
 //   received N samples (joint_states), lost L, in S s: R samples/s
@@ -50,6 +52,9 @@ int main(int argc, char** argv) {
   TopicCounter<flexmbd::Energy> energy;
   TopicCounter<flexmbd::JointReactions> reactions;
   TopicCounter<flexmbd::SolverStep> solver;
+  TopicCounter<flexmbd::JointContactArray> contacts;
+  TopicCounter<flexmbd::JointFrictionArray> friction;
+  TopicCounter<flexmbd::BeamLoadsArray> beam_loads;
   Clock::time_point first, last;
   const auto touch = [&] {
     last = Clock::now();
@@ -67,7 +72,9 @@ int main(int argc, char** argv) {
   };
   const std::vector<ros::Subscriber> subscribers{
       subscribe("/joint_states", &joint_states), subscribe(prefix + "energy", &energy),
-      subscribe(prefix + "reactions", &reactions), subscribe(prefix + "solver", &solver)};
+      subscribe(prefix + "reactions", &reactions), subscribe(prefix + "solver", &solver),
+      subscribe(prefix + "contacts", &contacts), subscribe(prefix + "friction", &friction),
+      subscribe(prefix + "beam_loads", &beam_loads)};
   const ros::WallDuration poll(0.01);
   while (ros::ok()) {
     ros::getGlobalCallbackQueue()->callAvailable(poll);
@@ -75,8 +82,9 @@ int main(int argc, char** argv) {
     if (started && std::chrono::duration<double>(Clock::now() - last).count() > idle_seconds) break;
   }
   const double seconds = std::chrono::duration<double>(last - first).count();
-  const long lost = joint_states.lost + energy.lost + reactions.lost + solver.lost;
-  std::printf("received %ld samples (joint_states), lost %ld (all four topics), in %.3f s: %.0f samples/s\n",
+  const long lost =
+      joint_states.lost + energy.lost + reactions.lost + solver.lost + contacts.lost + friction.lost + beam_loads.lost;
+  std::printf("received %ld samples (joint_states), lost %ld (all topics), in %.3f s: %.0f samples/s\n",
               joint_states.received, lost, seconds, seconds > 0 ? joint_states.received / seconds : 0.0);
   return 0;
 }

@@ -81,6 +81,7 @@ void AsyncSampleWriter::WriteLoop() {
     std::exception_ptr error;
     try {
       for (const RecordPtr& record : batch) outputs_->Write(record->sample, record->messages);
+      outputs_->EndBatch();
     } catch (...) {
       error = std::current_exception();
     }

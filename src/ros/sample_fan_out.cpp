@@ -16,6 +16,10 @@ void SampleFanOut::Write(const OutputSample& sample, const SampleMessages& messa
   if (csv_) csv_->Write(sample);
 }
 
+void SampleFanOut::EndBatch() {
+  for (const auto& sink : live_sinks_) sink->EndBatch();
+}
+
 void SampleFanOut::RestartRecordings() {
   CloseRecordings();
   OpenRecordings();

@@ -3,6 +3,7 @@
 // --csv and --bag override output.csv and output.bag; the bag is the one the node writes (docs/ros.md).
 // Exit status: 0 success, 1 usage error, 2 bad input (ConfigError), 3 the run failed (SolverError).
 
+#include <chrono>
 #include <cstdio>
 #include <optional>
 #include <string>
@@ -19,6 +20,8 @@
 #include "flexmbd/solver/static_solver.hpp"
 
 namespace {
+
+using Clock = std::chrono::steady_clock;
 
 constexpr char kUsage[] = "usage: flexmbd_run --urdf FILE --config FILE [--csv FILE] [--bag FILE]\n";
 
@@ -40,8 +43,12 @@ bool Parse(int argc, char** argv, Arguments* args) {
   return !args->urdf.empty();
 }
 
-void PrintSummary(const flexmbd::Simulation& simulation, const flexmbd::OutputSample& last) {
-  std::printf("flexmbd_run: finished at t = %.6g s\n", simulation.state().t);
+// `samples` written in `wall_seconds`, from the first sample to the recordings closed: what the node reports
+// for its run, so that scripts/bench_node.sh compares the two without the runner's start-up and loading.
+void PrintSummary(const flexmbd::Simulation& simulation, const flexmbd::OutputSample& last, long samples,
+                  double wall_seconds) {
+  std::printf("flexmbd_run: finished at t = %.6g s; %ld samples written in %.6g s wall time\n", simulation.state().t,
+              samples, wall_seconds);
   std::printf("flexmbd_run: %s\n", simulation.statistics().Summary().c_str());
   std::printf("flexmbd_run: energy kinetic %.6g J, potential %.6g J, external work %.6g J, dissipated %.6g J, "
               "numerical dissipation %.6g J\n",
@@ -127,8 +134,11 @@ int main(int argc, char** argv) {
     flexmbd::Simulation simulation(model);
     flexmbd::OutputSample last;
     flexmbd::ros::SampleMessages messages;  // refilled for every sample, reusing its storage
+    long samples = 0;
+    Clock::time_point first_sample_wall;
     try {
       simulation.Run([&](const flexmbd::OutputSample& sample) {
+        if (samples++ == 0) first_sample_wall = Clock::now();
         if (converter) converter->Convert(sample, simulation.state(), &messages);
         outputs.Write(sample, messages);
         last = sample;
@@ -140,7 +150,9 @@ int main(int argc, char** argv) {
       return 3;
     }
     outputs.Close();
-    PrintSummary(simulation, last);
+    const double wall_seconds =
+        samples > 0 ? std::chrono::duration<double>(Clock::now() - first_sample_wall).count() : 0.0;
+    PrintSummary(simulation, last, samples, wall_seconds);
   } catch (const flexmbd::ConfigError& e) {
     std::fprintf(stderr, "flexmbd_run: %s\n", e.what());
     return 2;

@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <stdexcept>
 
 #include "ros_test_util.hpp"
@@ -13,24 +14,31 @@ namespace flexmbd {
 namespace ros {
 namespace {
 
-// A live sink that keeps the sequence numbers it is given (read after Flush, which orders the threads).
+// A live sink that keeps the sequence numbers it is given and, for each EndBatch, how many it had been
+// given by then (read after Flush, which orders the threads).
 class SeqSink : public MessageSink {
  public:
-  explicit SeqSink(std::vector<uint32_t>* written, long fail_at = -1) : written_(written), fail_at_(fail_at) {}
+  SeqSink(std::vector<uint32_t>* written, std::vector<size_t>* batch_ends, long fail_at)
+      : written_(written), batch_ends_(batch_ends), fail_at_(fail_at) {}
   void Write(const SampleMessages& messages) override {
     if (static_cast<long>(written_->size()) == fail_at_) throw std::runtime_error("disk full");
     written_->push_back(messages.joint_state.header.seq);
   }
+  void EndBatch() override {
+    if (batch_ends_) batch_ends_->push_back(written_->size());
+  }
 
  private:
   std::vector<uint32_t>* written_;
+  std::vector<size_t>* batch_ends_;
   long fail_at_;
 };
 
 // A fan-out without recording files, writing to a SeqSink.
-SampleFanOut FanOutTo(const Model& model, std::vector<uint32_t>* written, long fail_at = -1) {
+SampleFanOut FanOutTo(const Model& model, std::vector<uint32_t>* written, long fail_at = -1,
+                      std::vector<size_t>* batch_ends = nullptr) {
   SampleFanOut outputs(model, RecordingFiles{}, DefaultTopicNames());
-  outputs.AddLiveSink(std::make_unique<SeqSink>(written, fail_at));
+  outputs.AddLiveSink(std::make_unique<SeqSink>(written, batch_ends, fail_at));
   return outputs;
 }
 
@@ -53,6 +61,25 @@ TEST(AsyncSampleWriter, WritesEverySampleInOrderAcrossBatches) {
   }
   writer.Flush();
   EXPECT_EQ(written, expected);
+}
+
+TEST(AsyncSampleWriter, EndsEveryBatchBeforeFlushReturns) {
+  // The topics wake roscpp's sender at a batch's end (TopicPublisher::EndBatch): a sample written after the
+  // last EndBatch would wait in roscpp's queue until the next run's samples came.
+  const Model model = test::DoublePendulum();
+  std::vector<uint32_t> written;
+  std::vector<size_t> batch_ends;
+  SampleFanOut outputs = FanOutTo(model, &written, -1, &batch_ends);
+  AsyncSampleWriter writer(&outputs, 64);
+  for (uint32_t k = 0; k < 150; ++k) SubmitSeq(&writer, k);
+  writer.Flush();
+  ASSERT_FALSE(batch_ends.empty());
+  EXPECT_EQ(batch_ends.back(), 150u);
+  EXPECT_TRUE(std::is_sorted(batch_ends.begin(), batch_ends.end()));
+  // a lone sample, handed over by Flush
+  SubmitSeq(&writer, 150);
+  writer.Flush();
+  EXPECT_EQ(batch_ends.back(), 151u);
 }
 
 TEST(AsyncSampleWriter, HandsWrittenRecordsBackForReuse) {

@@ -50,7 +50,8 @@ class AsyncSampleWriter {
   /// (call before waiting: they are then written meanwhile).
   void Wake();
 
-  /// Waits until every submitted sample is written; afterwards the caller may use the fan-out directly
+  /// Waits until every submitted sample is written (each batch the thread takes ends with
+  /// SampleFanOut::EndBatch); afterwards the caller may use the fan-out directly
   /// until the next Submit. Rethrows an exception the fan-out raised while writing.
   void Flush();
 

@@ -34,6 +34,9 @@ class SampleFanOut {
   /// when there is none (no bag, no topics).
   void Write(const OutputSample& sample, const SampleMessages& messages);
 
+  /// Ends a batch of Writes (MessageSink::EndBatch): what the live sinks held back goes out.
+  void EndBatch();
+
   /// Closes the recording files and opens them again, empty, for a new run from the initial state.
   void RestartRecordings();
 

@@ -1,13 +1,15 @@
 #pragma once
 /// @file
 /// Publishes the messages of each sample on the node's topics (docs/ros.md). roscpp queues every message per
-/// subscriber and sends it from its own thread, so publishing never waits for a subscriber.
+/// subscriber and sends it from its own thread, so publishing never waits for a subscriber; that thread is
+/// woken once for a batch of samples (QueuedTopic), at the latest by EndBatch.
 
 #include <ros/ros.h>
 
 #include <functional>
 
 #include "flexmbd/ros/message_sink.hpp"
+#include "flexmbd/ros/queued_topic.hpp"
 #include "flexmbd/ros/topic_names.hpp"
 
 namespace flexmbd {
@@ -29,6 +31,9 @@ class TopicPublisher : public MessageSink {
   /// Publishes while ROS is up (after a shutdown it does nothing); the clock follows the sample time.
   void Write(const SampleMessages& messages) override;
 
+  /// Wakes roscpp's sender for the samples written since it was last woken.
+  void EndBatch() override;
+
   /// Fewest subscribers over the sample topics (joint_states, ~energy, ~reactions, ~solver, and ~contacts,
   /// ~friction, ~beam_loads where advertised).
   int MinSampleSubscribers() const;
@@ -37,8 +42,9 @@ class TopicPublisher : public MessageSink {
   bool HasSubscribers() const;
 
  private:
-  ::ros::Publisher joint_states_, energy_, reactions_, solver_, contacts_, friction_, beam_loads_, tf_, markers_,
-      clock_;
+  QueuedTopic joint_states_, energy_, reactions_, solver_, contacts_, friction_, beam_loads_, tf_, clock_;
+  ::ros::Publisher markers_;  ///< latched, published once
+  int unsent_samples_ = 0;    ///< samples queued since the sender was last woken
 };
 
 }  // namespace ros
