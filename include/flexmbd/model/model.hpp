@@ -101,6 +101,7 @@ class Model {
 
  private:
   friend Model BuildModel(const ModelSpec& spec);
+  friend class VariableEffectsBuilder;  ///< BuildModel's helper for the effects on a joint variable
   int num_nodes_ = 0, num_variables_ = 0, num_multipliers_ = 0;
   std::vector<std::unique_ptr<Element>> elements_;
   std::vector<const Joint*> joints_;

@@ -4,22 +4,15 @@
 #include <sstream>
 
 #include "flexmbd/common/error.hpp"
-#include "flexmbd/effects/friction_effect.hpp"
-#include "flexmbd/effects/joint_stop.hpp"
 #include "flexmbd/elements/applied_load.hpp"
-#include "flexmbd/model/effect_validation.hpp"
 #include "flexmbd/model/beam_layout.hpp"
-#include "flexmbd/math/time_function.hpp"
 #include "flexmbd/model/model.hpp"
 #include "flexmbd/solver/energy_decaying_integrator.hpp"
 #include "flexmbd/solver/step_context_builder.hpp"
+#include "variable_effects_builder.hpp"
 
 namespace flexmbd {
 namespace {
-// Initial configurations must satisfy the joints to this accuracy [m or rad]: loader forward kinematics is
-// exact to round-off, so anything larger is an inconsistent input.
-constexpr double kInitialConstraintTolerance = 1.0e-8;
-
 std::string Prefix(const ModelSpec& spec) { return spec.source.empty() ? std::string() : spec.source + ": "; }
 
 void ValidateBody(const ModelSpec& spec, const BodySpec& body) {
@@ -240,6 +233,7 @@ Model BuildModel(const ModelSpec& spec) {
   state.effects.resize(num_effect_slots);
 
   int variable = 0, multiplier = 0;
+  VariableEffectsBuilder effect_builder(&model, first_variable_of);
   for (const JointSpec& joint : spec.joints) {
     if (joint.child.empty()) throw ConfigError(Prefix(spec) + "joint '" + joint.name + "': child body is missing");
     const JointKinematics kinematics = MakeJointKinematics(joint);
@@ -261,82 +255,7 @@ Model BuildModel(const ModelSpec& spec) {
       if (k < static_cast<int>(joint.initial_position.size())) state.q[v] = joint.initial_position[k];
       if (k < static_cast<int>(joint.initial_velocity.size())) state.qdot[v] = joint.initial_velocity[k];
       if (k >= static_cast<int>(joint.effects.size())) continue;  // no effects on this variable
-      const VariableEffectsSpec& effects = joint.effects[k];
-      for (const SpringSpec& s : effects.springs) {
-        model.elements_.push_back(std::make_unique<VariableSpring>(v, model.variable_unknown(v), s.stiffness, s.rest));
-      }
-      for (const DamperSpec& d : effects.dampers) {
-        model.elements_.push_back(std::make_unique<VariableDamper>(v, model.variable_unknown(v), d.coefficient));
-      }
-      if (effects.drives.size() > 1) {
-        throw ConfigError(Prefix(spec) + "joint '" + joint.name + "': more than one drive on one variable");
-      }
-      for (const TimeFunctionSpec& law : effects.drives) {
-        const double q0 = Evaluate(law, 0.0);
-        if (std::abs(q0 - state.q[v]) > kInitialConstraintTolerance) {
-          std::ostringstream msg;
-          msg << Prefix(spec) << "joint '" << joint.name << "': drive starts at " << q0
-              << " but the initial position is " << state.q[v] << "; expected them equal";
-          throw ConfigError(msg.str());
-        }
-        model.elements_.push_back(std::make_unique<VariableDrive>(v, model.variable_unknown(v), multiplier,
-                                                                  model.multiplier_unknown(multiplier), law));
-        model.multiplier_names_.push_back("drive " + model.variable_names_[v]);
-        ++multiplier;
-      }
-      for (StopSpec stop : effects.stops) {
-        const std::string where = Prefix(spec) + "joint '" + joint.name + "': ";
-        ValidateStop(where, stop);
-        if (!stop.retraction.joint.empty()) {
-          const auto named = first_variable_of.find(stop.retraction.joint);
-          if (named == first_variable_of.end()) {
-            throw ConfigError(where + "stop '" + stop.name + "': retract.joint '" + stop.retraction.joint +
-                              "' is not a joint of the model; expected a joint name");
-          }
-          stop.retraction.variable = named->second;
-        }
-        const int slot = static_cast<int>(model.modal_effects_.size());
-        std::unique_ptr<JointStop> element;
-        if (stop.kind == StopSpec::Kind::kRigid) {
-          element = std::make_unique<RigidStop>(stop, v, model.variable_unknown(v), multiplier,
-                                                model.multiplier_unknown(multiplier), slot);
-          model.multiplier_names_.push_back("stop " + stop.name + " of " + model.variable_names_[v]);
-          ++multiplier;
-        } else {
-          element = std::make_unique<ElasticStop>(stop, v, model.variable_unknown(v), slot);
-        }
-        if (element->Gap(state.q[v]) < -kInitialConstraintTolerance) {
-          std::ostringstream msg;
-          msg << where << "stop '" << stop.name << "': the initial position " << state.q[v]
-              << " is beyond the stop at " << stop.limit << "; expected an initial position inside the stops";
-          throw ConfigError(msg.str());
-        }
-        model.stops_.push_back({joint.name, stop.name, v});
-        model.stop_effects_.push_back(element.get());
-        model.modal_effects_.push_back(element.get());
-        model.elements_.push_back(std::move(element));
-      }
-      if (effects.frictions.size() > 1) {
-        throw ConfigError(Prefix(spec) + "joint '" + joint.name + "': more than one friction on one variable");
-      }
-      for (const FrictionSpec& friction : effects.frictions) {
-        ValidateFriction(Prefix(spec) + "joint '" + joint.name + "': ", friction, joint.type);
-        const bool sticks = friction.law != FrictionSpec::Law::kRegularised;
-        const int slot = static_cast<int>(model.modal_effects_.size());
-        auto element = std::make_unique<FrictionEffect>(
-            friction, *model.joints_.back(), model.variable_unknown(v), sticks ? multiplier : -1,
-            sticks ? model.multiplier_unknown(multiplier) : -1,
-            model.multiplier_unknown(model.joints_.back()->first_multiplier()), slot);
-        if (sticks) {
-          model.multiplier_names_.push_back("friction " + model.variable_names_[v]);
-          ++multiplier;
-        }
-        state.effects[slot].mode = FrictionEffect::InitialMode(state.qdot[v]);
-        model.frictions_.push_back({joint.name, v});
-        model.friction_effects_.push_back(element.get());
-        model.modal_effects_.push_back(element.get());
-        model.elements_.push_back(std::move(element));
-      }
+      effect_builder.Add(Prefix(spec) + "joint '" + joint.name + "': ", joint, v, joint.effects[k], &multiplier);
     }
     variable += n_var;
   }

@@ -1,0 +1,101 @@
+#include "variable_effects_builder.hpp"
+
+#include <cmath>
+#include <memory>
+#include <sstream>
+
+#include "flexmbd/common/error.hpp"
+#include "flexmbd/effects/friction_effect.hpp"
+#include "flexmbd/effects/variable_effects.hpp"
+#include "flexmbd/effects/joint_stop.hpp"
+#include "flexmbd/math/time_function.hpp"
+#include "flexmbd/model/effect_validation.hpp"
+
+namespace flexmbd {
+
+void VariableEffectsBuilder::Add(const std::string& where, const JointSpec& joint, int v,
+                                 const VariableEffectsSpec& effects, int* multiplier) {
+  for (const SpringSpec& s : effects.springs) {
+    model_.elements_.push_back(std::make_unique<VariableSpring>(v, model_.variable_unknown(v), s.stiffness, s.rest));
+  }
+  for (const DamperSpec& d : effects.dampers) {
+    model_.elements_.push_back(std::make_unique<VariableDamper>(v, model_.variable_unknown(v), d.coefficient));
+  }
+  if (effects.drives.size() > 1) throw ConfigError(where + "more than one drive on one variable");
+  for (const TimeFunctionSpec& law : effects.drives) AddDrive(where, v, law, multiplier);
+  for (const StopSpec& stop : effects.stops) AddStop(where, joint.name, v, stop, multiplier);
+  if (effects.frictions.size() > 1) throw ConfigError(where + "more than one friction on one variable");
+  for (const FrictionSpec& friction : effects.frictions) AddFriction(where, joint, v, friction, multiplier);
+}
+
+void VariableEffectsBuilder::AddDrive(const std::string& where, int v, const TimeFunctionSpec& law, int* multiplier) {
+  const double q0 = Evaluate(law, 0.0);
+  const double q_initial = model_.initial_state_.q[v];
+  if (std::abs(q0 - q_initial) > kInitialConstraintTolerance) {
+    std::ostringstream msg;
+    msg << where << "drive starts at " << q0 << " but the initial position is " << q_initial
+        << "; expected them equal";
+    throw ConfigError(msg.str());
+  }
+  model_.elements_.push_back(std::make_unique<VariableDrive>(v, model_.variable_unknown(v), *multiplier,
+                                                             model_.multiplier_unknown(*multiplier), law));
+  model_.multiplier_names_.push_back("drive " + model_.variable_names_[v]);
+  ++*multiplier;
+}
+
+void VariableEffectsBuilder::AddStop(const std::string& where, const std::string& joint, int v, StopSpec stop,
+                                     int* multiplier) {
+  ValidateStop(where, stop);
+  if (!stop.retraction.joint.empty()) {
+    const auto named = first_variable_of_.find(stop.retraction.joint);
+    if (named == first_variable_of_.end()) {
+      throw ConfigError(where + "stop '" + stop.name + "': retract.joint '" + stop.retraction.joint +
+                        "' is not a joint of the model; expected a joint name");
+    }
+    stop.retraction.variable = named->second;
+  }
+  const int slot = static_cast<int>(model_.modal_effects_.size());
+  std::unique_ptr<JointStop> element;
+  if (stop.kind == StopSpec::Kind::kRigid) {
+    element = std::make_unique<RigidStop>(stop, v, model_.variable_unknown(v), *multiplier,
+                                          model_.multiplier_unknown(*multiplier), slot);
+    model_.multiplier_names_.push_back("stop " + stop.name + " of " + model_.variable_names_[v]);
+    ++*multiplier;
+  } else {
+    element = std::make_unique<ElasticStop>(stop, v, model_.variable_unknown(v), slot);
+  }
+  const double q_initial = model_.initial_state_.q[v];
+  if (element->Gap(q_initial) < -kInitialConstraintTolerance) {
+    std::ostringstream msg;
+    msg << where << "stop '" << stop.name << "': the initial position " << q_initial << " is beyond the stop at "
+        << stop.limit << "; expected an initial position inside the stops";
+    throw ConfigError(msg.str());
+  }
+  model_.stops_.push_back({joint, stop.name, v});
+  model_.stop_effects_.push_back(element.get());
+  model_.modal_effects_.push_back(element.get());
+  model_.elements_.push_back(std::move(element));
+}
+
+void VariableEffectsBuilder::AddFriction(const std::string& where, const JointSpec& joint, int v,
+                                         const FrictionSpec& friction, int* multiplier) {
+  ValidateFriction(where, friction, joint.type);
+  const bool sticks = friction.law != FrictionSpec::Law::kRegularised;
+  const int slot = static_cast<int>(model_.modal_effects_.size());
+  const Joint& element_joint = *model_.joints_.back();
+  auto element = std::make_unique<FrictionEffect>(
+      friction, element_joint, model_.variable_unknown(v), sticks ? *multiplier : -1,
+      sticks ? model_.multiplier_unknown(*multiplier) : -1,
+      model_.multiplier_unknown(element_joint.first_multiplier()), slot);
+  if (sticks) {
+    model_.multiplier_names_.push_back("friction " + model_.variable_names_[v]);
+    ++*multiplier;
+  }
+  model_.initial_state_.effects[slot].mode = FrictionEffect::InitialMode(model_.initial_state_.qdot[v]);
+  model_.frictions_.push_back({joint.name, v});
+  model_.friction_effects_.push_back(element.get());
+  model_.modal_effects_.push_back(element.get());
+  model_.elements_.push_back(std::move(element));
+}
+
+}  // namespace flexmbd
