@@ -8,6 +8,7 @@
 #include <cmath>
 #include <functional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "flexmbd/elements/element.hpp"
@@ -139,6 +140,46 @@ VectorPath JointPositionChain(const TwoNodeStep& s) {
   const VectorPath c_b = ConstantPath<1>(Vec3(0.1, 0.2, -0.3));
   const VectorPath c_a = ConstantPath<1>(Vec3(-0.5, 0.4, 0.2));
   return PositionB(s) + RotationB(s) * c_b - PositionA(s) - RotationA(s) * (c_a + AxisRotation(s) * Linear(s));
+}
+
+// `p` without its derivatives: what is built from it keeps only values and discrete gradients.
+template <int Cols>
+DiscretePath<Cols> WithoutDerivative(DiscretePath<Cols> p) {
+  p.has_derivative = false;
+  return p;
+}
+
+// JointPositionChain with every varying factor built without derivatives (the joints' residual-only path).
+VectorPath JointPositionChainWithoutDerivative(const TwoNodeStep& s) {
+  const VectorPath c_b = ConstantPath<1>(Vec3(0.1, 0.2, -0.3));
+  const VectorPath c_a = ConstantPath<1>(Vec3(-0.5, 0.4, 0.2));
+  return WithoutDerivative(PositionB(s)) + WithoutDerivative(RotationB(s)) * c_b - WithoutDerivative(PositionA(s)) -
+         WithoutDerivative(RotationA(s)) *
+             (c_a + WithoutDerivative(AxisRotation(s)) * WithoutDerivative(Linear(s)));
+}
+
+// Transpose(R_a) R_b d with only R_a built without derivatives.
+VectorPath RelativeVectorOneFactorWithoutDerivative(const TwoNodeStep& s) {
+  return Transpose(WithoutDerivative(RotationA(s))) * (RotationB(s) * ConstantPath<1>(Vec3(0.4, -1.2, 0.3)));
+}
+
+TEST(DiscretePath, PathWithoutDerivativeKeepsValuesAndGradientsToTheBit) {
+  // Reference: dropping df changes which products are formed, not how i, f and dg are computed, so they
+  // agree exactly with the full path's; what is built from a factor without derivatives has none.
+  test::Random random(121);
+  for (int trial = 0; trial < 5; ++trial) {
+    const TwoNodeStep s = RandomStep(&random, 2.0);
+    for (const auto& [full, reduced] :
+         {std::pair{JointPositionChain(s), JointPositionChainWithoutDerivative(s)},
+          std::pair{RelativeVector(s), RelativeVectorOneFactorWithoutDerivative(s)}}) {
+      EXPECT_TRUE(full.has_derivative);
+      EXPECT_FALSE(reduced.has_derivative);
+      EXPECT_EQ(reduced.active, full.active);
+      EXPECT_EQ(reduced.i, full.i);
+      EXPECT_EQ(reduced.f, full.f);
+      for (int k = 0; k < kNumIncrements; ++k) EXPECT_EQ(reduced.gradient(k), full.gradient(k)) << "increment " << k;
+    }
+  }
 }
 
 TEST(DiscretePath, ConstantPathHasZeroGradients) {

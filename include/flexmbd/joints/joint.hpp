@@ -7,12 +7,14 @@
 /// The constraint forces are G^T lambda with G the exact discrete gradient of these rows over the step, so
 /// they do zero work when the rows hold at both ends of the step.
 
+#include <array>
 #include <string>
 
 #include <Eigen/Core>
 
 #include "flexmbd/elements/element.hpp"
 #include "flexmbd/joints/joint_kinematics.hpp"
+#include "flexmbd/math/discrete_path.hpp"
 
 namespace flexmbd {
 
@@ -54,16 +56,27 @@ class Joint : public Element {
   const Attachment& child() const { return child_; }
 
  private:
-  // Constraint rows at f, their exact discrete gradient G and their derivative D w.r.t. the local increments.
-  struct Evaluation {
-    Eigen::VectorXd phi;
-    Eigen::MatrixXd G, D;
+  static constexpr int kMaxVariables = 3;  ///< a planar joint's
+  using Variables = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, kMaxVariables, 1>;
+  using ConstraintVector = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, 6, 1>;
+  using ConstraintMatrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, 6, MatrixPath::kMaxIncrements>;
+  using IncrementVector = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, MatrixPath::kMaxIncrements, 1>;
+
+  // The joint's part of a step: its node sides (parent first; a world side has none) and variables.
+  struct Sides {
+    std::array<NodeStep, 2> nodes;
+    int num_nodes = 0;
+    Variables q_i, q_f;
   };
-  Evaluation Evaluate(const std::vector<NodeStep>& sides, const Eigen::VectorXd& q_i, const Eigen::VectorXd& q_f) const;
-  Evaluation EvaluateAt(const StepContext& ctx) const;
-  void GatherSides(const StepContext& ctx, std::vector<NodeStep>* sides, Eigen::VectorXd* q_i,
-                   Eigen::VectorXd* q_f) const;
-  Eigen::VectorXd Multipliers(const StepContext& ctx) const;
+  // Constraint rows at f, their exact discrete gradient G and, if asked for, their derivative D w.r.t. the
+  // local increments. Fixed capacity: evaluating allocates nothing.
+  struct Evaluation {
+    ConstraintVector phi;
+    ConstraintMatrix G, D;
+  };
+  Evaluation Evaluate(const Sides& sides, bool with_derivative) const;
+  Sides GatherSides(const StepContext& ctx) const;
+  Eigen::Ref<const Eigen::VectorXd> Multipliers(const StepContext& ctx) const;  ///< a view into ctx.lambda
 
   std::string name_;
   Attachment parent_, child_;

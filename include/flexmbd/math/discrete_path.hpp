@@ -7,13 +7,15 @@
 ///   (AB)_f - (AB)_i = A_m (B_f - B_i) + (A_f - A_i) B_m,   A_m = (A_i + A_f)/2,
 /// which is exact, so constraint forces built from dg do exactly zero work when the constraint holds at i and f.
 /// Only the increments a path depends on are stored (a bit set), so products of sparse paths stay cheap and
-/// nothing is allocated on the heap.
+/// nothing is allocated on the heap. A path built from a factor without derivatives (has_derivative false)
+/// keeps no df either: a residual needs only the values and dg, about half the work of each product.
 
 #include <array>
 #include <cstdint>
 
 #include <Eigen/Core>
 
+#include "flexmbd/common/error.hpp"
 #include "flexmbd/elements/element.hpp"
 
 namespace flexmbd {
@@ -26,12 +28,16 @@ struct DiscretePath {
   Value i = Value::Zero(), f = Value::Zero();
   std::array<Value, kMaxIncrements> dg, df;  ///< valid only where `active` has the bit set
   uint32_t active = 0;                       ///< bit k set: the path depends on increment k
+  bool has_derivative = true;                ///< df is kept (false: only i, f and dg are)
 
   bool depends_on(int k) const { return (active >> k) & 1u; }
   Value mid() const { return 0.5 * (i + f); }
   /// dg[k], or zero if the path does not depend on increment k.
   Value gradient(int k) const { return depends_on(k) ? dg[k] : Value::Zero(); }
-  Value derivative(int k) const { return depends_on(k) ? df[k] : Value::Zero(); }
+  Value derivative(int k) const {
+    FLEXMBD_DEMAND(has_derivative);
+    return depends_on(k) ? df[k] : Value::Zero();
+  }
   void Set(int k, const Value& gradient_k, const Value& derivative_k) {
     dg[k] = gradient_k;
     df[k] = derivative_k;
@@ -59,8 +65,8 @@ VectorPath NodePositionPath(const NodeStep& node, int offset);
 MatrixPath AxisRotationPath(const Vec3& unit_axis, double q_i, double q_f, int index);
 
 /// sum_k q_k c_k for joint variables at local indices offset + k.
-VectorPath LinearPath(const std::vector<Vec3>& rates, const Eigen::VectorXd& q_i, const Eigen::VectorXd& q_f,
-                      int offset);
+VectorPath LinearPath(const std::vector<Vec3>& rates, const Eigen::Ref<const Eigen::VectorXd>& q_i,
+                      const Eigen::Ref<const Eigen::VectorXd>& q_f, int offset);
 
 template <int ColsB>
 DiscretePath<ColsB> operator*(const MatrixPath& a, const DiscretePath<ColsB>& b) {
@@ -70,17 +76,18 @@ DiscretePath<ColsB> operator*(const MatrixPath& a, const DiscretePath<ColsB>& b)
   const Mat3 a_m = a.mid();
   const auto b_m = b.mid();
   p.active = a.active | b.active;
+  p.has_derivative = a.has_derivative && b.has_derivative;
   for (uint32_t bits = p.active; bits != 0; bits &= bits - 1) {
     const int k = __builtin_ctz(bits);
     if (a.depends_on(k) && b.depends_on(k)) {
       p.dg[k] = a_m * b.dg[k] + a.dg[k] * b_m;
-      p.df[k] = a.f * b.df[k] + a.df[k] * b.f;
+      if (p.has_derivative) p.df[k] = a.f * b.df[k] + a.df[k] * b.f;
     } else if (a.depends_on(k)) {
       p.dg[k] = a.dg[k] * b_m;
-      p.df[k] = a.df[k] * b.f;
+      if (p.has_derivative) p.df[k] = a.df[k] * b.f;
     } else {
       p.dg[k] = a_m * b.dg[k];
-      p.df[k] = a.f * b.df[k];
+      if (p.has_derivative) p.df[k] = a.f * b.df[k];
     }
   }
   return p;
@@ -91,13 +98,16 @@ template <int Cols>
 DiscretePath<Cols> Combine(DiscretePath<Cols> a, const DiscretePath<Cols>& b, double sign) {
   a.i += sign * b.i;
   a.f += sign * b.f;
+  a.has_derivative = a.has_derivative && b.has_derivative;
   for (uint32_t bits = b.active; bits != 0; bits &= bits - 1) {
     const int k = __builtin_ctz(bits);
     if (a.depends_on(k)) {
       a.dg[k] += sign * b.dg[k];
-      a.df[k] += sign * b.df[k];
+      if (a.has_derivative) a.df[k] += sign * b.df[k];
     } else {
-      a.Set(k, sign * b.dg[k], sign * b.df[k]);
+      a.dg[k] = sign * b.dg[k];
+      if (a.has_derivative) a.df[k] = sign * b.df[k];
+      a.active |= 1u << k;
     }
   }
   return a;

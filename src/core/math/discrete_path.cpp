@@ -30,8 +30,8 @@ MatrixPath AxisRotationPath(const Vec3& unit_axis, double q_i, double q_f, int i
   return p;
 }
 
-VectorPath LinearPath(const std::vector<Vec3>& rates, const Eigen::VectorXd& q_i, const Eigen::VectorXd& q_f,
-                      int offset) {
+VectorPath LinearPath(const std::vector<Vec3>& rates, const Eigen::Ref<const Eigen::VectorXd>& q_i,
+                      const Eigen::Ref<const Eigen::VectorXd>& q_f, int offset) {
   VectorPath p;
   for (size_t k = 0; k < rates.size(); ++k) {
     if (rates[k].isZero()) continue;
@@ -48,7 +48,7 @@ MatrixPath Transpose(MatrixPath a) {
   for (uint32_t bits = a.active; bits != 0; bits &= bits - 1) {
     const int k = __builtin_ctz(bits);
     a.dg[k].transposeInPlace();
-    a.df[k].transposeInPlace();
+    if (a.has_derivative) a.df[k].transposeInPlace();
   }
   return a;
 }
