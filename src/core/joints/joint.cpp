@@ -84,8 +84,8 @@ Joint::Evaluation Joint::Evaluate(const Sides& sides, bool with_derivative) cons
 
   MatrixPath rel = ConstantPath<3>(Mat3::Identity());
   for (const RotationFactor& factor : kinematics_.rotations) {
-    MatrixPath axis_rotation =
-        AxisRotationPath(factor.axis_J, sides.q_i[factor.variable], sides.q_f[factor.variable], offset + factor.variable);
+    const int v = factor.variable;
+    MatrixPath axis_rotation = AxisRotationPath(factor.axis_J, sides.q_i[v], sides.q_f[v], offset + v);
     axis_rotation.has_derivative = with_derivative;
     rel = rel * axis_rotation;
   }
