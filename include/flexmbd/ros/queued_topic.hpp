@@ -49,8 +49,8 @@ class QueuedTopic {
  private:
   explicit QueuedTopic(::ros::Publisher publisher);
 
-  ::ros::Publisher publisher_;           ///< keeps the topic advertised
-  ::ros::PublicationPtr publication_;    ///< roscpp's side of it, whose queue the sender drains
+  ::ros::Publisher publisher_;         ///< keeps the topic advertised
+  ::ros::PublicationPtr publication_;  ///< roscpp's side of it, whose queue the sender drains
 };
 
 /// Wakes roscpp's sending thread, which then sends every message queued on any topic (one system call).

@@ -6,8 +6,8 @@
 
 #include "flexmbd/common/error.hpp"
 #include "flexmbd/effects/friction_effect.hpp"
-#include "flexmbd/effects/variable_effects.hpp"
 #include "flexmbd/effects/joint_stop.hpp"
+#include "flexmbd/effects/variable_effects.hpp"
 #include "flexmbd/math/time_function.hpp"
 #include "flexmbd/model/effect_validation.hpp"
 
