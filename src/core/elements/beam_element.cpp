@@ -2,412 +2,317 @@
 
 #include <cmath>
 #include <limits>
-
-#include <unsupported/Eigen/AutoDiff>
+#include <optional>
 
 #include "flexmbd/common/error.hpp"
-#include "flexmbd/math/so3_generic.hpp"
 
 namespace flexmbd {
 namespace {
 
-constexpr int kMaxIncrements = 6 * BeamElement::kMaxNodes;
-using Derivatives = Eigen::Matrix<double, kMaxIncrements, 1>;
-using AutoDiff = Eigen::AutoDiffScalar<Derivatives>;
-template <class T>
-using V3 = Eigen::Matrix<T, 3, 1>;
-template <class T>
-using M3 = Eigen::Matrix<T, 3, 3>;
-template <class T>
-using V6 = Eigen::Matrix<T, 6, 1>;
+using Field = BeamStrainField;
 
-using so3::ExpOf;
-using so3::RightJacobianOf;
-using so3::ValueOf;
+// The chain rule from one configuration's perturbations to the step's increments: node k's perturbation is
+// (translation_rate dx_k, rotation_k theta_k). Column blocks of M are multiplied in place.
+struct IncrementMap {
+  double translation_rate = 1.0;
+  std::array<Mat3, BeamShape::kMaxNodes> rotation;
 
-// Rotation vector of R (angle below pi/2 in a beam element): a = axial(R) = sin(angle) n, psi = angle/sin * a.
-template <class T>
-V3<T> LogOf(const M3<T>& R) {
-  using std::atan2;
-  using std::sqrt;
-  const V3<T> a(0.5 * (R(2, 1) - R(1, 2)), 0.5 * (R(0, 2) - R(2, 0)), 0.5 * (R(1, 0) - R(0, 1)));
-  const T c = 0.5 * (R.trace() - 1.0);
-  const T s2 = a.squaredNorm();
-  T ratio;
-  if (ValueOf(s2) < 1.0e-6 && ValueOf(c) > 0.0) {
-    // asin(s)/s = 1 + s^2/6 + 3 s^4/40 + 5 s^6/112 + ...; the next term is < 1e-20 here.
-    ratio = 1.0 + s2 / 6.0 + 3.0 * s2 * s2 / 40.0 + 5.0 * s2 * s2 * s2 / 112.0;
-  } else {
-    const T s = sqrt(s2);
-    // Eigen's atan2 of automatic-differentiation scalars returns dynamic-size derivatives: back to T first.
-    const T angle = atan2(s, c);
-    ratio = angle / s;
-  }
-  return ratio * a;
-}
-
-// Gauss points and weights on [-1, 1].
-struct GaussRule {
-  std::vector<double> points, weights;
-};
-GaussRule ReducedGauss(int order) {
-  switch (order) {
-    case 1: return {{0.0}, {2.0}};
-    case 2: return {{-1.0 / std::sqrt(3.0), 1.0 / std::sqrt(3.0)}, {1.0, 1.0}};
-    default: return {{-std::sqrt(0.6), 0.0, std::sqrt(0.6)}, {5.0 / 9.0, 8.0 / 9.0, 5.0 / 9.0}};
-  }
-}
-
-// Lagrange shape functions on equally spaced nodes and their derivatives with respect to xi.
-void Lagrange(int order, double xi, std::vector<double>* N, std::vector<double>* dN) {
-  const int n = order + 1;
-  std::vector<double> nodes(n);
-  for (int k = 0; k < n; ++k) nodes[k] = -1.0 + 2.0 * k / order;
-  N->assign(n, 1.0);
-  dN->assign(n, 0.0);
-  for (int k = 0; k < n; ++k) {
-    for (int j = 0; j < n; ++j) {
-      if (j == k) continue;
-      (*N)[k] *= (xi - nodes[j]) / (nodes[k] - nodes[j]);
-      double term = 1.0 / (nodes[k] - nodes[j]);
-      for (int m = 0; m < n; ++m) {
-        if (m != k && m != j) term *= (xi - nodes[m]) / (nodes[k] - nodes[m]);
-      }
-      (*dN)[k] += term;
+  template <class MatrixType>
+  void ApplyToColumns(int num_nodes, MatrixType* M) const {
+    for (int k = 0; k < num_nodes; ++k) {
+      M->middleCols(6 * k, 3) *= translation_rate;
+      const auto block = M->middleCols(6 * k + 3, 3).eval();
+      M->middleCols(6 * k + 3, 3).noalias() = block * rotation[k];
     }
   }
-}
-
-// Shape-function values and slopes (d/ds) at a set of points of an element.
-struct ShapeTable {
-  std::vector<std::vector<double>> N, dNds;
 };
-
-ShapeTable TableAt(int order, double length, const std::vector<double>& xi) {
-  ShapeTable t;
-  for (double x : xi) {
-    std::vector<double> N, dN;
-    Lagrange(order, x, &N, &dN);
-    for (double& d : dN) d *= 2.0 / length;
-    t.N.push_back(N);
-    t.dNds.push_back(dN);
-  }
-  return t;
-}
 
 }  // namespace
 
-// Everything the strain computation needs that does not change: shape-function tables at the Gauss points.
-struct BeamElement::Interpolation {
-  int order;
-  int reference;  // node the rotations are taken relative to
-  ShapeTable gauss;
-  std::vector<double> weight_ds;  // Gauss weight times ds/dxi
+// What a dynamic step's forces need: the configurations at the start, middle and end of the step and the
+// increments d, with the metric W of the discrete gradient (B5).
+struct BeamElement::StepFields {
+  std::optional<Field> start, mid, end;
+  Field::Vector d, Wd, W;  // increments, W d, diag(W)
+  double norm = 0;         // d^T W d
+  IncrementMap to_mid, to_end;
 };
-
-namespace {
-BeamElement::Interpolation MakeInterpolation(int order, double length) {
-  BeamElement::Interpolation b;
-  b.order = order;
-  b.reference = order / 2;
-  const GaussRule rule = ReducedGauss(order);
-  b.gauss = TableAt(order, length, rule.points);
-  for (double w : rule.weights) b.weight_ds.push_back(w * 0.5 * length);
-  return b;
-}
-
-// Section strains [eps; kappa] and section frames at the points of a table, for nodes at x_k + dx_k,
-// R_k Exp(dtheta_k) (eqs. (B1)-(B2)).
-template <class T>
-struct PointStrain {
-  V6<T> strain;
-  M3<T> R;
-};
-
-template <class T>
-std::vector<PointStrain<T>> Strains(const BeamElement::Interpolation& b, const ShapeTable& table,
-                                    const std::vector<Vec3>& x, const std::vector<Mat3>& R,
-                                    const std::vector<V3<T>>& dx, const std::vector<V3<T>>& dtheta) {
-  const int n = b.order + 1;
-  std::vector<M3<T>> rotation(n);
-  for (int k = 0; k < n; ++k) rotation[k] = R[k].cast<T>() * ExpOf<T>(dtheta[k]);
-  const M3<T>& R_r = rotation[b.reference];
-  std::vector<V3<T>> psi(n, V3<T>::Zero());
-  for (int k = 0; k < n; ++k) {
-    if (k != b.reference) psi[k] = LogOf<T>(R_r.transpose() * rotation[k]);
-  }
-  std::vector<PointStrain<T>> points;
-  for (size_t g = 0; g < table.N.size(); ++g) {
-    V3<T> psi_g = V3<T>::Zero(), dpsi = V3<T>::Zero(), dxds = V3<T>::Zero();
-    for (int k = 0; k < n; ++k) {
-      psi_g += table.N[g][k] * psi[k];
-      dpsi += table.dNds[g][k] * psi[k];
-      // Positions relative to the reference node (the shape-function slopes sum to zero): the absolute
-      // coordinates would add their round-off to the strains.
-      dxds += table.dNds[g][k] * ((x[k] - x[b.reference]).cast<T>() + dx[k]);
-    }
-    PointStrain<T> p;
-    p.R = R_r * ExpOf<T>(psi_g);
-    p.strain.template head<3>() = p.R.transpose() * dxds - V3<T>::UnitX();
-    p.strain.template tail<3>() = RightJacobianOf<T>(psi_g) * dpsi;
-    points.push_back(p);
-  }
-  return points;
-}
-
-// Strains at the points of a table for the configuration itself, and their derivatives with respect to the
-// node increments (forward-mode automatic differentiation).
-struct StrainJacobian {
-  std::vector<Vec6> strain;
-  std::vector<Eigen::MatrixXd> B;
-  std::vector<Mat3> R;
-};
-
-StrainJacobian LineariseAt(const BeamElement::Interpolation& b, const ShapeTable& table, const std::vector<Vec3>& x,
-                           const std::vector<Mat3>& R) {
-  const int n = b.order + 1;
-  std::vector<V3<AutoDiff>> dx(n), dtheta(n);
-  for (int k = 0; k < n; ++k) {
-    for (int i = 0; i < 3; ++i) {
-      dx[k][i] = AutoDiff(0.0, kMaxIncrements, 6 * k + i);
-      dtheta[k][i] = AutoDiff(0.0, kMaxIncrements, 6 * k + 3 + i);
-    }
-  }
-  StrainJacobian out;
-  for (const PointStrain<AutoDiff>& p : Strains<AutoDiff>(b, table, x, R, dx, dtheta)) {
-    Vec6 e;
-    Eigen::MatrixXd B(6, 6 * n);
-    for (int i = 0; i < 6; ++i) {
-      e[i] = p.strain[i].value();
-      B.row(i) = p.strain[i].derivatives().head(6 * n).transpose();
-    }
-    Mat3 R_p;
-    for (int i = 0; i < 9; ++i) R_p(i % 3, i / 3) = p.R(i % 3, i / 3).value();
-    out.strain.push_back(e);
-    out.B.push_back(B);
-    out.R.push_back(R_p);
-  }
-  return out;
-}
-}  // namespace
 
 BeamElement::BeamElement(std::string name, std::vector<int> nodes, double length,
                          const Eigen::Matrix<double, 6, 6>& stiffness, double damping)
     : name_(std::move(name)), nodes_(std::move(nodes)), length_(length), stiffness_(stiffness), damping_(damping) {
-  order_ = static_cast<int>(nodes_.size()) - 1;
-  FLEXMBD_DEMAND(order_ >= 1 && order_ <= 3 && length_ > 0 && damping_ >= 0);
-  interpolation_ = std::make_shared<const Interpolation>(MakeInterpolation(order_, length_));
+  const int order = static_cast<int>(nodes_.size()) - 1;
+  FLEXMBD_DEMAND(order >= 1 && order <= 3 && length_ > 0 && damping_ >= 0);
+  shape_ = GaussShape(order, length_);
+  for (int g = 0; g < shape_.num_points; ++g) weighted_stiffness_[g] = shape_.weight_ds[g] * stiffness_;
   for (int node : nodes_) {
     for (int k = 0; k < 6; ++k) unknowns_.push_back(6 * node + k);
   }
 }
 
-std::vector<Vec6> BeamElement::GaussStrains(const Configuration& c) const {
-  const std::vector<V3<double>> zero(order_ + 1, Vec3::Zero());
-  std::vector<Vec6> strains;
-  for (const PointStrain<double>& p : Strains<double>(*interpolation_, interpolation_->gauss, c.x, c.R, zero, zero)) {
-    strains.push_back(p.strain);
-  }
-  return strains;
-}
-
-double BeamElement::Energy(const std::vector<Vec6>& strains) const {
+double BeamElement::Energy(const Field& field) const {
   double energy = 0.0;
-  for (size_t g = 0; g < strains.size(); ++g) {
-    energy += 0.5 * interpolation_->weight_ds[g] * strains[g].dot(stiffness_ * strains[g]);
-  }
+  for (int g = 0; g < field.num_points(); ++g) energy += 0.5 * field.strain(g).dot(weighted_stiffness_[g] * field.strain(g));
   return energy;
 }
 
-BeamElement::Linearisation BeamElement::Linearise(const Configuration& c) const {
-  StrainJacobian j = LineariseAt(*interpolation_, interpolation_->gauss, c.x, c.R);
-  return Linearisation{std::move(j.strain), std::move(j.B)};
-}
-
-Eigen::VectorXd BeamElement::NodalForces(const Linearisation& lin, const std::vector<Vec6>& stress) const {
-  Eigen::VectorXd f = Eigen::VectorXd::Zero(6 * (order_ + 1));
-  for (size_t g = 0; g < stress.size(); ++g) f += interpolation_->weight_ds[g] * (lin.B[g].transpose() * stress[g]);
-  return f;
-}
-
-BeamElement::Configuration BeamElement::AtState(const State& state) const {
-  Configuration c;
-  for (int node : nodes_) {
-    c.x.push_back(state.nodes[node].x);
-    c.R.push_back(state.nodes[node].R);
+Field::Nodes BeamElement::AtState(const State& state) const {
+  Field::Nodes c;
+  for (size_t k = 0; k < nodes_.size(); ++k) {
+    c.x[k] = state.nodes[nodes_[k]].x;
+    c.R[k] = state.nodes[nodes_[k]].R;
   }
   return c;
 }
 
-Eigen::VectorXd BeamElement::Forces(const StepContext& ctx, const std::vector<NodeStep>& steps) const {
-  Configuration end, mid, start;
-  for (const NodeStep& s : steps) {
-    end.x.push_back(s.x_f);
-    end.R.push_back(s.R_f);
-  }
+void BeamElement::Evaluate(const StepContext& ctx, Field::Vector* forces, Field::Matrix* K) const {
   if (ctx.at_end()) {
-    const Linearisation lin = Linearise(end);
-    std::vector<Vec6> stress;
-    Eigen::VectorXd rates(6 * steps.size());
-    for (size_t k = 0; k < steps.size(); ++k) {
-      rates.segment<3>(6 * k) = steps[k].v_f;
-      rates.segment<3>(6 * k + 3) = steps[k].w_f;
-    }
-    // Static analysis has no rates; at the end point the strain rate is B (v, w) (B7).
-    const bool damped = ctx.mode == AnalysisMode::kEndPoint && damping_ > 0.0;
-    for (size_t g = 0; g < lin.strain.size(); ++g) {
-      Vec6 e = lin.strain[g];
-      if (damped) e += damping_ * (lin.B[g] * rates);
-      stress.push_back(stiffness_ * e);
-    }
-    return NodalForces(lin, stress);
+    EvaluateAtEnd(ctx, forces, K);
+  } else {
+    EvaluateStep(ctx, forces, K);
   }
-  Eigen::VectorXd increments(6 * steps.size()), weighted(6 * steps.size());
-  for (size_t k = 0; k < steps.size(); ++k) {
-    const NodeStep& s = steps[k];
-    start.x.push_back(s.x_i);
-    start.R.push_back(s.R_i);
-    mid.x.push_back(0.5 * (s.x_i + s.x_f));
-    mid.R.push_back(s.R_i * Exp(0.5 * s.theta));
-    increments.segment<3>(6 * k) = s.dx;
-    increments.segment<3>(6 * k + 3) = s.theta;
-    // Rotations weighted by length^2 so the metric is in consistent units (Gonzalez 1996).
-    weighted.segment<3>(6 * k) = s.dx;
-    weighted.segment<3>(6 * k + 3) = length_ * length_ * s.theta;
-  }
-  // Along R_i Exp(tau theta) the body-frame rate is theta itself, so the mid-step gradient pairs with the
-  // increments directly; the correction makes G . increments = V_f - V_i exactly.
-  const Linearisation lin = Linearise(mid);
-  std::vector<Vec6> stress;
-  for (const Vec6& e : lin.strain) stress.push_back(stiffness_ * e);
-  Eigen::VectorXd G = NodalForces(lin, stress);
-  const std::vector<Vec6> strain_f = GaussStrains(end), strain_i = GaussStrains(start);
-  const double V_f = Energy(strain_f), V_i = Energy(strain_i);
-  const double mismatch = (V_f - V_i) - G.dot(increments);
-  // V_f - V_i carries the round-off of the strains, about eps x / length each, times the stresses: in a stiff
-  // section at rest it dwarfs eps V, and the correction (divided by the squared increments) would turn it
-  // into forces that Newton cannot remove.
-  const double strain_round_off = StrainRoundOff(steps);
-  double stress_work = 0;
-  for (size_t g = 0; g < stress.size(); ++g) stress_work += interpolation_->weight_ds[g] * stress[g].cwiseAbs().sum();
-  const double round_off = 100.0 * std::numeric_limits<double>::epsilon() * (std::abs(V_f) + std::abs(V_i)) +
-                           100.0 * strain_round_off * stress_work;
-  const double norm = increments.dot(weighted);
-  if (std::abs(mismatch) > round_off && norm > 0.0) G += mismatch / norm * weighted;
-  if (damping_ > 0.0) G += StepDampingForces(ctx, lin, strain_i, strain_f, increments, weighted, strain_round_off);
-  return G;
 }
 
-double BeamElement::StrainRoundOff(const std::vector<NodeStep>& steps) const {
+void BeamElement::EvaluateAtEnd(const StepContext& ctx, Field::Vector* forces, Field::Matrix* K) const {
+  const int n = shape_.num_nodes();
+  Field::Nodes end;
+  Field::Vector rates(6 * n);
+  for (int k = 0; k < n; ++k) {
+    const NodeStep& s = (*ctx.nodes)[nodes_[k]];
+    end.x[k] = s.x_f;
+    end.R[k] = s.R_f;
+    rates.segment<3>(6 * k) = s.v_f;
+    rates.segment<3>(6 * k + 3) = s.w_f;
+  }
+  const Field field(shape_, end, K != nullptr ? Field::Order::kSecond : Field::Order::kFirst);
+  // Static analysis has no rates; at the end point the strain rate is B (v, w) (B7).
+  const bool damped = ctx.mode == AnalysisMode::kEndPoint && damping_ > 0.0;
+  Field::PointVectors stress;
+  std::array<Field::Jacobian, BeamShape::kMaxPoints> B;
+  for (int g = 0; g < field.num_points(); ++g) {
+    Vec6 e = field.strain(g);
+    if (damped) {
+      B[g] = field.StrainJacobian(g);
+      e += damping_ * (B[g] * rates);
+    }
+    stress[g] = weighted_stiffness_[g] * e;
+  }
+  *forces += field.Gradient(stress);
+  if (K == nullptr) return;
+  field.AddTangent(stress, &weighted_stiffness_, K);
+  if (!damped) return;
+  // d/dp [B (v, w)]: the rates move with the unknowns by dvf_ddx and dwf_dtheta, and B with the configuration.
+  for (int g = 0; g < field.num_points(); ++g) {
+    Field::Jacobian rate_derivative = field.StrainJacobianDerivative(g, rates);
+    for (int k = 0; k < n; ++k) {
+      const NodeStep& s = (*ctx.nodes)[nodes_[k]];
+      rate_derivative.middleCols<3>(6 * k) += s.dvf_ddx * B[g].middleCols<3>(6 * k);
+      rate_derivative.middleCols<3>(6 * k + 3) += s.dwf_dtheta * B[g].middleCols<3>(6 * k + 3);
+    }
+    K->noalias() += B[g].transpose() * (damping_ * weighted_stiffness_[g]) * rate_derivative;
+  }
+}
+
+double BeamElement::StrainRoundOff(const StepContext& ctx) const {
   double coordinate = length_;
-  for (const NodeStep& s : steps) coordinate = std::max({coordinate, s.x_i.norm(), s.x_f.norm()});
+  for (int node : nodes_) {
+    const NodeStep& s = (*ctx.nodes)[node];
+    coordinate = std::max({coordinate, s.x_i.norm(), s.x_f.norm()});
+  }
   return std::numeric_limits<double>::epsilon() * coordinate / length_;
 }
 
-Eigen::VectorXd BeamElement::StepDampingForces(const StepContext& ctx, const Linearisation& mid,
-                                               const std::vector<Vec6>& strain_i, const std::vector<Vec6>& strain_f,
-                                               const Eigen::VectorXd& increments, const Eigen::VectorXd& weighted,
-                                               double strain_round_off) const {
+void BeamElement::EvaluateStep(const StepContext& ctx, Field::Vector* forces, Field::Matrix* K) const {
+  const int n = shape_.num_nodes(), dofs = 6 * n;
+  const bool tangent = K != nullptr;
+  StepFields step;
+  Field::Nodes start, mid, end;
+  step.d.resize(dofs);
+  step.W.resize(dofs);
+  step.to_mid.translation_rate = 0.5;
+  for (int k = 0; k < n; ++k) {
+    const NodeStep& s = (*ctx.nodes)[nodes_[k]];
+    start.x[k] = s.x_i;
+    start.R[k] = s.R_i;
+    end.x[k] = s.x_f;
+    end.R[k] = s.R_f;
+    // Along R_i Exp(tau theta) the body-frame rate is theta itself, so the mid-step gradient pairs with the
+    // increments directly; theta moving by t moves the middle by T(theta/2) t / 2 and the end by T(theta) t.
+    const RotationVectorCalculus half(0.5 * s.theta, RotationVectorCalculus::Level::kMaps);
+    mid.x[k] = 0.5 * (s.x_i + s.x_f);
+    mid.R[k] = s.R_i * half.exp();
+    step.to_mid.rotation[k] = 0.5 * half.tangent();
+    step.to_end.rotation[k] = s.T;
+    step.d.segment<3>(6 * k) = s.dx;
+    step.d.segment<3>(6 * k + 3) = s.theta;
+    // Rotations weighted by length^2 so the metric is in consistent units (Gonzalez 1996).
+    step.W.segment<3>(6 * k).setConstant(1.0);
+    step.W.segment<3>(6 * k + 3).setConstant(length_ * length_);
+  }
+  step.Wd = step.W.cwiseProduct(step.d);
+  step.norm = step.d.dot(step.Wd);
+  const bool damped = damping_ > 0.0;
+  step.start.emplace(shape_, start, Field::Order::kStrains);
+  step.mid.emplace(shape_, mid, tangent ? Field::Order::kSecond : Field::Order::kFirst);
+  step.end.emplace(shape_, end, tangent ? Field::Order::kFirst : Field::Order::kStrains);
+  const Field& at_mid = *step.mid;
+
+  Field::PointVectors elastic;
+  double stress_work = 0;
+  for (int g = 0; g < at_mid.num_points(); ++g) {
+    elastic[g] = weighted_stiffness_[g] * at_mid.strain(g);
+    stress_work += elastic[g].cwiseAbs().sum();
+  }
+  const Field::Vector G_mid = at_mid.Gradient(elastic);
+  const double V_f = Energy(*step.end), V_i = Energy(*step.start);
+  const double mismatch = (V_f - V_i) - G_mid.dot(step.d);
+  // V_f - V_i carries the round-off of the strains, about eps x / length each, times the stresses: in a stiff
+  // section at rest it dwarfs eps V, and the correction (divided by the squared increments) would turn it
+  // into forces that Newton cannot remove.
+  const double round_off = 100.0 * std::numeric_limits<double>::epsilon() * (std::abs(V_f) + std::abs(V_i)) +
+                           100.0 * StrainRoundOff(ctx) * stress_work;
+  const bool corrected = std::abs(mismatch) > round_off && step.norm > 0.0;
+  *forces += G_mid;
+  if (corrected) *forces += mismatch / step.norm * step.Wd;
+  if (tangent) {
+    // d G_mid / d increments, then the correction (B5) differentiated exactly.
+    Field::Matrix K_mid = Field::Matrix::Zero(dofs, dofs);
+    at_mid.AddTangent(elastic, &weighted_stiffness_, &K_mid);
+    step.to_mid.ApplyToColumns(n, &K_mid);
+    if (corrected) {
+      Field::PointVectors elastic_end;
+      for (int g = 0; g < at_mid.num_points(); ++g) elastic_end[g] = weighted_stiffness_[g] * step.end->strain(g);
+      Field::Vector end_gradient = step.end->Gradient(elastic_end);
+      Eigen::Matrix<double, 1, Eigen::Dynamic, Eigen::RowMajor, 1, Field::kMaxDofs> dV_f = end_gradient.transpose();
+      step.to_end.ApplyToColumns(n, &dV_f);
+      const Field::Vector dmismatch = dV_f.transpose() - G_mid - K_mid.transpose() * step.d;
+      K->noalias() += step.Wd * dmismatch.transpose() / step.norm;
+      K->noalias() -= (2.0 * mismatch / (step.norm * step.norm)) * step.Wd * step.Wd.transpose();
+      K->diagonal() += (mismatch / step.norm) * step.W;
+    }
+    *K += K_mid;
+  }
+  if (damped) AddStepDamping(ctx, step, forces, K);
+}
+
+void BeamElement::AddStepDamping(const StepContext& ctx, const StepFields& step, Field::Vector* forces,
+                                 Field::Matrix* K) const {
   // Section forces mu C (e_f - e_i) / h paired with a strain-increment operator B_m = B_mid + (de - B_mid d)
   // (W d)^T / (d^T W d), for which B_m d = de exactly (B7): the forces then do the work
   // -mu sum_g w_g de^T C de / h over the increments d.
-  const double norm = increments.dot(weighted);
-  Eigen::VectorXd f = Eigen::VectorXd::Zero(increments.size());
-  if (!(norm > 0.0)) return f;
-  for (size_t g = 0; g < strain_f.size(); ++g) {
-    const Vec6 de = strain_f[g] - strain_i[g];
-    const Vec6 stress = damping_ * (stiffness_ * de) / ctx.h;
-    Vec6 mismatch = de - mid.B[g] * increments;
-    if (mismatch.cwiseAbs().maxCoeff() <= 100.0 * strain_round_off) mismatch.setZero();  // round-off, as above
-    f += interpolation_->weight_ds[g] * (mid.B[g].transpose() * stress + mismatch.dot(stress) / norm * weighted);
+  const int n = shape_.num_nodes(), dofs = 6 * n;
+  const Field &mid = *step.mid, &end = *step.end;
+  const double strain_round_off = StrainRoundOff(ctx);
+  Field::PointVectors viscous, gap;
+  std::array<Mat6, BeamShape::kMaxPoints> viscous_rate;  // d viscous / d strain_f
+  double gap_work = 0;
+  for (int g = 0; g < mid.num_points(); ++g) {
+    const Vec6 de = end.strain(g) - step.start->strain(g);
+    viscous_rate[g] = damping_ * weighted_stiffness_[g] / ctx.h;
+    viscous[g] = viscous_rate[g] * de;
+    gap[g] = de - mid.StrainJacobian(g) * step.d;
+    if (gap[g].cwiseAbs().maxCoeff() <= 100.0 * strain_round_off) gap[g].setZero();  // round-off, as in (B5)
+    gap_work += gap[g].dot(viscous[g]);
   }
-  return f;
+  const bool moved = step.norm > 0.0;
+  *forces += mid.Gradient(viscous);
+  if (moved) *forces += gap_work / step.norm * step.Wd;
+  if (K == nullptr) return;
+  Field::Matrix K_damp = Field::Matrix::Zero(dofs, dofs);
+  mid.AddTangent(viscous, nullptr, &K_damp);
+  step.to_mid.ApplyToColumns(n, &K_damp);
+  Field::Vector dgap_work = Field::Vector::Zero(dofs);
+  for (int g = 0; g < mid.num_points(); ++g) {
+    const Field::Jacobian B_mid = mid.StrainJacobian(g);
+    Field::Jacobian B_end = end.StrainJacobian(g);
+    step.to_end.ApplyToColumns(n, &B_end);
+    K_damp.noalias() += B_mid.transpose() * viscous_rate[g] * B_end;
+    if (!moved) continue;
+    dgap_work.noalias() += B_end.transpose() * (viscous_rate[g].transpose() * gap[g]);
+    if (gap[g].isZero(0.0)) continue;
+    Field::Jacobian dgap = mid.StrainJacobianDerivative(g, step.d);
+    step.to_mid.ApplyToColumns(n, &dgap);
+    dgap = B_end - B_mid - dgap;
+    dgap_work.noalias() += dgap.transpose() * viscous[g];
+  }
+  if (moved) {
+    K_damp.noalias() += step.Wd * dgap_work.transpose() / step.norm;
+    K_damp.noalias() -= (2.0 * gap_work / (step.norm * step.norm)) * step.Wd * step.Wd.transpose();
+    K_damp.diagonal() += (gap_work / step.norm) * step.W;
+  }
+  *K += K_damp;
 }
-
-namespace {
-std::vector<NodeStep> Gather(const StepContext& ctx, const std::vector<int>& nodes) {
-  std::vector<NodeStep> steps;
-  for (int node : nodes) steps.push_back((*ctx.nodes)[node]);
-  return steps;
-}
-}  // namespace
 
 void BeamElement::AddResidual(const StepContext& ctx, Eigen::Ref<Eigen::VectorXd> r,
                               Eigen::Ref<Eigen::VectorXd> magnitude) const {
-  const Eigen::VectorXd forces = Forces(ctx, Gather(ctx, nodes_));
-  r += forces;
-  magnitude += forces.cwiseAbs();
+  AddResidualAndTangent(ctx, r, magnitude, nullptr);
 }
 
 void BeamElement::AddTangent(const StepContext& ctx, Eigen::Ref<Eigen::MatrixXd> J) const {
-  // Central differences of the exact forces: truncation O(step^2) ~ 1e-10 relative and round-off
-  // eps |forces| / step stay small enough for the condition numbers of slender beams (EA L^2 / EI ~ 1e6).
-  // At the end point the velocities move with the configuration by dvf_ddx, dwf_dtheta (damping).
-  const double step_x = 1.0e-5 * length_, step_theta = 1.0e-5;
-  const std::vector<NodeStep> steps = Gather(ctx, nodes_);
-  auto moved = [&](int j, double step) {
-    std::vector<NodeStep> moved_steps = steps;
-    NodeStep& s = moved_steps[j / 6];
-    s = PerturbNodeStep(steps[j / 6], step * Vec6::Unit(j % 6), ctx.mode);
-    s.v_f = steps[j / 6].v_f;
-    s.w_f = steps[j / 6].w_f;
-    if (j % 6 < 3) s.v_f[j % 3] += steps[j / 6].dvf_ddx * step;
-    if (j % 6 >= 3) s.w_f[j % 3] += steps[j / 6].dwf_dtheta * step;
-    return moved_steps;
-  };
-  for (int j = 0; j < num_local(); ++j) {
-    const double step = j % 6 < 3 ? step_x : step_theta;
-    J.col(j) += (Forces(ctx, moved(j, step)) - Forces(ctx, moved(j, -step))) / (2.0 * step);
-  }
+  Field::Vector forces = Field::Vector::Zero(num_local());
+  Field::Matrix K = Field::Matrix::Zero(num_local(), num_local());
+  Evaluate(ctx, &forces, &K);
+  J += K;
+}
+
+void BeamElement::AddResidualAndTangent(const StepContext& ctx, Eigen::Ref<Eigen::VectorXd> r,
+                                        Eigen::Ref<Eigen::VectorXd> magnitude, Eigen::Ref<Eigen::MatrixXd>* J) const {
+  Field::Vector forces = Field::Vector::Zero(num_local());
+  Field::Matrix K;
+  if (J != nullptr) K.setZero(num_local(), num_local());
+  Evaluate(ctx, &forces, J != nullptr ? &K : nullptr);
+  r += forces;
+  magnitude += forces.cwiseAbs();
+  if (J != nullptr) *J += K;
 }
 
 void BeamElement::AddEnergy(const State& state, const Vec3&, EnergyTally* tally) const {
-  tally->potential += Energy(GaussStrains(AtState(state)));
+  tally->potential += Energy(Field(shape_, AtState(state), Field::Order::kStrains));
 }
 
 void BeamElement::AddStepWork(const StepContext& ctx, StepWork* work) const {
   if (ctx.mode != AnalysisMode::kDynamic || damping_ == 0.0) return;
-  Configuration start, end;
-  for (const NodeStep& s : Gather(ctx, nodes_)) {
-    start.x.push_back(s.x_i);
-    start.R.push_back(s.R_i);
-    end.x.push_back(s.x_f);
-    end.R.push_back(s.R_f);
+  Field::Nodes start, end;
+  for (size_t k = 0; k < nodes_.size(); ++k) {
+    const NodeStep& s = (*ctx.nodes)[nodes_[k]];
+    start.x[k] = s.x_i;
+    start.R[k] = s.R_i;
+    end.x[k] = s.x_f;
+    end.R[k] = s.R_f;
   }
-  const std::vector<Vec6> strain_i = GaussStrains(start), strain_f = GaussStrains(end);
-  for (size_t g = 0; g < strain_f.size(); ++g) {
-    const Vec6 de = strain_f[g] - strain_i[g];
-    work->dissipated += interpolation_->weight_ds[g] * damping_ * de.dot(stiffness_ * de) / ctx.h;
+  const Field at_start(shape_, start, Field::Order::kStrains), at_end(shape_, end, Field::Order::kStrains);
+  for (int g = 0; g < shape_.num_points; ++g) {
+    const Vec6 de = at_end.strain(g) - at_start.strain(g);
+    work->dissipated += damping_ * de.dot(weighted_stiffness_[g] * de) / ctx.h;
   }
 }
 
 BeamElement::Section BeamElement::SectionAt(const State& state, double s) const {
   FLEXMBD_DEMAND(s >= -1.0e-12 * length_ && s <= length_ * (1.0 + 1.0e-12));
-  const Configuration c = AtState(state);
+  const Field::Nodes c = AtState(state);
   const double xi = 2.0 * s / length_ - 1.0;
-  const ShapeTable table = TableAt(order_, length_, {xi});
+  const BeamShape point = PointShape(shape_.order, length_, xi);
   Section section;
-  section.R = LineariseAt(*interpolation_, table, c.x, c.R).R[0];
-  for (int k = 0; k <= order_; ++k) section.x += table.N[0][k] * c.x[k];
+  section.R = Field(point, c, Field::Order::kStrains).SectionRotation(0);
+  for (int k = 0; k < shape_.num_nodes(); ++k) section.x += point.N[0][k] * c.x[k];
   // Strains are recovered at the Gauss points, where the reduced rule makes them accurate (the shear strains
   // between them carry the parasitic part that reduced integration removes from the energy), and carried to
   // s by the polynomial through them (docs/theory.md, "Station outputs").
-  const StrainJacobian gauss = LineariseAt(*interpolation_, interpolation_->gauss, c.x, c.R);
-  Eigen::VectorXd rates(6 * (order_ + 1));
-  for (int k = 0; k <= order_; ++k) {
+  const Field gauss(shape_, c, Field::Order::kFirst);
+  Field::Vector rates(6 * shape_.num_nodes());
+  for (int k = 0; k < shape_.num_nodes(); ++k) {
     rates.segment<3>(6 * k) = state.nodes[nodes_[k]].v;
     rates.segment<3>(6 * k + 3) = state.nodes[nodes_[k]].w;
   }
-  const std::vector<double>& points = ReducedGauss(order_).points;
   section.strain.setZero();
   Vec6 strain_and_damping = Vec6::Zero();
-  for (size_t g = 0; g < points.size(); ++g) {
+  for (int g = 0; g < shape_.num_points; ++g) {
     double weight = 1.0;
-    for (size_t m = 0; m < points.size(); ++m) {
-      if (m != g) weight *= (xi - points[m]) / (points[g] - points[m]);
+    for (int m = 0; m < shape_.num_points; ++m) {
+      if (m != g) weight *= (xi - shape_.xi[m]) / (shape_.xi[g] - shape_.xi[m]);
     }
-    section.strain += weight * gauss.strain[g];
-    strain_and_damping += weight * (gauss.strain[g] + damping_ * (gauss.B[g] * rates));
+    section.strain += weight * gauss.strain(g);
+    strain_and_damping += weight * (gauss.strain(g) + damping_ * (gauss.StrainJacobian(g) * rates));
   }
   section.load = stiffness_ * strain_and_damping;
   return section;

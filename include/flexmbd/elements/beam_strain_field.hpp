@@ -1,0 +1,114 @@
+#pragma once
+/// @file
+/// Section strains of one beam element at one configuration, and their first and second derivatives with
+/// respect to the node perturbations p = (u_k, phi_k), nodes at x_k + u_k, R_k Exp(phi_k) (docs/theory.md,
+/// (B10)-(B12)). Everything is fixed-size: no heap allocation.
+///
+/// The strains depend on the nodes only through the local coordinates z_k = (y_k, psi_k) of each node in the
+/// frame of the reference node r, y_k = R_r^T (x_k - x_r), psi_k = Log(R_r^T R_k), and at Gauss point g only
+/// through q_g = (y', psi, psi') interpolated from them. Derivatives are chained p -> z -> q -> strain.
+
+#include <array>
+#include <optional>
+
+#include <Eigen/Core>
+
+#include "flexmbd/elements/beam_shape.hpp"
+#include "flexmbd/math/rotation_vector_calculus.hpp"
+
+namespace flexmbd {
+
+class BeamStrainField {
+ public:
+  static constexpr int kMaxNodes = BeamShape::kMaxNodes;
+  static constexpr int kMaxPoints = BeamShape::kMaxPoints;
+  static constexpr int kMaxDofs = 6 * kMaxNodes;
+  using Vec6 = Eigen::Matrix<double, 6, 1>;
+  using Mat6 = Eigen::Matrix<double, 6, 6>;
+  /// 6 x (6 nodes): a strain Jacobian.
+  using Jacobian = Eigen::Matrix<double, 6, Eigen::Dynamic, 0, 6, kMaxDofs>;
+  /// (6 nodes): forces or a direction in p.
+  using Vector = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, kMaxDofs, 1>;
+  /// (6 nodes) x (6 nodes): a tangent.
+  using Matrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, kMaxDofs, kMaxDofs>;
+  /// Rows x (6 nodes), row-major when a single row (Eigen's rule for row vectors).
+  template <int Rows, int MaxRows>
+  using Wide = Eigen::Matrix<double, Rows, Eigen::Dynamic, Rows == 1 ? Eigen::RowMajor : Eigen::ColMajor, MaxRows,
+                             kMaxDofs>;
+  /// One value per Gauss point.
+  using PointVectors = std::array<Vec6, kMaxPoints>;
+
+  /// Node positions [m] and rotations of the element, in element order.
+  struct Nodes {
+    std::array<Vec3, kMaxNodes> x;
+    std::array<Mat3, kMaxNodes> R;
+  };
+
+  /// How far to differentiate: strains only, first derivatives, or also second derivatives.
+  enum class Order { kStrains, kFirst, kSecond };
+
+  BeamStrainField(const BeamShape& shape, const Nodes& nodes, Order order);
+
+  int num_points() const { return shape_->num_points; }
+  int num_dofs() const { return 6 * shape_->num_nodes(); }
+
+  /// [eps; kappa] at point g (B2), section frame.
+  const Vec6& strain(int g) const { return points_[g].strain; }
+  /// The section frame R(s_g) = R_r Exp(psi_g) in W (B1).
+  Mat3 SectionRotation(int g) const { return R_ref_ * points_[g].calculus->exp(); }
+
+  /// B_g = d strain_g / dp (Order kFirst or kSecond).
+  Jacobian StrainJacobian(int g) const;
+  /// sum_g B_g^T stress_g: the generalised forces of section forces at the points (already weighted).
+  Vector Gradient(const PointVectors& stress) const;
+  /// K += sum_g B_g^T material_g B_g (if material) + d/dp [sum_g B_g^T stress_g] at fixed stress_g, rotations
+  /// moved as R_k Exp(d phi_k) (Order kSecond).
+  void AddTangent(const PointVectors& stress, const std::array<Mat6, kMaxPoints>* material, Matrix* K) const;
+  /// d/dp [B_g v] at fixed v (Order kSecond).
+  Jacobian StrainJacobianDerivative(int g, const Vector& v) const;
+
+ private:
+  using Mat9 = Eigen::Matrix<double, 9, 9>;
+  using Mat69 = Eigen::Matrix<double, 6, 9>;
+
+  struct Point {
+    Vec3 psi, dpsi, dy;  // psi_g, psi'_g, y'_g (local frame of the reference node)
+    Vec3 a;              // Exp(psi)^T y' = eps + e1
+    Vec6 strain;
+    std::optional<RotationVectorCalculus> calculus;
+    Mat69 E;             // d strain / d q
+  };
+  struct Node {
+    Vec3 y, psi;
+    Mat3 Q;  // R_r^T R_k
+    std::optional<RotationVectorCalculus> calculus;
+    Mat3 inverse_tangent_Qt;  // T(psi_k)^-1 Q_k^T
+  };
+
+  // sum_i stress_i d2 strain_i / dq2 (9 x 9).
+  Mat9 PointHessian(const Point& p, const Vec6& stress) const;
+  // d2 strain / dq2 along q_dot (6 x 9).
+  Mat69 PointSecondDerivative(const Point& p, const Eigen::Matrix<double, 9, 1>& q_dot) const;
+  // X dq_g/dz for X with 9 columns (rows x 6n), and (dq_g/dz)^T x for a 9-vector.
+  template <int Rows>
+  Wide<Rows, Rows> PointToLocal(int g, const Eigen::Matrix<double, Rows, 9>& X) const;
+  Vector PointToLocal(int g, const Eigen::Matrix<double, 9, 1>& x) const;
+  // dz/dp applied: X (dz/dp) for X with 6n columns, and (dz/dp)^T c for a covector c of z.
+  template <class Derived>
+  Wide<Derived::RowsAtCompileTime, Derived::MaxRowsAtCompileTime>
+  LocalToPerturbation(const Eigen::MatrixBase<Derived>& X) const;
+  Vector LocalToPerturbation(const Vector& c) const;
+  // dz/dp v.
+  Vector LocalRate(const Vector& v) const;
+  // K += sum_k c_k . d2 z_k / dp2 for a covector c of z.
+  void AddLocalCoordinateHessian(const Vector& c, Matrix* K) const;
+  // d2 z / dp2 along v (6n x 6n).
+  Matrix LocalCoordinateSecondDerivative(const Vector& v) const;
+
+  const BeamShape* shape_;
+  Mat3 R_ref_;
+  std::array<Node, kMaxNodes> nodes_;
+  std::array<Point, kMaxPoints> points_;
+};
+
+}  // namespace flexmbd

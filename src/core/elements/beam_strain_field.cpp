@@ -1,0 +1,285 @@
+#include "flexmbd/elements/beam_strain_field.hpp"
+
+namespace flexmbd {
+namespace {
+
+// Block offsets of q = (y', psi, psi') and of a node's six entries (translation, then rotation).
+constexpr int kDy = 0, kPsi = 3, kDpsi = 6;
+constexpr int kRotation = 3;
+
+Mat3 SymmetricPart(const Mat3& A) { return 0.5 * (A + A.transpose()); }
+
+}  // namespace
+
+BeamStrainField::BeamStrainField(const BeamShape& shape, const Nodes& nodes, Order order)
+    : shape_(&shape) {
+  const int n = shape.num_nodes(), r = shape.reference;
+  using Level = RotationVectorCalculus::Level;
+  const Level point_level = order == Order::kStrains ? Level::kMaps
+                            : order == Order::kFirst ? Level::kFirst
+                                                     : Level::kSecond;
+  R_ref_ = nodes.R[r];
+  for (int k = 0; k < n; ++k) {
+    Node& node = nodes_[k];
+    node.Q = R_ref_.transpose() * nodes.R[k];
+    node.psi = k == r ? Vec3::Zero() : Log(node.Q);
+    node.y = R_ref_.transpose() * (nodes.x[k] - nodes.x[r]);
+    if (order != Order::kStrains) node.calculus.emplace(node.psi, order == Order::kFirst ? Level::kFirst : Level::kSecond);
+  }
+  for (int g = 0; g < shape.num_points; ++g) {
+    Point& p = points_[g];
+    p.psi = p.dpsi = p.dy = Vec3::Zero();
+    for (int k = 0; k < n; ++k) {
+      p.psi += shape.N[g][k] * nodes_[k].psi;
+      p.dpsi += shape.dNds[g][k] * nodes_[k].psi;
+      p.dy += shape.dNds[g][k] * nodes_[k].y;
+    }
+    p.calculus.emplace(p.psi, point_level);
+    const Mat3& T = p.calculus->tangent();
+    p.a = p.calculus->exp().transpose() * p.dy;
+    p.strain << p.a - Vec3::UnitX(), T * p.dpsi;
+  }
+  if (order == Order::kStrains) return;
+  for (int k = 0; k < n; ++k) {
+    if (k != r) nodes_[k].inverse_tangent_Qt = nodes_[k].calculus->inverse_tangent() * nodes_[k].Q.transpose();
+  }
+  for (int g = 0; g < shape.num_points; ++g) {
+    Point& p = points_[g];
+    const RotationVectorCalculus& c = *p.calculus;
+    p.E.setZero();
+    p.E.block<3, 3>(0, kDy) = c.exp().transpose();
+    p.E.block<3, 3>(0, kPsi) = Skew(p.a) * c.tangent();
+    for (int j = 0; j < 3; ++j) p.E.block<3, 1>(3, kPsi + j) = c.TangentDerivative(Vec3::Unit(j)) * p.dpsi;
+    p.E.block<3, 3>(3, kDpsi) = c.tangent();
+  }
+}
+
+namespace {
+// q_g = (y', psi, psi') = sum_k (N'_k y_k, N_k psi_k, N'_k psi_k): columns of z are sums of columns of q.
+template <class Derived>
+BeamStrainField::Wide<Derived::RowsAtCompileTime, Derived::MaxRowsAtCompileTime>
+PointToLocalColumns(const BeamShape& shape, int g, const Eigen::MatrixBase<Derived>& X) {
+  const int n = shape.num_nodes();
+  BeamStrainField::Wide<Derived::RowsAtCompileTime, Derived::MaxRowsAtCompileTime> out(X.rows(), 6 * n);
+  for (int k = 0; k < n; ++k) {
+    const double N = shape.N[g][k], dN = shape.dNds[g][k];
+    out.template middleCols<3>(6 * k) = dN * X.template middleCols<3>(kDy);
+    out.template middleCols<3>(6 * k + kRotation) = N * X.template middleCols<3>(kPsi) + dN * X.template middleCols<3>(kDpsi);
+  }
+  return out;
+}
+
+}  // namespace
+
+template <int Rows>
+BeamStrainField::Wide<Rows, Rows> BeamStrainField::PointToLocal(
+    int g, const Eigen::Matrix<double, Rows, 9>& X) const {
+  return PointToLocalColumns(*shape_, g, X);
+}
+
+BeamStrainField::Vector BeamStrainField::PointToLocal(int g, const Eigen::Matrix<double, 9, 1>& x) const {
+  return PointToLocalColumns(*shape_, g, x.transpose()).transpose();
+}
+
+template <class Derived>
+BeamStrainField::Wide<Derived::RowsAtCompileTime, Derived::MaxRowsAtCompileTime>
+BeamStrainField::LocalToPerturbation(const Eigen::MatrixBase<Derived>& X) const {
+  const int n = shape_->num_nodes(), r = shape_->reference;
+  BeamStrainField::Wide<Derived::RowsAtCompileTime, Derived::MaxRowsAtCompileTime> out;
+  out.setZero(X.rows(), 6 * n);
+  const Mat3 Rt = R_ref_.transpose();
+  for (int k = 0; k < n; ++k) {
+    if (k == r) continue;
+    const Node& node = nodes_[k];
+    const auto Xy = X.template middleCols<3>(6 * k);
+    const auto Xpsi = X.template middleCols<3>(6 * k + kRotation);
+    out.template middleCols<3>(6 * k).noalias() = Xy * Rt;
+    out.template middleCols<3>(6 * r).noalias() -= Xy * Rt;
+    out.template middleCols<3>(6 * r + kRotation).noalias() += Xy * Skew(node.y);
+    out.template middleCols<3>(6 * r + kRotation).noalias() -= Xpsi * node.inverse_tangent_Qt;
+    out.template middleCols<3>(6 * k + kRotation).noalias() = Xpsi * node.calculus->inverse_tangent();
+  }
+  return out;
+}
+
+BeamStrainField::Vector BeamStrainField::LocalToPerturbation(const Vector& c) const {
+  return LocalToPerturbation(c.transpose()).transpose();
+}
+
+BeamStrainField::Vector BeamStrainField::LocalRate(const Vector& v) const {
+  const int n = shape_->num_nodes(), r = shape_->reference;
+  Vector z = Vector::Zero(6 * n);
+  const Vec3 u_r = v.segment<3>(6 * r), phi_r = v.segment<3>(6 * r + kRotation);
+  for (int k = 0; k < n; ++k) {
+    if (k == r) continue;
+    const Node& node = nodes_[k];
+    z.segment<3>(6 * k) = R_ref_.transpose() * (v.segment<3>(6 * k) - u_r) + node.y.cross(phi_r);
+    z.segment<3>(6 * k + kRotation) =
+        node.calculus->inverse_tangent() * v.segment<3>(6 * k + kRotation) - node.inverse_tangent_Qt * phi_r;
+  }
+  return z;
+}
+
+BeamStrainField::Jacobian BeamStrainField::StrainJacobian(int g) const {
+  return LocalToPerturbation(PointToLocal<6>(g, points_[g].E));
+}
+
+BeamStrainField::Vector BeamStrainField::Gradient(const PointVectors& stress) const {
+  Vector c = Vector::Zero(num_dofs());
+  for (int g = 0; g < num_points(); ++g) c += PointToLocal(g, points_[g].E.transpose() * stress[g]);
+  return LocalToPerturbation(c);
+}
+
+void BeamStrainField::AddTangent(const PointVectors& stress, const std::array<Mat6, kMaxPoints>* material,
+                                 Matrix* K) const {
+  const int n = shape_->num_nodes();
+  Matrix Kz = Matrix::Zero(num_dofs(), num_dofs());
+  Vector c = Vector::Zero(num_dofs());
+  for (int g = 0; g < num_points(); ++g) {
+    const Point& p = points_[g];
+    c += PointToLocal(g, p.E.transpose() * stress[g]);
+    Mat9 H = PointHessian(p, stress[g]);
+    if (material != nullptr) H.noalias() += p.E.transpose() * (*material)[g] * p.E;
+    // A^T H A with A = dq/dz.
+    const Eigen::Matrix<double, 9, Eigen::Dynamic, 0, 9, kMaxDofs> HA = PointToLocal<9>(g, H);
+    Kz += PointToLocalColumns(*shape_, g, HA.transpose());
+  }
+  // (dz/dp)^T Kz (dz/dp).
+  const Matrix KzJ = LocalToPerturbation(Kz);
+  *K += LocalToPerturbation(KzJ.transpose()).transpose();
+  AddLocalCoordinateHessian(c, K);
+  // The forces are gradients along R_k Exp(phi_k); moving R_k by Exp(d) turns them by half the rotation:
+  // d/dd [grad at R Exp(d)] = Hessian + Skew(forces_phi) / 2 (docs/theory.md, (B12)).
+  const Vector f = LocalToPerturbation(c);
+  for (int k = 0; k < n; ++k) {
+    K->block<3, 3>(6 * k + kRotation, 6 * k + kRotation) += 0.5 * Skew(f.segment<3>(6 * k + kRotation));
+  }
+}
+
+BeamStrainField::Mat9 BeamStrainField::PointHessian(const Point& p, const Vec6& stress) const {
+  const RotationVectorCalculus& c = *p.calculus;
+  const Mat3& T = c.tangent();
+  const Vec3 force = stress.head<3>(), moment = stress.tail<3>();
+  std::array<Mat3, 3> DT;
+  for (int j = 0; j < 3; ++j) DT[j] = c.TangentDerivative(Vec3::Unit(j));
+  Mat9 H = Mat9::Zero();
+  // eps = Exp(psi)^T y' - e1: d eps = Exp(psi)^T dy' + Skew(a) T dpsi.
+  const Mat3 cross = -c.exp() * Skew(force) * T;
+  H.block<3, 3>(kDy, kPsi) = cross;
+  H.block<3, 3>(kPsi, kDy) = cross.transpose();
+  Mat3 psi_psi = T.transpose() * (p.a * force.transpose() - force.dot(p.a) * Mat3::Identity()) * T;
+  const Vec3 force_cross_a = force.cross(p.a);
+  for (int j = 0; j < 3; ++j) psi_psi.col(j) += DT[j].transpose() * force_cross_a;
+  // kappa = T(psi) psi'.
+  for (int i = 0; i < 3; ++i) {
+    for (int j = i; j < 3; ++j) {
+      const double v = moment.dot(c.TangentSecondDerivative(Vec3::Unit(i), Vec3::Unit(j)) * p.dpsi);
+      psi_psi(i, j) += v;
+      if (j != i) psi_psi(j, i) += v;
+    }
+  }
+  H.block<3, 3>(kPsi, kPsi) = psi_psi;
+  for (int i = 0; i < 3; ++i) H.block<1, 3>(kPsi + i, kDpsi) = (DT[i].transpose() * moment).transpose();
+  H.block<3, 3>(kDpsi, kPsi) = H.block<3, 3>(kPsi, kDpsi).transpose();
+  return H;
+}
+
+BeamStrainField::Mat69 BeamStrainField::PointSecondDerivative(const Point& p,
+                                                              const Eigen::Matrix<double, 9, 1>& q_dot) const {
+  const RotationVectorCalculus& c = *p.calculus;
+  const Mat3& T = c.tangent();
+  const Vec3 dy_dot = q_dot.segment<3>(kDy), psi_dot = q_dot.segment<3>(kPsi), dpsi_dot = q_dot.segment<3>(kDpsi);
+  const Mat3 DT_dot = c.TangentDerivative(psi_dot);
+  Mat69 D = Mat69::Zero();
+  const Vec3 a_dot = c.exp().transpose() * dy_dot + p.a.cross(T * psi_dot);
+  D.block<3, 3>(0, kDy) = -Skew(T * psi_dot) * c.exp().transpose();
+  D.block<3, 3>(0, kPsi) = Skew(a_dot) * T + Skew(p.a) * DT_dot;
+  for (int j = 0; j < 3; ++j) {
+    D.block<3, 1>(3, kPsi + j) = c.TangentSecondDerivative(Vec3::Unit(j), psi_dot) * p.dpsi +
+                                 c.TangentDerivative(Vec3::Unit(j)) * dpsi_dot;
+  }
+  D.block<3, 3>(3, kDpsi) = DT_dot;
+  return D;
+}
+
+void BeamStrainField::AddLocalCoordinateHessian(const Vector& c, Matrix* K) const {
+  const int n = shape_->num_nodes(), r = shape_->reference;
+  const int ur = 6 * r, phr = 6 * r + kRotation;
+  for (int k = 0; k < n; ++k) {
+    if (k == r) continue;
+    const Node& node = nodes_[k];
+    const int uk = 6 * k, phk = 6 * k + kRotation;
+    // y_k: second-order part -Skew(phi_r) R_r^T (u_k - u_r) + Skew(phi_r)^2 y_k / 2.
+    const Vec3 a = c.segment<3>(uk);
+    const Mat3 Sa = Skew(a) * R_ref_.transpose();
+    K->block<3, 3>(phr, uk) += Sa;
+    K->block<3, 3>(phr, ur) -= Sa;
+    K->block<3, 3>(uk, phr) += Sa.transpose();
+    K->block<3, 3>(ur, phr) -= Sa.transpose();
+    K->block<3, 3>(phr, phr) += SymmetricPart(Skew(a) * Skew(node.y));
+    // psi_k = Log(Q Exp(b)), b = c + phi_k + c x phi_k / 2, c = -Q^T phi_r (docs/theory.md, (B11)).
+    const Vec3 b = c.segment<3>(phk);
+    const Mat3& Tinv = node.calculus->inverse_tangent();
+    const Vec3 t = Tinv.transpose() * b;
+    const Mat3 half_cross = 0.5 * node.Q * Skew(t);
+    K->block<3, 3>(phr, phk) += half_cross;
+    K->block<3, 3>(phk, phr) += half_cross.transpose();
+    Mat3 S;
+    for (int m = 0; m < 3; ++m) S.col(m) = node.calculus->InverseTangentDerivative(Vec3::Unit(m)).transpose() * b;
+    S = S * Tinv;
+    S -= 0.5 * Skew(t);
+    K->block<3, 3>(phk, phk) += S;
+    K->block<3, 3>(phk, phr) -= S * node.Q.transpose();
+    K->block<3, 3>(phr, phk) -= node.Q * S;
+    K->block<3, 3>(phr, phr) += node.Q * S * node.Q.transpose();
+  }
+}
+
+BeamStrainField::Matrix BeamStrainField::LocalCoordinateSecondDerivative(const Vector& v) const {
+  const int n = shape_->num_nodes(), r = shape_->reference;
+  const int ur = 6 * r, phr = 6 * r + kRotation;
+  Matrix D = Matrix::Zero(num_dofs(), num_dofs());
+  const Vec3 phi_r = v.segment<3>(phr);
+  for (int k = 0; k < n; ++k) {
+    if (k == r) continue;
+    const Node& node = nodes_[k];
+    const int uk = 6 * k, phk = 6 * k + kRotation;
+    const Mat3 turn = Skew(phi_r) * R_ref_.transpose();
+    D.block<3, 3>(uk, uk) = -turn;
+    D.block<3, 3>(uk, ur) = turn;
+    D.block<3, 3>(uk, phr) = Skew(R_ref_.transpose() * (v.segment<3>(uk) - v.segment<3>(ur))) -
+                             0.5 * (Skew(phi_r) * Skew(node.y) + Skew(phi_r.cross(node.y)));
+    const Mat3& Tinv = node.calculus->inverse_tangent();
+    const Vec3 phi_k = v.segment<3>(phk);
+    const Vec3 c = -node.Q.transpose() * phi_r, beta = c + phi_k;
+    Mat3 M;
+    for (int m = 0; m < 3; ++m) M.col(m) = node.calculus->InverseTangentDerivative(Vec3::Unit(m)) * beta;
+    M = M * Tinv + 0.5 * Tinv * Skew(beta);
+    D.block<3, 3>(phk, phk) = 0.5 * Tinv * Skew(c) + M;
+    D.block<3, 3>(phk, phr) = 0.5 * Tinv * Skew(phi_k) * node.Q.transpose() - M * node.Q.transpose();
+  }
+  return D;
+}
+
+BeamStrainField::Jacobian BeamStrainField::StrainJacobianDerivative(int g, const Vector& v) const {
+  const Point& p = points_[g];
+  const int n = shape_->num_nodes();
+  const Vector z_dot = LocalRate(v);
+  Eigen::Matrix<double, 9, 1> q_dot = Eigen::Matrix<double, 9, 1>::Zero();
+  for (int k = 0; k < n; ++k) {
+    q_dot.segment<3>(kDy) += shape_->dNds[g][k] * z_dot.segment<3>(6 * k);
+    q_dot.segment<3>(kPsi) += shape_->N[g][k] * z_dot.segment<3>(6 * k + kRotation);
+    q_dot.segment<3>(kDpsi) += shape_->dNds[g][k] * z_dot.segment<3>(6 * k + kRotation);
+  }
+  Jacobian D = LocalToPerturbation(PointToLocal<6>(g, PointSecondDerivative(p, q_dot)));
+  D.noalias() += PointToLocal<6>(g, p.E) * LocalCoordinateSecondDerivative(v);
+  // B_g at R Exp(d) applied to v is B_g T(d)^-1 v = B_g (v - v x d / 2 + ...) per node: -B_phi Skew(v_phi) / 2.
+  const Jacobian B = StrainJacobian(g);
+  for (int k = 0; k < n; ++k) {
+    D.middleCols<3>(6 * k + kRotation).noalias() -=
+        0.5 * B.middleCols<3>(6 * k + kRotation) * Skew(v.segment<3>(6 * k + kRotation));
+  }
+  return D;
+}
+
+}  // namespace flexmbd

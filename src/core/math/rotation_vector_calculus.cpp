@@ -1,0 +1,105 @@
+#include "flexmbd/math/rotation_vector_calculus.hpp"
+
+#include <array>
+#include <cmath>
+
+namespace flexmbd {
+namespace {
+
+// Highest n of f_n needed: the second derivative of f_3 takes f_7.
+constexpr int kHighest = 7;
+using Ratios = std::array<double, kHighest + 1>;
+
+// Below s = 4 (2 rad) every f_n is summed as its series: for n >= 1 the terms fall by at least
+// s / ((2k + n + 1)(2k + n + 2)) < 1 each, so there is no cancellation. The sum stops once s^k / (2k)!, which
+// bounds the next term relative to f_n ~ 1/n!, is below 1e-17: 4 terms at s = 1e-4, 12 at s = 4.
+// Above it f_0 and f_1 come from cos and sin and the others from f_{n+2} = (1/n! - f_n) / s, which divides
+// each error by about s / ((n + 1)(n + 2)): at most ~100 eps for f_7 at s = 4.
+constexpr double kSeriesLimit = 4.0;
+constexpr double kSeriesTruncation = 1.0e-17;
+constexpr int kMaxTerms = 14;
+
+// 1 / m! for m = 0 .. 2 kMaxTerms + kHighest.
+struct InverseFactorials {
+  std::array<double, 2 * kMaxTerms + kHighest + 1> value;
+  InverseFactorials() {
+    value[0] = 1.0;
+    for (size_t m = 1; m < value.size(); ++m) value[m] = value[m - 1] / static_cast<double>(m);
+  }
+};
+
+// f_0 .. f_highest.
+Ratios SeriesRatios(double s, int highest) {
+  static const InverseFactorials inverse;
+  Ratios f{};
+  double power = 1.0;  // (-s)^k
+  for (int k = 0; k < kMaxTerms; ++k) {
+    for (int n = 0; n <= highest; ++n) f[n] += power * inverse.value[2 * k + n];
+    if (std::abs(power) * inverse.value[2 * k] < kSeriesTruncation) break;
+    power *= -s;
+  }
+  return f;
+}
+
+Ratios ClosedRatios(double s, int highest) {
+  Ratios f{};
+  const double t = std::sqrt(s);
+  f[0] = std::cos(t);
+  f[1] = std::sin(t) / t;
+  double factorial = 1.0;  // n!
+  for (int n = 0; n + 2 <= highest; ++n) {
+    if (n > 0) factorial *= n;
+    f[n + 2] = (1.0 / factorial - f[n]) / s;
+  }
+  return f;
+}
+
+}  // namespace
+
+RotationVectorCalculus::RotationVectorCalculus(const Vec3& psi, Level level) : psi_(psi) {
+  const double s = psi.squaredNorm();
+  // The maps take f_1..f_3; first derivatives f_5 (through f_3'), second derivatives f_7 (through f_3'').
+  const int highest = level == Level::kMaps ? 3 : level == Level::kFirst ? 5 : kHighest;
+  const Ratios f = s < kSeriesLimit ? SeriesRatios(s, highest) : ClosedRatios(s, highest);
+  K_ = Skew(psi);
+  K2_ = K_ * K_;
+  a_ = f[2];
+  b_ = f[3];
+  exp_ = Mat3::Identity() + f[1] * K_ + f[2] * K2_;
+  tangent_ = Mat3::Identity() - a_ * K_ + b_ * K2_;
+  if (level == Level::kMaps) return;
+  // d f_n / ds and d2 f_n / ds2 from the identity f_n' = (n f_{n+2} - f_{n+1}) / 2.
+  auto d1 = [&](int n) { return 0.5 * (n * f[n + 2] - f[n + 1]); };
+  auto d2 = [&](int n) { return 0.5 * (n * d1(n + 2) - d1(n + 1)); };
+  a_s_ = d1(2);
+  b_s_ = d1(3);
+  // c = u / v with u = (f_3 - 2 f_4) / 2, v = f_2.
+  const double u = 0.5 * (f[3] - 2.0 * f[4]);
+  c_ = u / f[2];
+  inverse_tangent_ = Mat3::Identity() + 0.5 * K_ + c_ * K2_;
+  if (level == Level::kFirst) return;
+  a_ss_ = d2(2);
+  b_ss_ = d2(3);
+  const double u_s = 0.5 * (d1(3) - 2.0 * d1(4));
+  c_s_ = (u_s * f[2] - u * d1(2)) / (f[2] * f[2]);
+}
+
+Mat3 RotationVectorCalculus::TangentDerivative(const Vec3& d) const {
+  const Mat3 D = Skew(d);
+  return -a_ * D + b_ * (D * K_ + K_ * D) + 2.0 * psi_.dot(d) * (-a_s_ * K_ + b_s_ * K2_);
+}
+
+Mat3 RotationVectorCalculus::TangentSecondDerivative(const Vec3& d1, const Vec3& d2) const {
+  const Mat3 D1 = Skew(d1), D2 = Skew(d2);
+  const double p1 = psi_.dot(d1), p2 = psi_.dot(d2);
+  return b_ * (D1 * D2 + D2 * D1) + 2.0 * p2 * (-a_s_ * D1 + b_s_ * (D1 * K_ + K_ * D1)) +
+         2.0 * p1 * (-a_s_ * D2 + b_s_ * (D2 * K_ + K_ * D2)) + 2.0 * d1.dot(d2) * (-a_s_ * K_ + b_s_ * K2_) +
+         4.0 * p1 * p2 * (-a_ss_ * K_ + b_ss_ * K2_);
+}
+
+Mat3 RotationVectorCalculus::InverseTangentDerivative(const Vec3& d) const {
+  const Mat3 D = Skew(d);
+  return 0.5 * D + c_ * (D * K_ + K_ * D) + 2.0 * c_s_ * psi_.dot(d) * K2_;
+}
+
+}  // namespace flexmbd

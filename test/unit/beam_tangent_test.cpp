@@ -1,0 +1,359 @@
+// The beam element's analytic forces and tangents (BeamStrainField, BeamElement) against references that
+// share no code with them: forces against forward-mode automatic differentiation of an independently written
+// strain energy, tangents against central differences of those forces, for every analysis the element serves,
+// at random large-rotation states of linear, quadratic and cubic elements.
+
+#include <gtest/gtest.h>
+
+#include <functional>
+#include <vector>
+
+#include <Eigen/Core>
+#include <unsupported/Eigen/AutoDiff>
+
+#include "flexmbd/elements/beam_element.hpp"
+#include "flexmbd/math/rotation_vector_calculus.hpp"
+#include "flexmbd/math/so3_generic.hpp"
+#include "unit_test_helpers.hpp"
+
+namespace flexmbd {
+namespace {
+
+using Vec6 = Eigen::Matrix<double, 6, 1>;
+using Mat6 = Eigen::Matrix<double, 6, 6>;
+
+// Central-difference step [m or rad]: truncation step^2 |f'''| ~ 1e-12 and round-off eps |f| / step ~ 1e-10,
+// both relative to the largest tangent entry of these well-conditioned sections.
+constexpr double kStep = 1.0e-6;
+// The bar for analytic tangents: 1e-7 relative to the largest entry, a margin of 1e3 over the
+// difference error above, while a missing or wrong term shows at 1e-3 or more.
+constexpr double kTangentTolerance = 1.0e-7;
+// Forces against automatic differentiation: both exact up to round-off of sums of ~100 terms.
+constexpr double kForceTolerance = 1.0e-12;
+
+// ---- the rotation-vector derivatives -------------------------------------------------------------------
+
+// Angles on both sides of the series switch (2 rad) and from tiny to near pi.
+const std::vector<double> kAngles = {0.0, 1.0e-7, 1.0e-3, 0.3, 1.2, 1.99, 2.01, 2.8, 3.1};
+// Central differences of T (entries <= 1) with step 1e-6: error below 1e-10.
+constexpr double kCalculusTolerance = 1.0e-9;
+
+TEST(RotationVectorCalculus, MapsMatchSo3) {
+  test::Random random(11);
+  for (double angle : kAngles) {
+    const Vec3 psi = angle * random.UnitVector();
+    const RotationVectorCalculus c(psi);
+    // Both are sums of the same few terms; 1e-14 is a few eps of entries <= 1.
+    EXPECT_LT((c.exp() - Exp(psi)).cwiseAbs().maxCoeff(), 1e-14) << angle;
+    EXPECT_LT((c.tangent() - RightJacobian(psi)).cwiseAbs().maxCoeff(), 1e-14) << angle;
+    EXPECT_LT((c.tangent() * c.inverse_tangent() - Mat3::Identity()).cwiseAbs().maxCoeff(), 1e-13) << angle;
+  }
+}
+
+TEST(RotationVectorCalculus, DerivativesMatchFiniteDifferences) {
+  test::Random random(12);
+  for (double angle : kAngles) {
+    const Vec3 psi = angle * random.UnitVector();
+    const Vec3 d1 = random.UnitVector(), d2 = random.UnitVector();
+    const RotationVectorCalculus c(psi);
+    auto T = [&](const Vec3& p) { return RotationVectorCalculus(p).tangent(); };
+    auto Tinv = [&](const Vec3& p) { return RotationVectorCalculus(p).inverse_tangent(); };
+    auto DT = [&](const Vec3& p) { return RotationVectorCalculus(p).TangentDerivative(d1); };
+    const Mat3 fd_T = (T(psi + kStep * d1) - T(psi - kStep * d1)) / (2 * kStep);
+    const Mat3 fd_Tinv = (Tinv(psi + kStep * d1) - Tinv(psi - kStep * d1)) / (2 * kStep);
+    const Mat3 fd_DT = (DT(psi + kStep * d2) - DT(psi - kStep * d2)) / (2 * kStep);
+    EXPECT_LT((c.TangentDerivative(d1) - fd_T).cwiseAbs().maxCoeff(), kCalculusTolerance) << angle;
+    EXPECT_LT((c.InverseTangentDerivative(d1) - fd_Tinv).cwiseAbs().maxCoeff(), kCalculusTolerance) << angle;
+    EXPECT_LT((c.TangentSecondDerivative(d1, d2) - fd_DT).cwiseAbs().maxCoeff(), kCalculusTolerance) << angle;
+  }
+}
+
+// ---- reference strain energy by automatic differentiation ----------------------------------------------
+
+using AutoDiff = Eigen::AutoDiffScalar<Eigen::VectorXd>;
+template <class T>
+using V3 = Eigen::Matrix<T, 3, 1>;
+template <class T>
+using M3 = Eigen::Matrix<T, 3, 3>;
+
+// Rotation vector of a rotation by less than pi/2 (enough for the states below), for any scalar.
+template <class T>
+V3<T> LogOf(const M3<T>& R) {
+  const V3<T> a(0.5 * (R(2, 1) - R(1, 2)), 0.5 * (R(0, 2) - R(2, 0)), 0.5 * (R(1, 0) - R(0, 1)));
+  const T s = sqrt(T(a.squaredNorm()) + 1e-300);
+  return (asin(s) / s) * a;
+}
+
+// Strain energy (B1)-(B3) of an element with nodes at x_k + u_k, R_k Exp(phi_k), p = (u_k, phi_k).
+template <class T>
+T ReferenceEnergy(const std::vector<Vec3>& x, const std::vector<Mat3>& R, const Eigen::Matrix<T, Eigen::Dynamic, 1>& p,
+                  double length, const Mat6& C) {
+  const int n = static_cast<int>(x.size()), order = n - 1, r = order / 2;
+  std::vector<V3<T>> xs(n);
+  std::vector<M3<T>> Rs(n), psi_nodes(n);
+  std::vector<V3<T>> psi(n);
+  for (int k = 0; k < n; ++k) {
+    xs[k] = x[k].cast<T>() + p.template segment<3>(6 * k);
+    Rs[k] = R[k].cast<T>() * so3::ExpOf<T>(V3<T>(p.template segment<3>(6 * k + 3)));
+  }
+  for (int k = 0; k < n; ++k) psi[k] = k == r ? V3<T>::Zero().eval() : LogOf<T>(M3<T>(Rs[r].transpose() * Rs[k]));
+  std::vector<double> points, weights;
+  if (order == 1) points = {0.0}, weights = {2.0};
+  if (order == 2) points = {-1 / std::sqrt(3.0), 1 / std::sqrt(3.0)}, weights = {1.0, 1.0};
+  if (order == 3) points = {-std::sqrt(0.6), 0.0, std::sqrt(0.6)}, weights = {5 / 9.0, 8 / 9.0, 5 / 9.0};
+  T energy = T(0.0);
+  for (size_t g = 0; g < points.size(); ++g) {
+    // Lagrange polynomials and their s-derivatives at the point, written out from the definition.
+    std::vector<double> N(n, 1.0), dN(n, 0.0);
+    for (int k = 0; k < n; ++k) {
+      const double xk = -1.0 + 2.0 * k / order;
+      for (int j = 0; j < n; ++j) {
+        if (j == k) continue;
+        const double xj = -1.0 + 2.0 * j / order;
+        N[k] *= (points[g] - xj) / (xk - xj);
+        double term = 2.0 / length / (xk - xj);
+        for (int m = 0; m < n; ++m) {
+          const double xm = -1.0 + 2.0 * m / order;
+          if (m != k && m != j) term *= (points[g] - xm) / (xk - xm);
+        }
+        dN[k] += term;
+      }
+    }
+    V3<T> psi_g = V3<T>::Zero(), dpsi = V3<T>::Zero(), dx = V3<T>::Zero();
+    for (int k = 0; k < n; ++k) {
+      psi_g += N[k] * psi[k];
+      dpsi += dN[k] * psi[k];
+      dx += dN[k] * xs[k];
+    }
+    const M3<T> Rg = Rs[r] * so3::ExpOf<T>(psi_g);
+    Eigen::Matrix<T, 6, 1> e;
+    e.template head<3>() = Rg.transpose() * dx - V3<T>::UnitX();
+    e.template tail<3>() = so3::RightJacobianOf<T>(psi_g) * dpsi;
+    energy += 0.5 * weights[g] * 0.5 * length * e.dot(C.cast<T>() * e);
+  }
+  return energy;
+}
+
+Eigen::VectorXd ReferenceGradient(const std::vector<Vec3>& x, const std::vector<Mat3>& R, double length,
+                                  const Mat6& C) {
+  const int dofs = 6 * static_cast<int>(x.size());
+  Eigen::Matrix<AutoDiff, Eigen::Dynamic, 1> p(dofs);
+  for (int j = 0; j < dofs; ++j) p[j] = AutoDiff(0.0, dofs, j);
+  return ReferenceEnergy<AutoDiff>(x, R, p, length, C).derivatives();
+}
+
+// ---- element states ------------------------------------------------------------------------------------
+
+// A symmetric positive definite section with every coupling, entries of order 1..100.
+Mat6 Section(test::Random* random) {
+  Mat6 A;
+  for (int i = 0; i < 36; ++i) A(i / 6, i % 6) = random->Uniform(-1.0, 1.0);
+  Mat6 C = A * A.transpose() + Mat6::Identity();
+  C.topLeftCorner<3, 3>() *= 30.0;
+  return C;
+}
+
+// Nodes of an element of the given order and length: a bent, twisted and stretched beam turned by a large
+// rotation, node frames a further random 0.4 rad off the beam axis.
+struct ElementState {
+  std::vector<NodeState> nodes;
+  double length;
+};
+
+ElementState BentElement(int order, test::Random* random) {
+  ElementState state;
+  state.length = 0.7;
+  const Mat3 R0 = random->Rotation();
+  const Vec3 x0 = random->Vector(2.0);
+  for (int k = 0; k <= order; ++k) {
+    const double s = state.length * k / order;
+    NodeState n;
+    n.x = x0 + R0 * Vec3(1.05 * s, 0.2 * s * s, -0.1 * s * s) + random->Vector(0.02);
+    n.R = R0 * Exp(Vec3(0.5 * s, -0.3 * s, 0.6 * s) + random->Vector(0.4));
+    n.v = random->Vector(1.0);
+    n.w = random->Vector(1.0);
+    state.nodes.push_back(n);
+  }
+  return state;
+}
+
+// Local residual of the element for node steps.
+Eigen::VectorXd Forces(const BeamElement& e, const StepContext& ctx) {
+  Eigen::VectorXd r = Eigen::VectorXd::Zero(e.num_local()), magnitude = Eigen::VectorXd::Zero(e.num_local());
+  e.AddResidual(ctx, r, magnitude);
+  return r;
+}
+
+Eigen::MatrixXd Tangent(const BeamElement& e, const StepContext& ctx) {
+  Eigen::MatrixXd J = Eigen::MatrixXd::Zero(e.num_local(), e.num_local());
+  e.AddTangent(ctx, J);
+  return J;
+}
+
+// The context of one analysis for the element's node steps.
+struct Case {
+  StepContext ctx;
+  std::vector<NodeStep> steps;
+  void Refresh() { ctx.nodes = &steps; }
+};
+
+// Central differences of the forces with respect to the element's unknowns: one unknown moved as the
+// solver moves it (PerturbNodeStep), with the end rates moving by dvf_ddx and dwf_dtheta.
+Eigen::MatrixXd DifferenceTangent(const BeamElement& e, Case c) {
+  const int dofs = e.num_local();
+  Eigen::MatrixXd J(dofs, dofs);
+  const std::vector<NodeStep> base = c.steps;
+  for (int j = 0; j < dofs; ++j) {
+    Eigen::VectorXd columns[2];
+    for (int side = 0; side < 2; ++side) {
+      const double step = side == 0 ? kStep : -kStep;
+      c.steps = base;
+      NodeStep& s = c.steps[j / 6];
+      s = PerturbNodeStep(base[j / 6], step * Vec6::Unit(j % 6), c.ctx.mode);
+      s.v_f = base[j / 6].v_f;
+      s.w_f = base[j / 6].w_f;
+      s.dvf_ddx = base[j / 6].dvf_ddx;
+      s.dwf_dtheta = base[j / 6].dwf_dtheta;
+      if (j % 6 < 3) s.v_f[j % 3] += base[j / 6].dvf_ddx * step;
+      if (j % 6 >= 3) s.w_f[j % 3] += base[j / 6].dwf_dtheta * step;
+      c.Refresh();
+      columns[side] = Forces(e, c.ctx);
+    }
+    J.col(j) = (columns[0] - columns[1]) / (2.0 * kStep);
+  }
+  return J;
+}
+
+void ExpectTangentMatches(const BeamElement& e, Case c, const std::string& what) {
+  c.Refresh();
+  const Eigen::MatrixXd analytic = Tangent(e, c.ctx);
+  const Eigen::MatrixXd fd = DifferenceTangent(e, c);
+  Eigen::Index row = 0, col = 0;
+  const double worst = (analytic - fd).cwiseAbs().maxCoeff(&row, &col);
+  EXPECT_LT(worst, kTangentTolerance * test::MaxAbs(fd))
+      << what << ": entry (" << row << ", " << col << ") analytic " << analytic(row, col) << " difference "
+      << fd(row, col) << " scale " << test::MaxAbs(fd);
+}
+
+std::vector<int> NodeIndices(int order) {
+  std::vector<int> nodes;
+  for (int k = 0; k <= order; ++k) nodes.push_back(k);
+  return nodes;
+}
+
+Case StaticCase(const ElementState& state, AnalysisMode mode) {
+  Case c;
+  c.ctx.mode = mode;
+  for (const NodeState& n : state.nodes) c.steps.push_back(MakeNodeStep(n, Vec6::Zero(), mode));
+  return c;
+}
+
+TEST(BeamStrainField, ForcesAreTheGradientOfTheStrainEnergy) {
+  test::Random random(21);
+  for (int order = 1; order <= 3; ++order) {
+    for (int trial = 0; trial < 3; ++trial) {
+      const ElementState state = BentElement(order, &random);
+      const Mat6 C = Section(&random);
+      const BeamElement element("e", NodeIndices(order), state.length, C, 0.0);
+      std::vector<Vec3> x;
+      std::vector<Mat3> R;
+      for (const NodeState& n : state.nodes) x.push_back(n.x), R.push_back(n.R);
+      const Eigen::VectorXd reference = ReferenceGradient(x, R, state.length, C);
+      Case c = StaticCase(state, AnalysisMode::kStatic);
+      c.Refresh();
+      const Eigen::VectorXd forces = Forces(element, c.ctx);
+      EXPECT_LT((forces - reference).cwiseAbs().maxCoeff(), kForceTolerance * test::MaxAbs(reference))
+          << "order " << order << "\nanalytic " << forces.transpose() << "\nreference " << reference.transpose();
+    }
+  }
+}
+
+TEST(BeamElement, StaticTangentIsExact) {
+  test::Random random(22);
+  for (int order = 1; order <= 3; ++order) {
+    for (int trial = 0; trial < 3; ++trial) {
+      const ElementState state = BentElement(order, &random);
+      const BeamElement element("e", NodeIndices(order), state.length, Section(&random), 0.0);
+      ExpectTangentMatches(element, StaticCase(state, AnalysisMode::kStatic), "static order " + std::to_string(order));
+    }
+  }
+}
+
+TEST(BeamElement, EndPointTangentWithDampingIsExact) {
+  test::Random random(23);
+  for (int order = 1; order <= 3; ++order) {
+    const ElementState state = BentElement(order, &random);
+    const BeamElement element("e", NodeIndices(order), state.length, Section(&random), 0.05);
+    Case c = StaticCase(state, AnalysisMode::kEndPoint);
+    for (size_t k = 0; k < c.steps.size(); ++k) {
+      c.steps[k].v_f = state.nodes[k].v;
+      c.steps[k].w_f = state.nodes[k].w;
+      c.steps[k].dvf_ddx = 30.0;
+      c.steps[k].dwf_dtheta = 20.0;
+    }
+    ExpectTangentMatches(element, c, "end point order " + std::to_string(order));
+  }
+}
+
+Case DynamicCase(const ElementState& state, test::Random* random) {
+  Case c;
+  c.ctx.mode = AnalysisMode::kDynamic;
+  c.ctx.h = 0.01;
+  for (const NodeState& n : state.nodes) {
+    Vec6 increment;
+    increment << random->Vector(0.05), random->Vector(0.3);
+    c.steps.push_back(MakeNodeStep(n, increment, AnalysisMode::kDynamic));
+  }
+  return c;
+}
+
+TEST(BeamElement, DynamicTangentIsExact) {
+  test::Random random(24);
+  for (int order = 1; order <= 3; ++order) {
+    for (double damping : {0.0, 0.02}) {
+      const ElementState state = BentElement(order, &random);
+      const BeamElement element("e", NodeIndices(order), state.length, Section(&random), damping);
+      ExpectTangentMatches(element, DynamicCase(state, &random),
+                           "dynamic order " + std::to_string(order) + " damping " + std::to_string(damping));
+    }
+  }
+}
+
+// The step's forces are an exact discrete gradient (B5): G . d = V_f - V_i, and the damping forces do the
+// work -mu sum_g w_g de^T C de / h (B7).
+TEST(BeamElement, StepForcesCloseTheEnergyBooks) {
+  test::Random random(25);
+  for (int order = 1; order <= 3; ++order) {
+    const ElementState state = BentElement(order, &random);
+    const Mat6 C = Section(&random);
+    const double mu = 0.02;
+    const BeamElement elastic("e", NodeIndices(order), state.length, C, 0.0);
+    const BeamElement damped("e", NodeIndices(order), state.length, C, mu);
+    Case c = DynamicCase(state, &random);
+    c.Refresh();
+    Eigen::VectorXd d(6 * (order + 1));
+    State start, end;
+    for (size_t k = 0; k < c.steps.size(); ++k) {
+      d << Eigen::VectorXd(d).head(6 * k), c.steps[k].dx, c.steps[k].theta, Eigen::VectorXd::Zero(6 * (order - k));
+      NodeState i = state.nodes[k], f = state.nodes[k];
+      f.x = c.steps[k].x_f;
+      f.R = c.steps[k].R_f;
+      start.nodes.push_back(i);
+      end.nodes.push_back(f);
+    }
+    EnergyTally V_i, V_f;
+    elastic.AddEnergy(start, Vec3::Zero(), &V_i);
+    elastic.AddEnergy(end, Vec3::Zero(), &V_f);
+    const double work = Forces(elastic, c.ctx).dot(d);
+    // Round-off of energies of order 1 J summed over a few points.
+    EXPECT_NEAR(work, V_f.potential - V_i.potential, 1e-12 * std::max(1.0, std::abs(V_f.potential)));
+    StepWork dissipation;
+    damped.AddStepWork(c.ctx, &dissipation);
+    EXPECT_GT(dissipation.dissipated, 0.0);
+    EXPECT_NEAR(Forces(damped, c.ctx).dot(d) - work, dissipation.dissipated,
+                1e-12 * std::max(1.0, dissipation.dissipated));
+  }
+}
+
+}  // namespace
+}  // namespace flexmbd
