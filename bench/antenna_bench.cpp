@@ -9,6 +9,7 @@
 
 #include "flexmbd/io/config_loader.hpp"
 #include "flexmbd/solver/simulation.hpp"
+#include "step_bench.hpp"
 
 namespace flexmbd {
 namespace {
@@ -30,6 +31,15 @@ void AntennaRun(benchmark::State& state, const std::string& variant) {
 
 BENCHMARK_CAPTURE(AntennaRun, dampers, std::string("dampers"))->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(AntennaRun, friction, std::string("friction"))->Unit(benchmark::kMillisecond);
+
+// The flexible antenna (bench/antenna_flexible/, panels of cubic beams): the cost of one Newton iteration beside
+// one KLU refactorisation and solve of the same matrix (target: at most 0.1 ms and 3x).
+void FlexibleAntennaIteration(benchmark::State& state) {
+  const std::string source = std::string(FLEXMBD_BENCH_SOURCE_DIR);
+  bench::TimeIteration(state, LoadModelSpec(source + "/config/antenna/antenna.urdf",
+                                            source + "/bench/antenna_flexible/antenna_flexible.yaml"));
+}
+BENCHMARK(FlexibleAntennaIteration)->Unit(benchmark::kMicrosecond);
 
 }  // namespace
 }  // namespace flexmbd

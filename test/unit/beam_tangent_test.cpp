@@ -65,6 +65,15 @@ TEST(RotationVectorCalculus, DerivativesMatchFiniteDifferences) {
     EXPECT_LT((c.TangentDerivative(d1) - fd_T).cwiseAbs().maxCoeff(), kCalculusTolerance) << angle;
     EXPECT_LT((c.InverseTangentDerivative(d1) - fd_Tinv).cwiseAbs().maxCoeff(), kCalculusTolerance) << angle;
     EXPECT_LT((c.TangentSecondDerivative(d1, d2) - fd_DT).cwiseAbs().maxCoeff(), kCalculusTolerance) << angle;
+    // The contracted form against the contraction of the full second derivative: same terms, round-off only.
+    const Vec3 m = random.Vector(2.0), v = random.Vector(2.0);
+    const Mat3 form = c.TangentSecondDerivativeForm(m, v);
+    for (int i = 0; i < 3; ++i) {
+      for (int j = 0; j < 3; ++j) {
+        const double contracted = m.dot(c.TangentSecondDerivative(Vec3::Unit(i), Vec3::Unit(j)) * v);
+        EXPECT_NEAR(form(i, j), contracted, 1e-13) << angle;
+      }
+    }
   }
 }
 

@@ -13,6 +13,7 @@
 /// Structural damping adds the viscous section forces mu C eps_dot (B7); over a step they dissipate exactly
 /// mu sum_g w_g deps^T C deps / h.
 
+#include <array>
 #include <string>
 #include <vector>
 
@@ -66,9 +67,23 @@ class BeamElement : public Element {
   void EvaluateAtEnd(const StepContext& ctx, Field::Vector* forces, Field::Matrix* K) const;
   // The dynamic step: the discrete gradient (B5) and the step's damping forces (B7).
   void EvaluateStep(const StepContext& ctx, Field::Vector* forces, Field::Matrix* K) const;
-  // The step's damping forces (B7) and, when K is not null, their tangent.
   struct StepFields;
-  void AddStepDamping(const StepContext& ctx, const StepFields& step, Field::Vector* forces, Field::Matrix* K) const;
+  using RowVector = Eigen::Matrix<double, 1, Eigen::Dynamic, Eigen::RowMajor, 1, Field::kMaxDofs>;
+  // The step's damping forces (B7) and what their tangent reuses.
+  struct StepDamping {
+    Field::Vector forces;
+    Field::PointVectors viscous, gap;  // mu w C de / h and de - B_mid d per point
+    std::array<Mat6, BeamShape::kMaxPoints> rate;  // d viscous / d strain_f
+    std::array<Field::Jacobian, BeamShape::kMaxPoints> B_mid;
+    double gap_work = 0;  // sum_g gap . viscous
+  };
+  StepDamping StepDampingForces(const StepContext& ctx, const StepFields& step) const;
+  void AddStepDampingTangent(const StepFields& step, const StepDamping& damping,
+                             const std::array<Field::Jacobian, BeamShape::kMaxPoints>& d_derivatives,
+                             Field::Matrix* K) const;
+  // K += d/dd [value W d / (d^T W d)] given d value / dd: the corrections of (B5) and (B7).
+  void AddCorrectionDerivative(const StepFields& step, double value, const Field::Vector& derivative,
+                               Field::Matrix* K) const;
 
   Field::Nodes AtState(const State& state) const;
   double Energy(const Field& field) const;

@@ -64,8 +64,9 @@ class BeamStrainField {
   /// K += sum_g B_g^T material_g B_g (if material) + d/dp [sum_g B_g^T stress_g] at fixed stress_g, rotations
   /// moved as R_k Exp(d phi_k) (Order kSecond).
   void AddTangent(const PointVectors& stress, const std::array<Mat6, kMaxPoints>* material, Matrix* K) const;
-  /// d/dp [B_g v] at fixed v (Order kSecond).
-  Jacobian StrainJacobianDerivative(int g, const Vector& v) const;
+  /// d/dp [B_g v] at fixed v, for every point g (Order kSecond). Note sum_g D_g^T s_g = K^T v for the K that
+  /// AddTangent(s) adds without material: both are the second derivative of s . strain with the same turn.
+  std::array<Jacobian, kMaxPoints> StrainJacobianDerivatives(const Vector& v) const;
 
  private:
   using Mat9 = Eigen::Matrix<double, 9, 9>;
@@ -77,6 +78,7 @@ class BeamStrainField {
     Vec6 strain;
     std::optional<RotationVectorCalculus> calculus;
     Mat69 E;             // d strain / d q
+    std::array<Mat3, 3> DT;  // DT[e_j] at psi_g
   };
   struct Node {
     Vec3 y, psi;

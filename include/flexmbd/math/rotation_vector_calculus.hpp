@@ -29,6 +29,9 @@ class RotationVectorCalculus {
   Mat3 TangentDerivative(const Vec3& d) const;
   /// D2T[d1, d2]: the second derivative of T (symmetric in d1, d2; level kSecond).
   Mat3 TangentSecondDerivative(const Vec3& d1, const Vec3& d2) const;
+  /// The symmetric matrix B with d1^T B d2 = m . (D2T[d1, d2] v) (level kSecond): the second derivative
+  /// contracted on both sides, without forming D2T.
+  Mat3 TangentSecondDerivativeForm(const Vec3& m, const Vec3& v) const;
   /// The derivative of T^-1 along d (level kSecond).
   Mat3 InverseTangentDerivative(const Vec3& d) const;
 

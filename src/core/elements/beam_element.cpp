@@ -102,8 +102,9 @@ void BeamElement::EvaluateAtEnd(const StepContext& ctx, Field::Vector* forces, F
   field.AddTangent(stress, &weighted_stiffness_, K);
   if (!damped) return;
   // d/dp [B (v, w)]: the rates move with the unknowns by dvf_ddx and dwf_dtheta, and B with the configuration.
+  const std::array<Field::Jacobian, BeamShape::kMaxPoints> rate_derivatives = field.StrainJacobianDerivatives(rates);
   for (int g = 0; g < field.num_points(); ++g) {
-    Field::Jacobian rate_derivative = field.StrainJacobianDerivative(g, rates);
+    Field::Jacobian rate_derivative = rate_derivatives[g];
     for (int k = 0; k < n; ++k) {
       const NodeStep& s = (*ctx.nodes)[nodes_[k]];
       rate_derivative.middleCols<3>(6 * k) += s.dvf_ddx * B[g].middleCols<3>(6 * k);
@@ -174,73 +175,92 @@ void BeamElement::EvaluateStep(const StepContext& ctx, Field::Vector* forces, Fi
   const bool corrected = std::abs(mismatch) > round_off && step.norm > 0.0;
   *forces += G_mid;
   if (corrected) *forces += mismatch / step.norm * step.Wd;
-  if (tangent) {
-    // d G_mid / d increments, then the correction (B5) differentiated exactly.
-    Field::Matrix K_mid = Field::Matrix::Zero(dofs, dofs);
-    at_mid.AddTangent(elastic, &weighted_stiffness_, &K_mid);
-    step.to_mid.ApplyToColumns(n, &K_mid);
-    if (corrected) {
-      Field::PointVectors elastic_end;
-      for (int g = 0; g < at_mid.num_points(); ++g) elastic_end[g] = weighted_stiffness_[g] * step.end->strain(g);
-      Field::Vector end_gradient = step.end->Gradient(elastic_end);
-      Eigen::Matrix<double, 1, Eigen::Dynamic, Eigen::RowMajor, 1, Field::kMaxDofs> dV_f = end_gradient.transpose();
-      step.to_end.ApplyToColumns(n, &dV_f);
-      const Field::Vector dmismatch = dV_f.transpose() - G_mid - K_mid.transpose() * step.d;
-      K->noalias() += step.Wd * dmismatch.transpose() / step.norm;
-      K->noalias() -= (2.0 * mismatch / (step.norm * step.norm)) * step.Wd * step.Wd.transpose();
-      K->diagonal() += (mismatch / step.norm) * step.W;
-    }
-    *K += K_mid;
+  StepDamping damping;
+  if (damped) {
+    damping = StepDampingForces(ctx, step);
+    *forces += damping.forces;
   }
-  if (damped) AddStepDamping(ctx, step, forces, K);
+  if (!tangent) return;
+  // d G_mid / d increments with the damping forces' own geometric part in the same pass (B12).
+  Field::PointVectors stress = elastic;
+  if (damped) {
+    for (int g = 0; g < at_mid.num_points(); ++g) stress[g] += damping.viscous[g];
+  }
+  Field::Matrix K_mid = Field::Matrix::Zero(dofs, dofs);
+  at_mid.AddTangent(stress, &weighted_stiffness_, &K_mid);
+  const bool moved = step.norm > 0.0;
+  std::array<Field::Jacobian, BeamShape::kMaxPoints> d_derivatives;
+  if (damped && moved) d_derivatives = at_mid.StrainJacobianDerivatives(step.d);
+  if (corrected) {
+    // The correction (B5) differentiated exactly: d mismatch = dV_f - G_mid - (dG_mid)^T d, the last with the
+    // elastic part of K_mid only (K^T d of the damping part is sum_g D_g(d)^T viscous_g).
+    RowVector elastic_Kd = (K_mid.transpose() * step.d).transpose();
+    if (damped && moved) {
+      for (int g = 0; g < at_mid.num_points(); ++g) elastic_Kd -= damping.viscous[g].transpose() * d_derivatives[g];
+    }
+    step.to_mid.ApplyToColumns(n, &elastic_Kd);
+    Field::PointVectors elastic_end;
+    for (int g = 0; g < at_mid.num_points(); ++g) elastic_end[g] = weighted_stiffness_[g] * step.end->strain(g);
+    RowVector dV_f = step.end->Gradient(elastic_end).transpose();
+    step.to_end.ApplyToColumns(n, &dV_f);
+    const Field::Vector dmismatch = (dV_f - elastic_Kd).transpose() - G_mid;
+    AddCorrectionDerivative(step, mismatch, dmismatch, K);
+  }
+  step.to_mid.ApplyToColumns(n, &K_mid);
+  *K += K_mid;
+  if (damped) AddStepDampingTangent(step, damping, d_derivatives, K);
 }
 
-void BeamElement::AddStepDamping(const StepContext& ctx, const StepFields& step, Field::Vector* forces,
-                                 Field::Matrix* K) const {
+void BeamElement::AddCorrectionDerivative(const StepFields& step, double value, const Field::Vector& derivative,
+                                          Field::Matrix* K) const {
+  // d/dd [value W d / (d^T W d)].
+  K->noalias() += step.Wd * derivative.transpose() / step.norm;
+  K->noalias() -= (2.0 * value / (step.norm * step.norm)) * step.Wd * step.Wd.transpose();
+  K->diagonal() += (value / step.norm) * step.W;
+}
+
+BeamElement::StepDamping BeamElement::StepDampingForces(const StepContext& ctx, const StepFields& step) const {
   // Section forces mu C (e_f - e_i) / h paired with a strain-increment operator B_m = B_mid + (de - B_mid d)
   // (W d)^T / (d^T W d), for which B_m d = de exactly (B7): the forces then do the work
   // -mu sum_g w_g de^T C de / h over the increments d.
-  const int n = shape_.num_nodes(), dofs = 6 * n;
-  const Field &mid = *step.mid, &end = *step.end;
+  const Field& mid = *step.mid;
   const double strain_round_off = StrainRoundOff(ctx);
-  Field::PointVectors viscous, gap;
-  std::array<Mat6, BeamShape::kMaxPoints> viscous_rate;  // d viscous / d strain_f
-  double gap_work = 0;
+  StepDamping damping;
   for (int g = 0; g < mid.num_points(); ++g) {
-    const Vec6 de = end.strain(g) - step.start->strain(g);
-    viscous_rate[g] = damping_ * weighted_stiffness_[g] / ctx.h;
-    viscous[g] = viscous_rate[g] * de;
-    gap[g] = de - mid.StrainJacobian(g) * step.d;
-    if (gap[g].cwiseAbs().maxCoeff() <= 100.0 * strain_round_off) gap[g].setZero();  // round-off, as in (B5)
-    gap_work += gap[g].dot(viscous[g]);
+    const Vec6 de = step.end->strain(g) - step.start->strain(g);
+    damping.rate[g] = damping_ * weighted_stiffness_[g] / ctx.h;
+    damping.viscous[g] = damping.rate[g] * de;
+    damping.B_mid[g] = mid.StrainJacobian(g);
+    damping.gap[g] = de - damping.B_mid[g] * step.d;
+    if (damping.gap[g].cwiseAbs().maxCoeff() <= 100.0 * strain_round_off) damping.gap[g].setZero();  // as in (B5)
+    damping.gap_work += damping.gap[g].dot(damping.viscous[g]);
   }
+  damping.forces = mid.Gradient(damping.viscous);
+  if (step.norm > 0.0) damping.forces += damping.gap_work / step.norm * step.Wd;
+  return damping;
+}
+
+void BeamElement::AddStepDampingTangent(const StepFields& step, const StepDamping& damping,
+                                        const std::array<Field::Jacobian, BeamShape::kMaxPoints>& d_derivatives,
+                                        Field::Matrix* K) const {
+  // The viscous forces' geometric part came with the elastic pass; here their material part B_mid^T rate B_end
+  // and the derivative of the gap term.
+  const int n = shape_.num_nodes(), dofs = 6 * n;
   const bool moved = step.norm > 0.0;
-  *forces += mid.Gradient(viscous);
-  if (moved) *forces += gap_work / step.norm * step.Wd;
-  if (K == nullptr) return;
-  Field::Matrix K_damp = Field::Matrix::Zero(dofs, dofs);
-  mid.AddTangent(viscous, nullptr, &K_damp);
-  step.to_mid.ApplyToColumns(n, &K_damp);
   Field::Vector dgap_work = Field::Vector::Zero(dofs);
-  for (int g = 0; g < mid.num_points(); ++g) {
-    const Field::Jacobian B_mid = mid.StrainJacobian(g);
-    Field::Jacobian B_end = end.StrainJacobian(g);
+  for (int g = 0; g < step.mid->num_points(); ++g) {
+    Field::Jacobian B_end = step.end->StrainJacobian(g);
     step.to_end.ApplyToColumns(n, &B_end);
-    K_damp.noalias() += B_mid.transpose() * viscous_rate[g] * B_end;
+    K->noalias() += damping.B_mid[g].transpose() * damping.rate[g] * B_end;
     if (!moved) continue;
-    dgap_work.noalias() += B_end.transpose() * (viscous_rate[g].transpose() * gap[g]);
-    if (gap[g].isZero(0.0)) continue;
-    Field::Jacobian dgap = mid.StrainJacobianDerivative(g, step.d);
+    dgap_work.noalias() += B_end.transpose() * (damping.rate[g].transpose() * damping.gap[g]);
+    if (damping.gap[g].isZero(0.0)) continue;
+    Field::Jacobian dgap = d_derivatives[g];
     step.to_mid.ApplyToColumns(n, &dgap);
-    dgap = B_end - B_mid - dgap;
-    dgap_work.noalias() += dgap.transpose() * viscous[g];
+    dgap = B_end - damping.B_mid[g] - dgap;
+    dgap_work.noalias() += dgap.transpose() * damping.viscous[g];
   }
-  if (moved) {
-    K_damp.noalias() += step.Wd * dgap_work.transpose() / step.norm;
-    K_damp.noalias() -= (2.0 * gap_work / (step.norm * step.norm)) * step.Wd * step.Wd.transpose();
-    K_damp.diagonal() += (gap_work / step.norm) * step.W;
-  }
-  *K += K_damp;
+  if (moved) AddCorrectionDerivative(step, damping.gap_work, dgap_work, K);
 }
 
 void BeamElement::AddResidual(const StepContext& ctx, Eigen::Ref<Eigen::VectorXd> r,

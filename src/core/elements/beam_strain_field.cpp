@@ -49,7 +49,10 @@ BeamStrainField::BeamStrainField(const BeamShape& shape, const Nodes& nodes, Ord
     p.E.setZero();
     p.E.block<3, 3>(0, kDy) = c.exp().transpose();
     p.E.block<3, 3>(0, kPsi) = Skew(p.a) * c.tangent();
-    for (int j = 0; j < 3; ++j) p.E.block<3, 1>(3, kPsi + j) = c.TangentDerivative(Vec3::Unit(j)) * p.dpsi;
+    for (int j = 0; j < 3; ++j) {
+      p.DT[j] = c.TangentDerivative(Vec3::Unit(j));
+      p.E.block<3, 1>(3, kPsi + j) = p.DT[j] * p.dpsi;
+    }
     p.E.block<3, 3>(3, kDpsi) = c.tangent();
   }
 }
@@ -160,8 +163,7 @@ BeamStrainField::Mat9 BeamStrainField::PointHessian(const Point& p, const Vec6& 
   const RotationVectorCalculus& c = *p.calculus;
   const Mat3& T = c.tangent();
   const Vec3 force = stress.head<3>(), moment = stress.tail<3>();
-  std::array<Mat3, 3> DT;
-  for (int j = 0; j < 3; ++j) DT[j] = c.TangentDerivative(Vec3::Unit(j));
+  const std::array<Mat3, 3>& DT = p.DT;
   Mat9 H = Mat9::Zero();
   // eps = Exp(psi)^T y' - e1: d eps = Exp(psi)^T dy' + Skew(a) T dpsi.
   const Mat3 cross = -c.exp() * Skew(force) * T;
@@ -171,13 +173,7 @@ BeamStrainField::Mat9 BeamStrainField::PointHessian(const Point& p, const Vec6& 
   const Vec3 force_cross_a = force.cross(p.a);
   for (int j = 0; j < 3; ++j) psi_psi.col(j) += DT[j].transpose() * force_cross_a;
   // kappa = T(psi) psi'.
-  for (int i = 0; i < 3; ++i) {
-    for (int j = i; j < 3; ++j) {
-      const double v = moment.dot(c.TangentSecondDerivative(Vec3::Unit(i), Vec3::Unit(j)) * p.dpsi);
-      psi_psi(i, j) += v;
-      if (j != i) psi_psi(j, i) += v;
-    }
-  }
+  psi_psi += c.TangentSecondDerivativeForm(moment, p.dpsi);
   H.block<3, 3>(kPsi, kPsi) = psi_psi;
   for (int i = 0; i < 3; ++i) H.block<1, 3>(kPsi + i, kDpsi) = (DT[i].transpose() * moment).transpose();
   H.block<3, 3>(kDpsi, kPsi) = H.block<3, 3>(kPsi, kDpsi).transpose();
@@ -195,8 +191,7 @@ BeamStrainField::Mat69 BeamStrainField::PointSecondDerivative(const Point& p,
   D.block<3, 3>(0, kDy) = -Skew(T * psi_dot) * c.exp().transpose();
   D.block<3, 3>(0, kPsi) = Skew(a_dot) * T + Skew(p.a) * DT_dot;
   for (int j = 0; j < 3; ++j) {
-    D.block<3, 1>(3, kPsi + j) = c.TangentSecondDerivative(Vec3::Unit(j), psi_dot) * p.dpsi +
-                                 c.TangentDerivative(Vec3::Unit(j)) * dpsi_dot;
+    D.block<3, 1>(3, kPsi + j) = c.TangentSecondDerivative(Vec3::Unit(j), psi_dot) * p.dpsi + p.DT[j] * dpsi_dot;
   }
   D.block<3, 3>(3, kDpsi) = DT_dot;
   return D;
@@ -261,23 +256,29 @@ BeamStrainField::Matrix BeamStrainField::LocalCoordinateSecondDerivative(const V
   return D;
 }
 
-BeamStrainField::Jacobian BeamStrainField::StrainJacobianDerivative(int g, const Vector& v) const {
-  const Point& p = points_[g];
+std::array<BeamStrainField::Jacobian, BeamStrainField::kMaxPoints> BeamStrainField::StrainJacobianDerivatives(
+    const Vector& v) const {
   const int n = shape_->num_nodes();
   const Vector z_dot = LocalRate(v);
-  Eigen::Matrix<double, 9, 1> q_dot = Eigen::Matrix<double, 9, 1>::Zero();
-  for (int k = 0; k < n; ++k) {
-    q_dot.segment<3>(kDy) += shape_->dNds[g][k] * z_dot.segment<3>(6 * k);
-    q_dot.segment<3>(kPsi) += shape_->N[g][k] * z_dot.segment<3>(6 * k + kRotation);
-    q_dot.segment<3>(kDpsi) += shape_->dNds[g][k] * z_dot.segment<3>(6 * k + kRotation);
-  }
-  Jacobian D = LocalToPerturbation(PointToLocal<6>(g, PointSecondDerivative(p, q_dot)));
-  D.noalias() += PointToLocal<6>(g, p.E) * LocalCoordinateSecondDerivative(v);
-  // B_g at R Exp(d) applied to v is B_g T(d)^-1 v = B_g (v - v x d / 2 + ...) per node: -B_phi Skew(v_phi) / 2.
-  const Jacobian B = StrainJacobian(g);
-  for (int k = 0; k < n; ++k) {
-    D.middleCols<3>(6 * k + kRotation).noalias() -=
-        0.5 * B.middleCols<3>(6 * k + kRotation) * Skew(v.segment<3>(6 * k + kRotation));
+  const Matrix z_second = LocalCoordinateSecondDerivative(v);
+  std::array<Jacobian, kMaxPoints> D;
+  for (int g = 0; g < num_points(); ++g) {
+    const Point& p = points_[g];
+    Eigen::Matrix<double, 9, 1> q_dot = Eigen::Matrix<double, 9, 1>::Zero();
+    for (int k = 0; k < n; ++k) {
+      q_dot.segment<3>(kDy) += shape_->dNds[g][k] * z_dot.segment<3>(6 * k);
+      q_dot.segment<3>(kPsi) += shape_->N[g][k] * z_dot.segment<3>(6 * k + kRotation);
+      q_dot.segment<3>(kDpsi) += shape_->dNds[g][k] * z_dot.segment<3>(6 * k + kRotation);
+    }
+    const Wide<6, 6> EA = PointToLocal<6>(g, p.E);
+    D[g] = LocalToPerturbation(PointToLocal<6>(g, PointSecondDerivative(p, q_dot)));
+    D[g].noalias() += EA * z_second;
+    // B_g at R Exp(d) applied to v is B_g T(d)^-1 v = B_g (v - v x d / 2 + ...) per node: -B_phi Skew(v_phi) / 2.
+    const Jacobian B = LocalToPerturbation(EA);
+    for (int k = 0; k < n; ++k) {
+      D[g].middleCols<3>(6 * k + kRotation).noalias() -=
+          0.5 * B.middleCols<3>(6 * k + kRotation) * Skew(v.segment<3>(6 * k + kRotation));
+    }
   }
   return D;
 }

@@ -121,7 +121,9 @@ void Joint::AddResidualAndTangent(const StepContext& ctx, Eigen::Ref<Eigen::Vect
   const int n = num_increments_;
   const IncrementVector force = e.G.transpose() * lambda;
   r.head(n) += force;
-  magnitude.head(n) += e.G.cwiseAbs().transpose() * lambda.cwiseAbs();
+  // Evaluated into fixed-capacity storage first: Eigen would copy the expression |lambda| to the heap.
+  const ConstraintVector lambda_abs = lambda.cwiseAbs();
+  magnitude.head(n) += e.G.cwiseAbs().transpose() * lambda_abs;
   r.tail(num_constraints_) += e.phi;
   if (J == nullptr) return;
   J->block(0, n, n, num_constraints_) += e.G.transpose();

@@ -97,6 +97,18 @@ Mat3 RotationVectorCalculus::TangentSecondDerivative(const Vec3& d1, const Vec3&
          4.0 * p1 * p2 * (-a_ss_ * K_ + b_ss_ * K2_);
 }
 
+Mat3 RotationVectorCalculus::TangentSecondDerivativeForm(const Vec3& m, const Vec3& v) const {
+  // Term by term of TangentSecondDerivative: m.(D1 D2 v) = d1^T Skew(m) Skew(v) d2, m.(D1 v) = d1.(v x m),
+  // m.((D1 K + K D1) v) = d1.((K v) x m + v x (K^T m)).
+  const Mat3 X = Skew(m) * Skew(v);
+  const Vec3 Kv = K_ * v;
+  const Vec3 gamma = -a_s_ * v.cross(m) + b_s_ * (Kv.cross(m) + v.cross(K_.transpose() * m));
+  const double mKv = m.dot(Kv), mK2v = m.dot(K_ * Kv);
+  const double c0 = -a_s_ * mKv + b_s_ * mK2v, c1 = -a_ss_ * mKv + b_ss_ * mK2v;
+  return b_ * (X + X.transpose()) + 2.0 * (gamma * psi_.transpose() + psi_ * gamma.transpose()) +
+         2.0 * c0 * Mat3::Identity() + 4.0 * c1 * psi_ * psi_.transpose();
+}
+
 Mat3 RotationVectorCalculus::InverseTangentDerivative(const Vec3& d) const {
   const Mat3 D = Skew(d);
   return 0.5 * D + c_ * (D * K_ + K_ * D) + 2.0 * c_s_ * psi_.dot(d) * K2_;
