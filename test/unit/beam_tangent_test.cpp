@@ -186,19 +186,6 @@ ElementState BentElement(int order, test::Random* random) {
   return state;
 }
 
-// Local residual of the element for node steps.
-Eigen::VectorXd Forces(const BeamElement& e, const StepContext& ctx) {
-  Eigen::VectorXd r = Eigen::VectorXd::Zero(e.num_local()), magnitude = Eigen::VectorXd::Zero(e.num_local());
-  e.AddResidual(ctx, r, magnitude);
-  return r;
-}
-
-Eigen::MatrixXd Tangent(const BeamElement& e, const StepContext& ctx) {
-  Eigen::MatrixXd J = Eigen::MatrixXd::Zero(e.num_local(), e.num_local());
-  e.AddTangent(ctx, J);
-  return J;
-}
-
 // The context of one analysis for the element's node steps.
 struct Case {
   StepContext ctx;
@@ -226,7 +213,7 @@ Eigen::MatrixXd DifferenceTangent(const BeamElement& e, Case c) {
       if (j % 6 < 3) s.v_f[j % 3] += base[j / 6].dvf_ddx * step;
       if (j % 6 >= 3) s.w_f[j % 3] += base[j / 6].dwf_dtheta * step;
       c.Refresh();
-      columns[side] = Forces(e, c.ctx);
+      columns[side] = test::LocalResidual(e, c.ctx);
     }
     J.col(j) = (columns[0] - columns[1]) / (2.0 * kStep);
   }
@@ -235,7 +222,7 @@ Eigen::MatrixXd DifferenceTangent(const BeamElement& e, Case c) {
 
 void ExpectTangentMatches(const BeamElement& e, Case c, const std::string& what) {
   c.Refresh();
-  const Eigen::MatrixXd analytic = Tangent(e, c.ctx);
+  const Eigen::MatrixXd analytic = test::LocalTangent(e, c.ctx);
   const Eigen::MatrixXd fd = DifferenceTangent(e, c);
   Eigen::Index row = 0, col = 0;
   const double worst = (analytic - fd).cwiseAbs().maxCoeff(&row, &col);
@@ -270,7 +257,7 @@ TEST(BeamStrainField, ForcesAreTheGradientOfTheStrainEnergy) {
       const Eigen::VectorXd reference = ReferenceGradient(x, R, state.length, C);
       Case c = StaticCase(state, AnalysisMode::kStatic);
       c.Refresh();
-      const Eigen::VectorXd forces = Forces(element, c.ctx);
+      const Eigen::VectorXd forces = test::LocalResidual(element, c.ctx);
       EXPECT_LT((forces - reference).cwiseAbs().maxCoeff(), kForceTolerance * test::MaxAbs(reference))
           << "order " << order << "\nanalytic " << forces.transpose() << "\nreference " << reference.transpose();
     }
@@ -353,13 +340,13 @@ TEST(BeamElement, StepForcesCloseTheEnergyBooks) {
     EnergyTally V_i, V_f;
     elastic.AddEnergy(start, Vec3::Zero(), &V_i);
     elastic.AddEnergy(end, Vec3::Zero(), &V_f);
-    const double work = Forces(elastic, c.ctx).dot(d);
+    const double work = test::LocalResidual(elastic, c.ctx).dot(d);
     // Round-off of energies of order 1 J summed over a few points.
     EXPECT_NEAR(work, V_f.potential - V_i.potential, 1e-12 * std::max(1.0, std::abs(V_f.potential)));
     StepWork dissipation;
     damped.AddStepWork(c.ctx, &dissipation);
     EXPECT_GT(dissipation.dissipated, 0.0);
-    EXPECT_NEAR(Forces(damped, c.ctx).dot(d) - work, dissipation.dissipated,
+    EXPECT_NEAR(test::LocalResidual(damped, c.ctx).dot(d) - work, dissipation.dissipated,
                 1e-12 * std::max(1.0, dissipation.dissipated));
   }
 }

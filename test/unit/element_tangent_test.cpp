@@ -33,17 +33,8 @@ constexpr double kTangentTolerance = 1.0e-5;
 
 using ContextAt = std::function<const StepContext&(const Eigen::VectorXd& unknowns)>;
 
-Eigen::VectorXd LocalResidual(const Element& e, const StepContext& ctx) {
-  Eigen::VectorXd r = Eigen::VectorXd::Zero(e.num_local()), magnitude = Eigen::VectorXd::Zero(e.num_local());
-  e.AddResidual(ctx, r, magnitude);
-  return r;
-}
-
-Eigen::MatrixXd LocalTangent(const Element& e, const StepContext& ctx) {
-  Eigen::MatrixXd J = Eigen::MatrixXd::Zero(e.num_local(), e.num_local());
-  e.AddTangent(ctx, J);
-  return J;
-}
+using test::LocalResidual;
+using test::LocalTangent;
 
 Eigen::MatrixXd FiniteDifferenceTangent(const Element& e, const ContextAt& context_at, const Eigen::VectorXd& u) {
   Eigen::MatrixXd J(e.num_local(), e.num_local());

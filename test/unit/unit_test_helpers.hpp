@@ -7,6 +7,7 @@
 
 #include <Eigen/Core>
 
+#include "flexmbd/elements/element.hpp"
 #include "flexmbd/math/so3.hpp"
 #include "flexmbd/model/state.hpp"
 
@@ -59,6 +60,19 @@ class Random {
 template <typename Derived>
 double MaxAbs(const Eigen::MatrixBase<Derived>& m) {
   return m.size() == 0 ? 0.0 : m.cwiseAbs().maxCoeff();
+}
+
+// An element's local residual (AddResidual) and tangent (AddTangent) for a context, from zero.
+inline Eigen::VectorXd LocalResidual(const Element& e, const StepContext& ctx) {
+  Eigen::VectorXd r = Eigen::VectorXd::Zero(e.num_local()), magnitude = Eigen::VectorXd::Zero(e.num_local());
+  e.AddResidual(ctx, r, magnitude);
+  return r;
+}
+
+inline Eigen::MatrixXd LocalTangent(const Element& e, const StepContext& ctx) {
+  Eigen::MatrixXd J = Eigen::MatrixXd::Zero(e.num_local(), e.num_local());
+  e.AddTangent(ctx, J);
+  return J;
 }
 
 }  // namespace test

@@ -25,8 +25,6 @@ namespace flexmbd {
 
 class BeamElement : public Element {
  public:
-  static constexpr int kMaxNodes = BeamShape::kMaxNodes;
-
   /// @param nodes the element's node indices along the beam (order + 1 of them); node k's unknowns start at
   /// 6 * nodes[k]. @param length the element length [m]. @param stiffness the 6x6 section stiffness C about
   /// the beam axis (offsets already applied, BeamSectionStiffness). @param damping mu >= 0 [s] (B7).
@@ -86,6 +84,8 @@ class BeamElement : public Element {
                                Field::Matrix* K) const;
 
   Field::Nodes AtState(const State& state) const;
+  // The element's nodes at the start and the end of the step of ctx.
+  void StepEnds(const StepContext& ctx, Field::Nodes* start, Field::Nodes* end) const;
   double Energy(const Field& field) const;
   // Round-off of a strain computed from these node positions: eps times the largest coordinate over the
   // element length [-].

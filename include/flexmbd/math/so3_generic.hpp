@@ -1,7 +1,7 @@
 #pragma once
 /// @file
 /// The rotation formulas of so3.hpp written once for any scalar type: double, or Eigen's AutoDiffScalar where
-/// an element differentiates through rotations. so3.cpp instantiates them for double.
+/// a test differentiates through rotations to check an analytic derivative. so3.cpp instantiates them for double.
 
 #include <cmath>
 

@@ -47,6 +47,9 @@ class Simulation {
   const Model& model() const { return model_; }
   const StepStatistics& statistics() const { return controller_.statistics(); }
   const SparseSystem& system() const { return system_; }
+  /// The context of the last Newton iteration of the last step attempted (valid until the next step): what
+  /// benchmarks and tests evaluate a model at.
+  const StepContext& last_context() const { return integrator_->last_context(); }
   /// Every mode change of the effects with modes so far, in time order.
   const std::vector<EffectEvent>& effect_events() const { return effect_events_; }
 

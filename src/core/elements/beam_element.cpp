@@ -33,8 +33,9 @@ struct IncrementMap {
 // increments d, with the metric W of the discrete gradient (B5).
 struct BeamElement::StepFields {
   std::optional<Field> start, mid, end;
-  Field::Vector d, Wd, W;  // increments, W d, diag(W)
-  double norm = 0;         // d^T W d
+  Field::Vector d, Wd, W;      // increments, W d, diag(W)
+  double norm = 0;             // d^T W d
+  double strain_round_off = 0;  // StrainRoundOff of the step
   IncrementMap to_mid, to_end;
 };
 
@@ -54,6 +55,16 @@ double BeamElement::Energy(const Field& field) const {
   double energy = 0.0;
   for (int g = 0; g < field.num_points(); ++g) energy += 0.5 * field.strain(g).dot(weighted_stiffness_[g] * field.strain(g));
   return energy;
+}
+
+void BeamElement::StepEnds(const StepContext& ctx, Field::Nodes* start, Field::Nodes* end) const {
+  for (size_t k = 0; k < nodes_.size(); ++k) {
+    const NodeStep& s = (*ctx.nodes)[nodes_[k]];
+    start->x[k] = s.x_i;
+    start->R[k] = s.R_i;
+    end->x[k] = s.x_f;
+    end->R[k] = s.R_f;
+  }
 }
 
 Field::Nodes BeamElement::AtState(const State& state) const {
@@ -128,15 +139,12 @@ void BeamElement::EvaluateStep(const StepContext& ctx, Field::Vector* forces, Fi
   const bool tangent = K != nullptr;
   StepFields step;
   Field::Nodes start, mid, end;
+  StepEnds(ctx, &start, &end);
   step.d.resize(dofs);
   step.W.resize(dofs);
   step.to_mid.translation_rate = 0.5;
   for (int k = 0; k < n; ++k) {
     const NodeStep& s = (*ctx.nodes)[nodes_[k]];
-    start.x[k] = s.x_i;
-    start.R[k] = s.R_i;
-    end.x[k] = s.x_f;
-    end.R[k] = s.R_f;
     // Along R_i Exp(tau theta) the body-frame rate is theta itself, so the mid-step gradient pairs with the
     // increments directly; theta moving by t moves the middle by T(theta/2) t / 2 and the end by T(theta) t.
     const RotationVectorCalculus half(0.5 * s.theta, RotationVectorCalculus::Level::kMaps);
@@ -152,6 +160,7 @@ void BeamElement::EvaluateStep(const StepContext& ctx, Field::Vector* forces, Fi
   }
   step.Wd = step.W.cwiseProduct(step.d);
   step.norm = step.d.dot(step.Wd);
+  step.strain_round_off = StrainRoundOff(ctx);
   const bool damped = damping_ > 0.0;
   step.start.emplace(shape_, start, Field::Order::kStrains);
   step.mid.emplace(shape_, mid, tangent ? Field::Order::kSecond : Field::Order::kFirst);
@@ -171,7 +180,7 @@ void BeamElement::EvaluateStep(const StepContext& ctx, Field::Vector* forces, Fi
   // section at rest it dwarfs eps V, and the correction (divided by the squared increments) would turn it
   // into forces that Newton cannot remove.
   const double round_off = 100.0 * std::numeric_limits<double>::epsilon() * (std::abs(V_f) + std::abs(V_i)) +
-                           100.0 * StrainRoundOff(ctx) * stress_work;
+                           100.0 * step.strain_round_off * stress_work;
   const bool corrected = std::abs(mismatch) > round_off && step.norm > 0.0;
   *forces += G_mid;
   if (corrected) *forces += mismatch / step.norm * step.Wd;
@@ -224,7 +233,6 @@ BeamElement::StepDamping BeamElement::StepDampingForces(const StepContext& ctx, 
   // (W d)^T / (d^T W d), for which B_m d = de exactly (B7): the forces then do the work
   // -mu sum_g w_g de^T C de / h over the increments d.
   const Field& mid = *step.mid;
-  const double strain_round_off = StrainRoundOff(ctx);
   StepDamping damping;
   for (int g = 0; g < mid.num_points(); ++g) {
     const Vec6 de = step.end->strain(g) - step.start->strain(g);
@@ -232,7 +240,7 @@ BeamElement::StepDamping BeamElement::StepDampingForces(const StepContext& ctx, 
     damping.viscous[g] = damping.rate[g] * de;
     damping.B_mid[g] = mid.StrainJacobian(g);
     damping.gap[g] = de - damping.B_mid[g] * step.d;
-    if (damping.gap[g].cwiseAbs().maxCoeff() <= 100.0 * strain_round_off) damping.gap[g].setZero();  // as in (B5)
+    if (damping.gap[g].cwiseAbs().maxCoeff() <= 100.0 * step.strain_round_off) damping.gap[g].setZero();  // as in (B5)
     damping.gap_work += damping.gap[g].dot(damping.viscous[g]);
   }
   damping.forces = mid.Gradient(damping.viscous);
@@ -293,13 +301,7 @@ void BeamElement::AddEnergy(const State& state, const Vec3&, EnergyTally* tally)
 void BeamElement::AddStepWork(const StepContext& ctx, StepWork* work) const {
   if (ctx.mode != AnalysisMode::kDynamic || damping_ == 0.0) return;
   Field::Nodes start, end;
-  for (size_t k = 0; k < nodes_.size(); ++k) {
-    const NodeStep& s = (*ctx.nodes)[nodes_[k]];
-    start.x[k] = s.x_i;
-    start.R[k] = s.R_i;
-    end.x[k] = s.x_f;
-    end.R[k] = s.R_f;
-  }
+  StepEnds(ctx, &start, &end);
   const Field at_start(shape_, start, Field::Order::kStrains), at_end(shape_, end, Field::Order::kStrains);
   for (int g = 0; g < shape_.num_points; ++g) {
     const Vec6 de = at_end.strain(g) - at_start.strain(g);
