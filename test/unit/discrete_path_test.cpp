@@ -182,6 +182,23 @@ TEST(DiscretePath, PathWithoutDerivativeKeepsValuesAndGradientsToTheBit) {
   }
 }
 
+TEST(DiscretePath, TransposeTimesIsTheProductWithTheTranspose) {
+  // Reference: Transpose(a) * b formed explicitly. The same products of the same numbers: equal to the bit.
+  test::Random random(122);
+  for (int trial = 0; trial < 5; ++trial) {
+    const TwoNodeStep s = RandomStep(&random, 2.0);
+    const VectorPath b = RotationB(s) * ConstantPath<1>(Vec3(0.4, -1.2, 0.3));
+    const VectorPath expected = Transpose(RotationA(s)) * b, product = TransposeTimes(RotationA(s), b);
+    EXPECT_EQ(product.active, expected.active);
+    EXPECT_EQ(product.i, expected.i);
+    EXPECT_EQ(product.f, expected.f);
+    for (int k = 0; k < kNumIncrements; ++k) {
+      EXPECT_EQ(product.gradient(k), expected.gradient(k)) << "increment " << k;
+      EXPECT_EQ(product.derivative(k), expected.derivative(k)) << "increment " << k;
+    }
+  }
+}
+
 TEST(DiscretePath, ConstantPathHasZeroGradients) {
   // Reference: a constant has value_f = value_i and no dependence on any increment (exact zeros).
   const MatrixPath p = ConstantPath<3>(Exp(Vec3(0.1, 0.2, 0.3)));

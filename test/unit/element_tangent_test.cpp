@@ -26,10 +26,9 @@ constexpr double kStepSize = 0.01;
 // Central-difference step on unknowns of size 0.01..10.
 constexpr double kFiniteDifferenceStep = 1.0e-6;
 // Relative to the largest tangent entry. Central differences: truncation ~ step^2 |r'''| ~ 1e-12, round-off
-// ~ 1e-16 |r| / step ~ 1e-10. The joint's own geometric stiffness is a forward difference with step 1.5e-8,
-// whose truncation step/2 |d2(G^T lambda)| reaches ~2e-7 of the largest entry for |lambda| ~ 10 (observed):
-// 1e-5 leaves a margin of 50 over that, while a missing or wrong term fails by orders.
-constexpr double kTangentTolerance = 1.0e-5;
+// ~ 1e-16 |r| / step ~ 1e-10. Every tangent here is analytic (the joints' geometric stiffness included), so
+// 1e-7 leaves a margin of 1e3 over the difference error, while a missing or wrong term fails by orders.
+constexpr double kTangentTolerance = 1.0e-7;
 
 using ContextAt = std::function<const StepContext&(const Eigen::VectorXd& unknowns)>;
 

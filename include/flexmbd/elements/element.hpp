@@ -59,8 +59,8 @@ NodeStep MakeNodeStep(const NodeState& start, const Vec6& increment, AnalysisMod
 /// state's velocities and previous-step accelerations.
 void SetNodeStepVelocities(const NodeState& start, double h, const NodeSchemeCoefficients& c, NodeStep* node);
 
-/// The configuration of `node` moved by a further increment d (velocities are left unset): used for
-/// finite-difference tangents.
+/// The configuration of `node` moved by a further increment d as the solver moves it (velocities are left
+/// unset): what the tests difference to check analytic tangents.
 NodeStep PerturbNodeStep(const NodeStep& node, const Vec6& d, AnalysisMode mode);
 
 /// One joint variable's start and trial-end values.

@@ -70,11 +70,12 @@ class Joint : public Element {
   };
   // Constraint rows at f, their exact discrete gradient G and, if asked for, their derivative D w.r.t. the
   // local increments. Fixed capacity: evaluating allocates nothing.
+  // With a direction, also the variation of G along that increment (G_variation).
   struct Evaluation {
     ConstraintVector phi;
-    ConstraintMatrix G, D;
+    ConstraintMatrix G, D, G_variation;
   };
-  Evaluation Evaluate(const Sides& sides, bool with_derivative) const;
+  Evaluation Evaluate(const Sides& sides, bool with_derivative, const PathDirection& direction = {}) const;
   Sides GatherSides(const StepContext& ctx) const;
   Eigen::Ref<const Eigen::VectorXd> Multipliers(const StepContext& ctx) const;  ///< a view into ctx.lambda
 

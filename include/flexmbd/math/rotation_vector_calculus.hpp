@@ -25,6 +25,8 @@ class RotationVectorCalculus {
   /// T(psi)^-1 (level kFirst or kSecond).
   const Mat3& inverse_tangent() const { return inverse_tangent_; }
 
+  /// The derivative along d of the secant operator S(psi) = f_1 I + f_2 K of so3.hpp (level kFirst or kSecond).
+  Mat3 SecantDerivative(const Vec3& d) const;
   /// DT[d]: the derivative of T along d (level kFirst or kSecond).
   Mat3 TangentDerivative(const Vec3& d) const;
   /// D2T[d1, d2]: the second derivative of T (symmetric in d1, d2; level kSecond).

@@ -6,10 +6,6 @@
 
 namespace flexmbd {
 namespace {
-// Relative finite-difference step for the geometric stiffness; sqrt(machine epsilon) balances truncation
-// against round-off for a forward difference.
-constexpr double kFiniteDifferenceStep = 1.5e-8;
-
 bool OnNode(const Joint::Attachment& side) { return side.node >= 0; }
 }  // namespace
 
@@ -49,21 +45,22 @@ Joint::Sides Joint::GatherSides(const StepContext& ctx) const {
   return sides;
 }
 
-Joint::Evaluation Joint::Evaluate(const Sides& sides, bool with_derivative) const {
+Joint::Evaluation Joint::Evaluate(const Sides& sides, bool with_derivative, const PathDirection& direction) const {
   const int n = num_increments_;
   // Node and variable paths (node increments dx then theta, 6 per node side; then the variables); a world
   // side is a constant frame. Without derivatives no path built from these keeps df.
   auto rotation = [&](const Attachment& side, int slot) {
-    return OnNode(side) ? NodeRotationPath(sides.nodes[slot], 6 * slot + 3) : ConstantPath<3>(Mat3::Identity());
+    return OnNode(side) ? NodeRotationPath(sides.nodes[slot], 6 * slot + 3, direction)
+                        : ConstantPath<3>(Mat3::Identity());
   };
   auto position = [&](const Attachment& side, int slot) {
-    return OnNode(side) ? NodePositionPath(sides.nodes[slot], 6 * slot) : ConstantPath<1>(Vec3::Zero());
+    return OnNode(side) ? NodePositionPath(sides.nodes[slot], 6 * slot, direction) : ConstantPath<1>(Vec3::Zero());
   };
   const int parent_slot = 0, child_slot = OnNode(parent_) ? 1 : 0;
   const int offset = 6 * sides.num_nodes;  // first joint variable
   MatrixPath R_a = rotation(parent_, parent_slot), R_b = rotation(child_, child_slot);
   VectorPath x_a = position(parent_, parent_slot), x_b = position(child_, child_slot);
-  VectorPath t = LinearPath(kinematics_.translation_rates_Jp, sides.q_i, sides.q_f, offset);
+  VectorPath t = LinearPath(kinematics_.translation_rates_Jp, sides.q_i, sides.q_f, offset, direction);
   R_a.has_derivative = R_b.has_derivative = x_a.has_derivative = x_b.has_derivative = t.has_derivative =
       with_derivative;
 
@@ -75,26 +72,30 @@ Joint::Evaluation Joint::Evaluate(const Sides& sides, bool with_derivative) cons
   e.phi.resize(num_constraints_);
   e.G.resize(num_constraints_, n);
   if (with_derivative) e.D.resize(num_constraints_, n);
+  const bool varied = direction.index >= 0;
+  if (varied) e.G_variation.setZero(num_constraints_, n);
   e.phi.head<3>() = phi_p.f;
   for (int k = 0; k < n; ++k) {
     e.G.block<3, 1>(0, k) = phi_p.gradient(k);
     if (with_derivative) e.D.block<3, 1>(0, k) = phi_p.derivative(k);
+    if (varied && phi_p.has_variation && phi_p.depends_on(k)) e.G_variation.block<3, 1>(0, k) = phi_p.vdg[k];
   }
   if (!kinematics_.rotation_constrained) return e;
 
   MatrixPath rel = ConstantPath<3>(Mat3::Identity());
   for (const RotationFactor& factor : kinematics_.rotations) {
     const int v = factor.variable;
-    MatrixPath axis_rotation = AxisRotationPath(factor.axis_J, sides.q_i[v], sides.q_f[v], offset + v);
+    MatrixPath axis_rotation = AxisRotationPath(factor.axis_J, sides.q_i[v], sides.q_f[v], offset + v, direction);
     axis_rotation.has_derivative = with_derivative;
     rel = rel * axis_rotation;
   }
   const MatrixPath C =
-      Transpose(rel) * (Transpose(R_aJp) * (Transpose(R_a) * (R_b * ConstantPath<3>(child_.R_NJ))));
+      TransposeTimes(rel, TransposeTimes(R_aJp, TransposeTimes(R_a, R_b * ConstantPath<3>(child_.R_NJ))));
   e.phi.tail<3>() = Axial(C.f);
   for (int k = 0; k < n; ++k) {
     e.G.block<3, 1>(3, k) = Axial(C.gradient(k));
     if (with_derivative) e.D.block<3, 1>(3, k) = Axial(C.derivative(k));
+    if (varied && C.has_variation && C.depends_on(k)) e.G_variation.block<3, 1>(3, k) = Axial(C.vdg[k]);
   }
   return e;
 }
@@ -129,20 +130,11 @@ void Joint::AddResidualAndTangent(const StepContext& ctx, Eigen::Ref<Eigen::Vect
   J->block(0, n, n, num_constraints_) += e.G.transpose();
   J->block(n, 0, num_constraints_, n) += e.D;
   if (!ctx.geometric_stiffness) return;
-  // d(G^T lambda)/d(increments) by forward differences of the analytic G.
-  const int node_increments = 6 * sides.num_nodes;
+  // d(G^T lambda)/d(increment k): the exact variation of every discrete gradient along increment k
+  // (docs/theory.md, "Geometric stiffness of constraints").
   for (int k = 0; k < n; ++k) {
-    Sides moved = sides;
-    if (k < node_increments) {
-      Vec6 d = Vec6::Zero();
-      d[k % 6] = kFiniteDifferenceStep;
-      moved.nodes[k / 6] = PerturbNodeStep(sides.nodes[k / 6], d, ctx.mode);
-    } else {
-      moved.q_f[k - node_increments] += kFiniteDifferenceStep;
-      if (ctx.at_end()) moved.q_i[k - node_increments] += kFiniteDifferenceStep;
-    }
-    const Evaluation moved_e = Evaluate(moved, /*with_derivative=*/false);
-    J->block(0, k, n, 1) += (moved_e.G.transpose() * lambda - force) / kFiniteDifferenceStep;
+    const Evaluation varied = Evaluate(sides, /*with_derivative=*/false, PathDirection{k, ctx.at_end()});
+    J->block(0, k, n, 1) += varied.G_variation.transpose() * lambda;
   }
 }
 

@@ -84,6 +84,12 @@ RotationVectorCalculus::RotationVectorCalculus(const Vec3& psi, Level level) : p
   c_s_ = (u_s * f[2] - u * d1(2)) / (f[2] * f[2]);
 }
 
+Mat3 RotationVectorCalculus::SecantDerivative(const Vec3& d) const {
+  // f_1' = (f_3 - f_2) / 2 = (b - a) / 2 and f_2' = a_s, each times d(s) = 2 psi.d.
+  const double ds = 2.0 * psi_.dot(d);
+  return ds * (0.5 * (b_ - a_) * Mat3::Identity() + a_s_ * K_) + a_ * Skew(d);
+}
+
 Mat3 RotationVectorCalculus::TangentDerivative(const Vec3& d) const {
   const Mat3 D = Skew(d);
   return -a_ * D + b_ * (D * K_ + K_ * D) + 2.0 * psi_.dot(d) * (-a_s_ * K_ + b_s_ * K2_);

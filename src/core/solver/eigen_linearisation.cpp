@@ -17,10 +17,6 @@ using eigen_internal::ConstraintNullSpace;
 using eigen_internal::KluLu;
 using Triplets = std::vector<Eigen::Triplet<double>>;
 
-// Step [m or rad] of the central differences that give the stiffness of elements whose analytic tangent
-// leaves it to forward differences (joint constraint forces, follower loads): the cube root of machine
-// epsilon balances truncation (step^2) against round-off (eps / step), about 4e-11 relative in SI models.
-constexpr double kCentralStep = 6.0e-6;
 // Step along the motion, as a fraction of its time scale 1 / (largest rate), of the second differences that
 // give the constraints' velocity terms, extrapolated from steps e and e/2 (Richardson): truncation e^4 = 1e-12
 // against round-off eps / (e/2)^2 = 1e-9 relative.
@@ -80,50 +76,7 @@ class Probe {
     return r;
   }
 
-  // d(residual)/d(kinematic unknowns) at fixed velocities and accelerations by central differences.
-  Eigen::MatrixXd DifferenceStiffness(const Element& e) {
-    Eigen::MatrixXd K = Eigen::MatrixXd::Zero(e.num_local(), e.num_local());
-    for (int j = 0; j < e.num_local(); ++j) {
-      const int u = e.unknowns()[j];
-      if (!model_.is_force_row(u)) continue;
-      const Eigen::VectorXd plus = MovedResidual(e, u, kCentralStep);
-      const Eigen::VectorXd minus = MovedResidual(e, u, -kCentralStep);
-      K.col(j) = (plus - minus) / (2.0 * kCentralStep);
-    }
-    return K;
-  }
-
  private:
-  // The element's residual with the configuration moved along kinematic unknown u (velocities kept).
-  Eigen::VectorXd MovedResidual(const Element& e, int u, double step) {
-    if (u < num_node_unknowns_) {
-      NodeStep& s = builder_.nodes()[u / 6];
-      const NodeStep saved = s;
-      Vec6 d = Vec6::Zero();
-      d[u % 6] = step;
-      s = PerturbNodeStep(saved, d, AnalysisMode::kEndPoint);
-      s.v_i = saved.v_i;
-      s.v_f = saved.v_f;
-      s.w_i = saved.w_i;
-      s.w_f = saved.w_f;
-      s.vdot_f = saved.vdot_f;
-      s.wdot_f = saved.wdot_f;
-      s.dvf_ddx = saved.dvf_ddx;
-      s.dwf_dtheta = saved.dwf_dtheta;
-      s.dacc = saved.dacc;
-      const Eigen::VectorXd r = Residual(e);
-      s = saved;
-      return r;
-    }
-    VariableStep& v = builder_.variables()[u - num_node_unknowns_];
-    const VariableStep saved = v;
-    v.q_f += step;
-    v.q_i += step;
-    const Eigen::VectorXd r = Residual(e);
-    v = saved;
-    return r;
-  }
-
   const Model& model_;
   StepContextBuilder builder_;
   const int num_node_unknowns_;
@@ -161,34 +114,21 @@ Assembled Assemble(const Model& model, const State& state) {
     const int n = e.num_local();
     const Eigen::VectorXd r = probe.Residual(e);
     for (int i = 0; i < n; ++i) out.residual[u[i]] += r[i];
-    Eigen::MatrixXd K0 = probe.Tangent(e, 0, 0, false);
+    const Eigen::MatrixXd K0 = probe.Tangent(e, 0, 0, false);
     const Eigen::MatrixXd D = RateMatrix(&probe, e, K0, true), M = RateMatrix(&probe, e, K0, false);
-    // An element that adds stiffness only when asked for its geometric stiffness computes it by forward
-    // differences: its stiffness is taken from central differences of its residual instead.
-    const Eigen::MatrixXd K_geometric = probe.Tangent(e, 0, 0, true);
-    bool difference = false;
-    for (int i = 0; i < n; ++i) {
-      for (int j = 0; j < n; ++j) {
-        if (model.is_force_row(u[i]) && model.is_force_row(u[j]) && K_geometric(i, j) != K0(i, j)) difference = true;
-      }
-    }
-    if (difference) {
-      const Eigen::MatrixXd K_difference = probe.DifferenceStiffness(e);
-      for (int i = 0; i < n; ++i) {
-        if (model.is_force_row(u[i])) K0.row(i) = K_difference.row(i);
-      }
-    }
+    // The stiffness with the geometric stiffness of constraint forces and loads (analytic in every element).
+    const Eigen::MatrixXd K = probe.Tangent(e, 0, 0, true);
     for (int i = 0; i < n; ++i) {
       for (int j = 0; j < n; ++j) {
         const bool force_row = model.is_force_row(u[i]), kinematic_column = model.is_force_row(u[j]);
         if (force_row && kinematic_column) {
-          if (K0(i, j) != 0.0) k.emplace_back(u[i], u[j], K0(i, j));
+          if (K(i, j) != 0.0) k.emplace_back(u[i], u[j], K(i, j));
           if (D(i, j) != 0.0) d.emplace_back(u[i], u[j], D(i, j));
           if (M(i, j) != 0.0) mass.emplace_back(u[i], u[j], M(i, j));
         } else if (kinematic_column) {
-          if (K0(i, j) != 0.0) b.emplace_back(u[i] - nk, u[j], K0(i, j));
+          if (K(i, j) != 0.0) b.emplace_back(u[i] - nk, u[j], K(i, j));
         } else if (force_row) {
-          if (K0(i, j) != 0.0) gt.emplace_back(u[i], u[j] - nk, K0(i, j));
+          if (K(i, j) != 0.0) gt.emplace_back(u[i], u[j] - nk, K(i, j));
         }
       }
     }

@@ -61,8 +61,9 @@ NewtonReport SolveNewton(const Model& model, SparseSystem* system, double tol, i
   constexpr double kMaxSimplifiedIterations = 3.0;
   NewtonReport report;
   const int n_kinematic = model.num_unknowns() - model.num_multipliers();
-  Eigen::VectorXd increment;
+  Eigen::VectorXd increment, applied;
   bool refresh = !(reuse_tangent && system->has_factorisation());
+  bool tangent_from_earlier_step = !refresh;
   double previous_size = std::numeric_limits<double>::infinity();
   for (int iteration = 1; iteration <= max_iterations; ++iteration) {
     report.iterations = iteration;
@@ -78,10 +79,17 @@ NewtonReport SolveNewton(const Model& model, SparseSystem* system, double tol, i
     }
     const double size = increment.head(n_kinematic).cwiseAbs().maxCoeff();
     if (!refresh && size >= previous_size) {
-      // The old tangent no longer contracts: go back to the last iterate and refresh it there.
+      // The old tangent no longer contracts: refresh it. If it came from an earlier step, its first increment
+      // was taken untested and can be far off (a fast mode that changed phase): go back before it.
+      if (tangent_from_earlier_step) {
+        applied *= -1.0;
+        apply(applied);
+      }
       refresh = true;
       continue;
     }
+    tangent_from_earlier_step = tangent_from_earlier_step && !refresh;
+    applied = increment;
     const double reference = apply(increment);
     const bool residual_small = check.force <= tol && check.constraint <= kConstraintTolerance;
     if (residual_small && size <= tol * (reference + kIncrementFloor) + noise_floor) {
