@@ -116,10 +116,11 @@ StepResult EnergyDecayingIntegrator::Step(const State& start, double h, State* e
   builder_.set_effect_modes(&modes_);
   const int n_kinematic = model_.num_unknowns() - model_.num_multipliers();
   StepResult result;
-  Eigen::VectorXd unknowns;
+  // A step redone with revised dissipation or modes starts from the last converged solution, which differs from
+  // the new one only by what the revision changes.
+  Eigen::VectorXd unknowns = Predict(start, h);
   int mode_revisions = 0;
   while (true) {
-    unknowns = Predict(start, h);
     int tangents = 0;
     result.newton = SolveNewton(
         model_, system_, model_.solver().tol, model_.solver().max_iterations, NoiseFloor(model_, start),
