@@ -6,10 +6,11 @@ namespace io {
 namespace {
 const std::vector<std::string> kSolverKeys = {"analysis",       "integrator", "rho_inf",      "t_end",  "dt",
                                               "dt_min",         "dt_max",     "adaptive",     "tol",    "error_tol",
-                                              "max_iterations", "load_steps", "static_first", "gravity",
+                                              "error_floor",    "max_iterations", "load_steps", "static_first", "gravity",
                                               "eigen"};
 const std::vector<std::string> kEigenKeys = {"modes", "static_first", "method", "shift_hz", "sweep"};
 const std::vector<std::string> kSweepKeys = {"velocity_scale"};
+const std::vector<std::string> kErrorFloorKeys = {"position", "rotation", "joint"};
 const std::vector<std::string> kOutputKeys = {"rate_hz", "csv", "bag", "beam_stations"};
 
 // "0.01", or "0.01 (default)" if the key was not given.
@@ -85,6 +86,16 @@ void ReadSolver(const Field& solver, SolverSpec* spec) {
   OverlayNumber(solver, "tol", Quantity{"a relative Newton tolerance", Bound::kPositive, ""}, &spec->tol);
   OverlayNumber(solver, "error_tol", Quantity{"a relative local error tolerance", Bound::kPositive, ""},
                 &spec->error_tol);
+  if (solver.Child("error_floor").present()) {
+    const Field floor = solver.Child("error_floor");
+    CheckKeys(floor, kErrorFloorKeys);
+    OverlayNumber(floor, "position", Quantity{"a local position error floor", Bound::kPositive, "m"},
+                  &spec->error_floor.position);
+    OverlayNumber(floor, "rotation", Quantity{"a local rotation error floor", Bound::kPositive, "rad"},
+                  &spec->error_floor.rotation);
+    OverlayNumber(floor, "joint", Quantity{"a local joint-variable error floor", Bound::kPositive, "rad or m"},
+                  &spec->error_floor.joint);
+  }
   OverlayInteger(solver, "max_iterations", Quantity{"an iteration count", Bound::kAtLeastOne, ""},
                  &spec->max_iterations);
   OverlayInteger(solver, "load_steps", Quantity{"a number of load steps", Bound::kAtLeastOne, ""}, &spec->load_steps);

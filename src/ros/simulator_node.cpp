@@ -98,7 +98,7 @@ int SimulatorNode::Run() {
   } catch (const SolverError& error) {
     FlushPending();
     ROS_FATAL_STREAM("flexmbd: run failed: " << error.what());
-    ROS_INFO_STREAM("flexmbd: " << simulation_->statistics().Summary());
+    ROS_INFO_STREAM("flexmbd: " << simulation_->statistics().Summary(simulation_->model()));
     status = kExitRunFailed;
   }
   if (StopRequested() || !::ros::ok()) {
@@ -235,7 +235,7 @@ void SimulatorNode::ReportEnd() {
   const std::chrono::duration<double> wall = Clock::now() - first_sent_wall_;
   ROS_INFO_STREAM("flexmbd: finished at t = " << simulation_->state().t << " s; " << samples_sent_
                                               << " samples sent in " << wall.count() << " s wall time");
-  ROS_INFO_STREAM("flexmbd: " << simulation_->statistics().Summary());
+  ROS_INFO_STREAM("flexmbd: " << simulation_->statistics().Summary(simulation_->model()));
   for (const std::string& line :
        DescribeEffectIntervals(simulation_->model(), simulation_->effect_events(), simulation_->state())) {
     ROS_INFO_STREAM("flexmbd: " << line);

@@ -49,7 +49,7 @@ void PrintSummary(const flexmbd::Simulation& simulation, const flexmbd::OutputSa
                   double wall_seconds) {
   std::printf("flexmbd_run: finished at t = %.6g s; %ld samples written in %.6g s wall time\n", simulation.state().t,
               samples, wall_seconds);
-  std::printf("flexmbd_run: %s\n", simulation.statistics().Summary().c_str());
+  std::printf("flexmbd_run: %s\n", simulation.statistics().Summary(simulation.model()).c_str());
   std::printf("flexmbd_run: energy kinetic %.6g J, potential %.6g J, external work %.6g J, dissipated %.6g J, "
               "numerical dissipation %.6g J\n",
               last.kinetic, last.potential, last.external_work, last.dissipated, last.numerical_dissipation);
@@ -146,7 +146,7 @@ int main(int argc, char** argv) {
     } catch (const flexmbd::SolverError& e) {
       outputs.Close();
       std::fprintf(stderr, "flexmbd_run: run failed: %s\n", e.what());
-      std::printf("flexmbd_run: %s\n", simulation.statistics().Summary().c_str());
+      std::printf("flexmbd_run: %s\n", simulation.statistics().Summary(simulation.model()).c_str());
       return 3;
     }
     outputs.Close();

@@ -71,8 +71,8 @@ class ElasticStop : public JointStop {
   /// The force does not depend on the mode: the mode only records contact.
   int ReviseMode(const StepContext& ctx) const override { return TrialMode(ctx); }
   StepLimit Limit(const StepContext& ctx, const State& end) const override;
-  /// In contact at the start or the end of the step.
-  bool GovernsStep(const StepContext& ctx) const override;
+  /// Contact begins and ends at zero force.
+  bool ModeChangesAreSmooth() const override { return true; }
   void Commit(const StepContext& ctx, const State& end, EffectState* effect) const override;
   StopSample Sample(const State& state) const override;
 

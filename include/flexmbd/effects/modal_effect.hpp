@@ -35,11 +35,10 @@ class ModalEffect : public Element {
   /// Step-size requests from the converged step ctx that led to `end` (rates of `end` known).
   virtual StepLimit Limit(const StepContext& /*ctx*/, const State& /*end*/) const { return {}; }
 
-  /// True when this effect sets the size of the converged step ctx by its own rule (Limit), which then
-  /// replaces the local error test for that step: inside an elastic contact, whose resolution (C6) is the
-  /// accuracy that matters and where the error estimate sees a step-to-step velocity alternation that does not
-  /// shrink with the step.
-  virtual bool GovernsStep(const StepContext& /*ctx*/) const { return false; }
+  /// True when this effect's mode changes leave the velocities continuous (an elastic contact begins and ends
+  /// at zero force): the local error estimate then keeps its history across them and watches the event itself.
+  /// Otherwise (an impact, a stick-slip transition) the history restarts after the change.
+  virtual bool ModeChangesAreSmooth() const { return false; }
 
   /// Updates `effect` (which holds the converged step's mode and the start's memory) for the accepted step
   /// ctx that led to `end`: memory, events, dissipated work, mode changes decided at the end of a step.

@@ -186,6 +186,14 @@ struct SolverSpec {
   bool adaptive = true;            ///< adapt the step to the local error estimate
   double tol = 1.0e-6;             ///< Newton relative tolerance
   double error_tol = 1.0e-4;       ///< local error target per step, relative
+  /// Absolute floors of the local error test per step (docs/theory.md, (T12)); 0 takes error_tol / 1000 of the
+  /// model's length scale (position) or of one radian (rotation; joint variables, in their own units).
+  struct ErrorFloors {
+    double position = 0;  ///< [m]
+    double rotation = 0;  ///< [rad]
+    double joint = 0;     ///< [rad or m]
+  };
+  ErrorFloors error_floor;
   int max_iterations = 20;         ///< Newton iterations per step
   int load_steps = 10;             ///< load increments of the static analysis
   bool static_first = false;       ///< run a static analysis and start the dynamics from it

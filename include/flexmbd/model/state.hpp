@@ -2,6 +2,7 @@
 /// @file
 /// State: the minimal copyable set that fixes the future of a run. Copying a State undoes a rejected step.
 
+#include <array>
 #include <vector>
 
 #include <Eigen/Core>
@@ -21,6 +22,10 @@ struct NodeState {
   Vec3 alpha_prev = Vec3::Zero();   ///< angular acceleration of the last accepted step, node frame [rad/s^2]
   Vec3 a_prev2 = Vec3::Zero();      ///< a_prev of the step before [m/s^2]
   Vec3 alpha_prev2 = Vec3::Zero();  ///< alpha_prev of the step before [rad/s^2]
+  /// Mean velocities (x_f - x_i)/h and mean angular velocities (rotation vector of the step in W, over h) of the
+  /// last three accepted steps, newest first [m/s, rad/s]: the local error estimate's history (T12).
+  std::array<Vec3, 3> mean_v = {Vec3::Zero(), Vec3::Zero(), Vec3::Zero()};
+  std::array<Vec3, 3> mean_w = {Vec3::Zero(), Vec3::Zero(), Vec3::Zero()};
   Vec3 a_alg = Vec3::Zero();        ///< generalized-alpha algorithmic linear acceleration [m/s^2]
   Vec3 alpha_alg = Vec3::Zero();    ///< generalized-alpha algorithmic angular acceleration [rad/s^2]
 };
@@ -48,8 +53,11 @@ struct State {
   std::vector<EffectState> effects; ///< per effect with modes (Model::modal_effects())
   int history_steps = 0;            ///< accepted steps whose accelerations are in a_prev (0, 1 or 2+)
   double h_prev = 0.0;              ///< size of the last accepted step [s]
-  double peak_speed = 0.0;          ///< largest node speed so far [m/s]: scale of the local error test
+  std::array<double, 3> recent_h = {0.0, 0.0, 0.0};  ///< sizes of the last three accepted steps, newest first [s]
+  std::array<Eigen::VectorXd, 3> mean_qdot;          ///< dq / h of the last three accepted steps, newest first
+  double peak_speed = 0.0;          ///< largest node speed so far [m/s]: scales of the local error test
   double peak_spin = 0.0;           ///< largest node angular speed so far [rad/s]
+  double peak_joint_rate = 0.0;     ///< largest |qdot| of any joint variable so far [rad/s or m/s]
   double external_work = 0.0;       ///< work of applied loads and drives since t = 0 [J]
   double dissipated_physical = 0.0; ///< energy dissipated by dampers, friction, stop and beam damping since t = 0 [J]
   double dissipated_numerical = 0.0;///< energy removed by the integrator's dissipation since t = 0 [J]

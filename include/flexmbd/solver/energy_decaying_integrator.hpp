@@ -42,12 +42,14 @@ class EnergyDecayingIntegrator : public TimeIntegrator {
   // Turns off the dissipation of nodes and variables whose converged step would gain energy; true if any was.
   bool DropEnergyGainingDissipation(const State& start, double h, Coefficients* c) const;
   Eigen::VectorXd Predict(const State& start, double h) const;
+  // The kinematic unknowns of a step that coasts at the start velocities: h v, h w, h qdot.
+  Eigen::VectorXd CoastingIncrements(const State& start, double h) const;
   // Asks every effect with modes whether the converged step contradicts its trial mode; true if any did.
   bool ReviseModes();
   // The effects' step-size requests and their state at the end of the accepted step.
   void CommitEffects(const State& start, State* end, StepLimit* limit) const;
-  // True when an effect's own step rule replaces the local error test for the converged step.
-  bool EffectsGovernStep() const;
+  // True when an effect changed its mode from `start` to `end` with a jump in the motion (ModeChangesAreSmooth).
+  bool ModesJumped(const State& start, const State& end) const;
   void Commit(const State& start, const Eigen::VectorXd& unknowns, double h,
               const std::vector<NodeSchemeCoefficients>& coefficients, State* end);
 

@@ -18,6 +18,9 @@ class SparseSystem;
 
 /// Constraints hold to this absolute accuracy at every converged step [m or rad].
 constexpr double kConstraintTolerance = 1.0e-11;
+/// Smallest motion a static load step or an end-point step is judged against [m or rad]: keeps the increment
+/// test meaningful when nothing moves.
+constexpr double kMotionFloor = 1.0e-6;
 
 struct NewtonReport {
   bool converged = false;
@@ -37,7 +40,7 @@ double RoundOffFloor(double magnitude);
 /// @param reuse_tangent start from the system's current factorisation instead of assembling a tangent (it is
 /// refreshed as soon as the iteration contracts too slowly).
 /// @param apply applies a Newton increment to the trial unknowns and returns the size (max norm) of the
-/// kinematic part of the motion it is relative to, against which increments are judged small.
+/// kinematic motion against which increments are judged small, floor included (e.g. kMotionFloor).
 NewtonReport SolveNewton(const Model& model, SparseSystem* system, double tol, int max_iterations, double noise_floor,
                          const std::function<const StepContext&(int iteration, bool with_tangent)>& evaluate,
                          const std::function<double(const Eigen::VectorXd& increment)>& apply,

@@ -3,6 +3,7 @@
 /// Step-size policy, separate from the integrator: shrinks after a rejection, follows the local error
 /// estimate otherwise, and keeps the books (steps accepted, rejected and why).
 
+#include <map>
 #include <string>
 
 #include "flexmbd/model/model_spec.hpp"
@@ -18,9 +19,13 @@ struct StepStatistics {
   long rejected_singular = 0;
   long newton_iterations = 0;  ///< over all attempted steps
   double h_min = 0, h_max = 0; ///< smallest and largest accepted step [s]
+  /// Per unknown (the first of a node's translation or rotation, or a joint variable): how many times its local
+  /// error weighed most in a step the estimate shrank or rejected.
+  std::map<int, long> limited_by;
   long rejected() const { return rejected_error + rejected_event + rejected_newton + rejected_singular; }
-  /// One line: "steps: N accepted, M rejected (a error, b event, c Newton, d singular); ...".
-  std::string Summary() const;
+  /// One line: "steps: N accepted, M rejected (a error, b event, c Newton, d singular); ...; local error limited
+  /// the step most at <unknown> (k times)".
+  std::string Summary(const Model& model) const;
 };
 
 class StepController {
@@ -35,6 +40,7 @@ class StepController {
  private:
   SolverSpec solver_;
   StepStatistics stats_;
+  double estimated_next_;  ///< the step the last error estimate allowed (at first, the initial step dt) [s]
 };
 
 }  // namespace flexmbd

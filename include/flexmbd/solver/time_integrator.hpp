@@ -18,9 +18,17 @@ class SparseSystem;
 enum class StepStatus { kAccepted, kRejectedError, kRejectedEvent, kNewtonDiverged, kSingularMatrix };
 const char* StepStatusName(StepStatus status);
 
+/// Local error estimate of a step (docs/theory.md, (T12)).
+struct ErrorEstimate {
+  /// Weighted RMS of the local errors relative to their tolerances (accept if <= 1); NaN while the step has no
+  /// estimate (fewer than two steps of acceleration history, e.g. at the start or after an impact).
+  double error = 0;
+  int worst_unknown = -1;  ///< first unknown of the node translation, rotation or joint variable that weighs most
+};
+
 struct StepResult {
   StepStatus status = StepStatus::kAccepted;
-  double error = 0;  ///< local error estimate relative to the target (accept if <= 1)
+  ErrorEstimate error;
   NewtonReport newton;
   StepLimit limit;  ///< what the effects with modes ask of this step (kRejectedEvent: limit.retry) and the next
 };
@@ -39,9 +47,12 @@ class TimeIntegrator {
 /// The scheme the model's solver settings name.
 std::unique_ptr<TimeIntegrator> MakeTimeIntegrator(const Model& model, SparseSystem* system);
 
-/// Local error estimate of the step that led to `end` (docs/theory.md, (T12)), relative to error_tol; h_before
-/// is the size of the step before it. Zero until two steps have been taken.
-double LocalErrorEstimate(const State& end, double h_before, double error_tol);
+/// Local error estimate of the step that led to `end` (docs/theory.md, (T12)), from its mean-rate history.
+ErrorEstimate EstimateLocalError(const Model& model, const State& end);
+
+/// Books an accepted step from `start` into the end state's error-test history: its mean rates and size, and the
+/// peak speeds that scale the test. Called by every scheme once `end` holds its positions, rates and h_prev.
+void RecordStepHistory(const State& start, State* end);
 
 /// Round-off floor of Newton increments for a start state (its coordinates and joint variables).
 double NoiseFloor(const Model& model, const State& start);

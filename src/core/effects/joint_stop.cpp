@@ -15,6 +15,8 @@ constexpr double kMinReferenceSpeed = 1.0e-6;
 // An elastic contact step whose change of approach speed exceeds its budget pi v_in / N by more than this
 // factor is redone (N the steps per contact); below it the next step is shortened instead.
 constexpr double kRejectRatio = 2.0;
+// An elastic contact whose approach speed is below this fraction of its impact speed v_in is at rest (C6).
+constexpr double kRestingFraction = 0.1;
 // Shrink beyond the budget's estimate when redoing, so the retry is not rejected again.
 constexpr double kRetrySafety = 0.8;
 constexpr double kPi = 3.14159265358979323846;
@@ -162,15 +164,16 @@ StepLimit ElasticStop::Limit(const StepContext& ctx, const State& end) const {
   // -e v_in along about half a period, changing by at most pi v_in / N per step of 1/N of it.
   const double budget = kPi * f.reference_speed / steps_per_contact_;
   const double change = std::abs(GapRate(end.qdot[variable()] - ctx.start->qdot[variable()]));
+  // The rule resolves impacts: a contact that has come to rest (approach speed below a tenth of v_in at the
+  // start of the step) is left to the local error test (T12), for there a change of rate need not shrink with
+  // the step (a joint starting to stick absorbs its slip in one step whatever its size) and a budget scaled by
+  // the impact speed could not be met. Likewise only the step that begins the contact is redone.
+  const double speed_i = std::abs(GapRate(ctx.start->qdot[variable()]));
+  if (f.a_i > 0 && speed_i < kRestingFraction * f.reference_speed) return limit;
   const double ratio = change / budget;
-  if (ratio > kRejectRatio) limit.retry = std::min(limit.retry, kRetrySafety * ctx.h / ratio);
+  if (f.a_i <= 0 && ratio > kRejectRatio) limit.retry = std::min(limit.retry, kRetrySafety * ctx.h / ratio);
   else if (ratio > 0) limit.next = std::min(limit.next, ctx.h / ratio);
   return limit;
-}
-
-bool ElasticStop::GovernsStep(const StepContext& ctx) const {
-  const StepForce f = Evaluate(ctx);
-  return f.a_i > 0 || f.a_f > 0;
 }
 
 void ElasticStop::Commit(const StepContext& ctx, const State& end, EffectState* effect) const {

@@ -15,6 +15,10 @@ namespace {
 // the previous step's values beforehand and checked after convergence.
 bool Dissipates(const Vec3& dv, const Vec3& dv_lagged, const Mat3& M) { return (dv - dv_lagged).dot(M * dv) >= 0.0; }
 
+// Smallest acceleration a step's change of motion is judged against [m/s^2 or rad/s^2]: a step that coasts
+// still converges to a velocity error of tol times this per unit time.
+constexpr double kAccelerationFloor = 1.0e-6;
+
 // Mode revisions allowed in one step before it is redone shorter (a stop touched and left within the step).
 constexpr int kMaxModeRevisions = 4;
 constexpr double kModeChatterShrink = 0.25;
@@ -100,6 +104,16 @@ Eigen::VectorXd EnergyDecayingIntegrator::Predict(const State& start, double h) 
   return x;
 }
 
+Eigen::VectorXd EnergyDecayingIntegrator::CoastingIncrements(const State& start, double h) const {
+  Eigen::VectorXd x(model_.num_unknowns() - model_.num_multipliers());
+  for (int k = 0; k < model_.num_nodes(); ++k) {
+    x.segment<3>(model_.node_unknown(k)) = h * start.nodes[k].v;
+    x.segment<3>(model_.node_unknown(k) + 3) = h * start.nodes[k].w;
+  }
+  for (int k = 0; k < model_.num_variables(); ++k) x[model_.variable_unknown(k)] = h * start.qdot[k];
+  return x;
+}
+
 bool EnergyDecayingIntegrator::ReviseModes() {
   bool revised = false;
   for (const ModalEffect* effect : model_.modal_effects()) {
@@ -119,6 +133,10 @@ StepResult EnergyDecayingIntegrator::Step(const State& start, double h, State* e
   // A step redone with revised dissipation or modes starts from the last converged solution, which differs from
   // the new one only by what the revision changes.
   Eigen::VectorXd unknowns = Predict(start, h);
+  // Newton judges its increments against what the dynamics add to the coasting motion h v_i over the step: a
+  // velocity error of tol h |a| per step, an error per unit time whatever the step (docs/theory.md, "Newton
+  // iteration").
+  const Eigen::VectorXd coasting = CoastingIncrements(start, h);
   int mode_revisions = 0;
   while (true) {
     int tangents = 0;
@@ -134,7 +152,7 @@ StepResult EnergyDecayingIntegrator::Step(const State& start, double h, State* e
         },
         [&](const Eigen::VectorXd& increment) {
           unknowns += increment;
-          return unknowns.head(n_kinematic).cwiseAbs().maxCoeff();
+          return (unknowns.head(n_kinematic) - coasting).cwiseAbs().maxCoeff() + h * h * kAccelerationFloor;
         },
         system_->factorisation_key() == h);
     // The factorisation now belongs to a step of this size, and may serve the next one of the same size.
@@ -161,16 +179,17 @@ StepResult EnergyDecayingIntegrator::Step(const State& start, double h, State* e
   }
   Commit(start, unknowns, h, coefficients.nodes, end);
   CommitEffects(start, end, &result.limit);
-  result.error = EffectsGovernStep() ? 0.0 : LocalErrorEstimate(*end, start.h_prev, model_.solver().error_tol);
-  const bool too_large = model_.solver().adaptive && result.error > 1.0;
+  result.error = EstimateLocalError(model_, *end);
+  const bool too_large = model_.solver().adaptive && result.error.error > 1.0;
   result.status = too_large ? StepStatus::kRejectedError : StepStatus::kAccepted;
   if (result.limit.retry < h) result.status = StepStatus::kRejectedEvent;
   return result;
 }
 
-bool EnergyDecayingIntegrator::EffectsGovernStep() const {
+bool EnergyDecayingIntegrator::ModesJumped(const State& start, const State& end) const {
   for (const ModalEffect* effect : model_.modal_effects()) {
-    if (effect->GovernsStep(builder_.context())) return true;
+    const int k = effect->slot();
+    if (start.effects[k].mode != end.effects[k].mode && !effect->ModeChangesAreSmooth()) return true;
   }
   return false;
 }
@@ -180,11 +199,10 @@ void EnergyDecayingIntegrator::CommitEffects(const State& start, State* end, Ste
   for (const ModalEffect* effect : model_.modal_effects()) limit->Merge(effect->Limit(ctx, *end));
   end->effects = modes_;
   for (const ModalEffect* effect : model_.modal_effects()) effect->Commit(ctx, *end, &end->effects[effect->slot()]);
-  if (SameModes(start.effects, end->effects)) return;
-  // The accelerations of a step whose modes changed (an impact, a stick-slip transition) say nothing about the
-  // next: the local error estimate and the scheme's dissipation restart their history.
-  end->history_steps = 0;
   if (!SameModes(modes_, end->effects)) system_->set_factorisation_key(std::numeric_limits<double>::quiet_NaN());
+  // The accelerations of a step whose modes changed with a jump (an impact, a stick-slip transition) say nothing
+  // about the next: the local error estimate and the scheme's dissipation restart their history.
+  if (ModesJumped(start, *end)) end->history_steps = 0;
 }
 
 void EnergyDecayingIntegrator::Commit(const State& start, const Eigen::VectorXd& unknowns, double h,
@@ -205,8 +223,6 @@ void EnergyDecayingIntegrator::Commit(const State& start, const Eigen::VectorXd&
     n.alpha_prev2 = start.nodes[k].alpha_prev;
     n.a_prev = (s.v_f - s.v_i) / h;
     n.alpha_prev = (s.w_f - s.w_i) / h;
-    end->peak_speed = std::max(end->peak_speed, n.v.norm());
-    end->peak_spin = std::max(end->peak_spin, n.w.norm());
   }
   for (int k = 0; k < model_.num_variables(); ++k) end->q[k] = (*ctx.variables)[k].q_f;
   end->lambda = unknowns.tail(model_.num_multipliers());
@@ -214,6 +230,7 @@ void EnergyDecayingIntegrator::Commit(const State& start, const Eigen::VectorXd&
   end->qddot_prev2 = start.qddot_prev;
   end->qddot_prev = (end->qdot - start.qdot) / h;
   end->dq_prev = end->q - start.q;
+  RecordStepHistory(start, end);
 
   StepWork work;
   for (const auto& element : model_.elements()) element->AddStepWork(ctx, &work);

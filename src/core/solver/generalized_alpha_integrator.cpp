@@ -110,7 +110,7 @@ StepResult GeneralizedAlphaIntegrator::Step(const State& given_start, double h, 
         for (int k = 0; k < nv; ++k) dq[k] += increment[model_.variable_unknown(k)];
         iterate.q = start.q + dq;
         unknowns.tail(model_.num_multipliers()) += increment.tail(model_.num_multipliers());
-        return nv > 0 ? std::max(reference, dq.cwiseAbs().maxCoeff()) : reference;
+        return (nv > 0 ? std::max(reference, dq.cwiseAbs().maxCoeff()) : reference) + kMotionFloor;
       });
   system_->set_factorisation_key(std::numeric_limits<double>::quiet_NaN());  // not a reusable dynamic tangent
   if (result.newton.singular || !result.newton.converged) {
@@ -121,8 +121,8 @@ StepResult GeneralizedAlphaIntegrator::Step(const State& given_start, double h, 
   builder_.EndPoint(iterate, unknowns, t_f, h);
   FillKinematics(start, increments, dq, h);
   Commit(start, iterate, increments, dq, h, end);
-  result.error = LocalErrorEstimate(*end, start.h_prev, model_.solver().error_tol);
-  const bool too_large = model_.solver().adaptive && result.error > 1.0;
+  result.error = EstimateLocalError(model_, *end);
+  const bool too_large = model_.solver().adaptive && result.error.error > 1.0;
   result.status = too_large ? StepStatus::kRejectedError : StepStatus::kAccepted;
   return result;
 }
@@ -145,18 +145,18 @@ void GeneralizedAlphaIntegrator::Commit(const State& start, const State& iterate
     e.alpha_prev2 = n.alpha_prev;
     e.a_prev = s.vdot_f;
     e.alpha_prev = s.wdot_f;
-    end->peak_speed = std::max(end->peak_speed, e.v.norm());
-    end->peak_spin = std::max(end->peak_spin, e.w.norm());
   }
   const int nv = model_.num_variables();
   const Eigen::VectorXd acc = OrZero(start.qacc_alg, nv), qddot = OrZero(start.qddot_prev, nv);
   end->qacc_alg.resize(nv);
   end->qddot_prev.resize(nv);
+  end->qddot_prev2 = qddot;
   for (int k = 0; k < nv; ++k) {
     end->qacc_alg[k] = c_.Acceleration<double>(dq[k], start.qdot[k], acc[k], h);
     end->qddot_prev[k] = c_.TrueAcceleration<double>(end->qacc_alg[k], acc[k], qddot[k]);
   }
   end->qdot = JointRates(model_, *end);
+  RecordStepHistory(start, end);
 }
 
 }  // namespace flexmbd

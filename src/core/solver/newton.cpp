@@ -11,8 +11,6 @@ namespace flexmbd {
 namespace {
 // Force magnitudes below this are treated as this [N]: keeps the relative test meaningful at rest.
 constexpr double kForceFloor = 1.0e-9;
-// Kinematic increments are compared to tol times this floor [m or rad] when the motion itself is tiny.
-constexpr double kIncrementFloor = 1.0e-6;
 
 
 struct ResidualCheck {
@@ -92,14 +90,14 @@ NewtonReport SolveNewton(const Model& model, SparseSystem* system, double tol, i
     applied = increment;
     const double reference = apply(increment);
     const bool residual_small = check.force <= tol && check.constraint <= kConstraintTolerance;
-    if (residual_small && size <= tol * (reference + kIncrementFloor) + noise_floor) {
+    if (residual_small && size <= tol * reference + noise_floor) {
       report.converged = true;
       return report;
     }
     // Refresh the tangent when the simplified iteration would need too many more iterations at its observed
     // contraction rate (Hairer and Wanner, Solving ODEs II, sec. IV.8).
     const double contraction = size / previous_size;
-    const double target = tol * (reference + kIncrementFloor) + noise_floor;
+    const double target = tol * reference + noise_floor;
     refresh = contraction >= 1.0 || std::log(target / size) / std::log(contraction) > kMaxSimplifiedIterations;
     previous_size = size;
   }

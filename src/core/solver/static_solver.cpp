@@ -36,7 +36,7 @@ StaticResult SolveStatic(const Model& model, SparseSystem* system, State* state)
           for (int k = 0; k < model.num_variables(); ++k) state->q[k] += increment[model.variable_unknown(k)];
           state->lambda += increment.tail(model.num_multipliers());
           travelled = std::max(travelled, increment.head(model.num_unknowns() - model.num_multipliers()).cwiseAbs().maxCoeff());
-          return travelled;
+          return travelled + kMotionFloor;
         });
     system->set_factorisation_key(std::numeric_limits<double>::quiet_NaN());  // a static tangent: not reusable
     result.iterations += result.last.iterations;

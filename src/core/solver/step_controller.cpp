@@ -4,6 +4,8 @@
 #include <cmath>
 #include <sstream>
 
+#include "flexmbd/model/model.hpp"
+
 namespace flexmbd {
 namespace {
 // Classical controller constants (Hairer, Norsett & Wanner, Solving ODEs I, sec. II.4): safety factor and
@@ -17,15 +19,21 @@ constexpr double kFailureShrink = 0.25;
 constexpr double kErrorOrder = 2.0;
 }  // namespace
 
-std::string StepStatistics::Summary() const {
+std::string StepStatistics::Summary(const Model& model) const {
   std::ostringstream out;
   out << "steps: " << accepted << " accepted, " << rejected() << " rejected (" << rejected_error << " local error, " << rejected_event << " stop or friction event, "
       << rejected_newton << " Newton not converged, " << rejected_singular << " singular matrix); "
       << newton_iterations << " Newton iterations; step size " << h_min << " to " << h_max << " s";
+  const auto most = std::max_element(limited_by.begin(), limited_by.end(),
+                                     [](const auto& a, const auto& b) { return a.second < b.second; });
+  if (most != limited_by.end()) {
+    out << "; local error limited the step most at " << model.DescribeUnknown(most->first) << " (" << most->second
+        << " times)";
+  }
   return out.str();
 }
 
-StepController::StepController(const SolverSpec& solver) : solver_(solver) {}
+StepController::StepController(const SolverSpec& solver) : solver_(solver), estimated_next_(solver.dt) {}
 
 double StepController::Next(double h, const StepResult& result) {
   stats_.newton_iterations += result.newton.iterations;
@@ -44,8 +52,19 @@ double StepController::Next(double h, const StepResult& result) {
     return h * kFailureShrink;
   }
   if (!solver_.adaptive) return std::min(result.status == StepStatus::kAccepted ? solver_.dt : h, result.limit.next);
-  const double factor = result.error > 0 ? kSafety * std::pow(result.error, -1.0 / kErrorOrder) : kMaxGrowth;
-  return std::min({solver_.dt_max, h * std::clamp(factor, kMinShrink, kMaxGrowth), result.limit.next});
+  const double error = result.error.error;
+  double next = 0;
+  if (std::isfinite(error)) {
+    const double factor = error > 0 ? kSafety * std::pow(error, -1.0 / kErrorOrder) : kMaxGrowth;
+    next = h * std::clamp(factor, kMinShrink, kMaxGrowth);
+    if (result.status == StepStatus::kAccepted) estimated_next_ = next;
+    if (result.error.worst_unknown >= 0 && factor < 1.0) ++stats_.limited_by[result.error.worst_unknown];
+  } else {
+    // Without an estimate (the first steps; after an impact or a stick-slip transition, whose jump says nothing
+    // about the steps after it) the step may grow back to what the last estimate allowed, never beyond.
+    next = std::min(h * kMaxGrowth, std::max(h, estimated_next_));
+  }
+  return std::min({solver_.dt_max, next, result.limit.next});
 }
 
 }  // namespace flexmbd

@@ -1,6 +1,9 @@
 #include "flexmbd/solver/time_integrator.hpp"
 
 #include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
 
 #include "flexmbd/model/model.hpp"
 #include "flexmbd/solver/energy_decaying_integrator.hpp"
@@ -8,10 +11,12 @@
 
 namespace flexmbd {
 namespace {
-// Velocity scale below which the error estimate is not normalised further [m/s or rad/s].
-constexpr double kVelocityFloor = 1.0e-6;
-// Second-order local position error is h^3 |da/dt| / 12 (docs/theory.md, (T12)).
-constexpr double kLocalErrorConstant = 1.0 / 12.0;
+// Default error floors: this fraction of error_tol times the length scale (positions) or one radian.
+constexpr double kDefaultFloorFraction = 1.0e-3;
+
+double FloorOrDefault(double floor, double error_tol, double unit) {
+  return floor > 0 ? floor : kDefaultFloorFraction * error_tol * unit;
+}
 }  // namespace
 
 const char* StepStatusName(StepStatus status) {
@@ -32,21 +37,70 @@ std::unique_ptr<TimeIntegrator> MakeTimeIntegrator(const Model& model, SparseSys
   return std::make_unique<EnergyDecayingIntegrator>(model, system);
 }
 
-double LocalErrorEstimate(const State& end, double h_before, double error_tol) {
-  if (end.history_steps < 2) return 0.0;
-  const double h = end.h_prev;
-  const double v_scale = std::max(kVelocityFloor, end.peak_speed);
-  const double w_scale = std::max(kVelocityFloor, end.peak_spin);
-  // Local position error h^3 |da/dt| / 12 with da/dt ~ (a_n - a_{n-1}) / ((h + h_before)/2), relative to the
-  // displacement h v_scale of a step at the run's peak speed (a slow phase is judged on the scale of the
-  // whole motion, not of its own, vanishing, speed).
-  const double weight = kLocalErrorConstant * 2.0 * h * h / (h + h_before);
-  double error = 0;
-  for (const NodeState& n : end.nodes) {
-    error = std::max(error, weight * (n.a_prev - n.a_prev2).norm() / v_scale);
-    error = std::max(error, weight * (n.alpha_prev - n.alpha_prev2).norm() / w_scale);
+ErrorEstimate EstimateLocalError(const Model& model, const State& end) {
+  ErrorEstimate estimate;
+  if (end.history_steps < 3) {
+    estimate.error = std::numeric_limits<double>::quiet_NaN();
+    return estimate;
   }
-  return error / error_tol;
+  const SolverSpec& solver = model.solver();
+  const double rtol = solver.error_tol;
+  const std::array<double, 3>& h = end.recent_h;
+  // Mean rates are the rates at the step midpoints (to O(h^2)); their second divided difference over the three
+  // midpoints is the third derivative of the motion, and the local error of the trapezoidal family is h^3 x^(3) / 12.
+  const double span_newer = 0.5 * (h[0] + h[1]), span_older = 0.5 * (h[1] + h[2]);
+  const double span = 0.5 * (span_newer + span_older);
+  auto third_derivative = [&](const auto& newest, const auto& middle, const auto& oldest) {
+    return ((newest - middle) / span_newer - (middle - oldest) / span_older) / span;
+  };
+  const double weight = h[0] * h[0] * h[0] / 12.0;
+  // Each entry is compared with its floor plus rtol times the step's travel at the run's peak rate of its kind.
+  const double position_scale = FloorOrDefault(solver.error_floor.position, rtol, model.length_scale()) +
+                                rtol * h[0] * end.peak_speed;
+  const double rotation_scale = FloorOrDefault(solver.error_floor.rotation, rtol, 1.0) + rtol * h[0] * end.peak_spin;
+  const double joint_scale = FloorOrDefault(solver.error_floor.joint, rtol, 1.0) + rtol * h[0] * end.peak_joint_rate;
+  double sum = 0, worst = -1;
+  int count = 0;
+  auto add = [&](double local_error, double scale, int unknown) {
+    const double ratio = local_error / scale;
+    sum += ratio * ratio;
+    ++count;
+    if (ratio > worst) {
+      worst = ratio;
+      estimate.worst_unknown = unknown;
+    }
+  };
+  for (int k = 0; k < model.num_nodes(); ++k) {
+    const NodeState& n = end.nodes[k];
+    add(weight * third_derivative(n.mean_v[0], n.mean_v[1], n.mean_v[2]).norm(), position_scale,
+        model.node_unknown(k));
+    add(weight * third_derivative(n.mean_w[0], n.mean_w[1], n.mean_w[2]).norm(), rotation_scale,
+        model.node_unknown(k) + 3);
+  }
+  const auto& q = end.mean_qdot;
+  for (int k = 0; k < model.num_variables(); ++k) {
+    add(weight * std::abs(third_derivative(q[0][k], q[1][k], q[2][k])), joint_scale, model.variable_unknown(k));
+  }
+  estimate.error = count > 0 ? std::sqrt(sum / count) : 0.0;
+  return estimate;
+}
+
+void RecordStepHistory(const State& start, State* end) {
+  const double h = end->h_prev;
+  end->recent_h = {h, start.recent_h[0], start.recent_h[1]};
+  for (size_t k = 0; k < end->nodes.size(); ++k) {
+    const NodeState& i = start.nodes[k];
+    NodeState& f = end->nodes[k];
+    f.mean_v = {(f.x - i.x) / h, i.mean_v[0], i.mean_v[1]};
+    f.mean_w = {i.R * Log(i.R.transpose() * f.R) / h, i.mean_w[0], i.mean_w[1]};
+    end->peak_speed = std::max(end->peak_speed, f.v.norm());
+    end->peak_spin = std::max(end->peak_spin, f.w.norm());
+  }
+  end->mean_qdot = {(end->q - start.q) / h, start.mean_qdot[0], start.mean_qdot[1]};
+  for (Eigen::VectorXd& rates : end->mean_qdot) {
+    if (rates.size() != end->q.size()) rates = Eigen::VectorXd::Zero(end->q.size());
+  }
+  if (end->qdot.size() > 0) end->peak_joint_rate = std::max(end->peak_joint_rate, end->qdot.cwiseAbs().maxCoeff());
 }
 
 double NoiseFloor(const Model& model, const State& start) {
