@@ -285,5 +285,15 @@ TEST(ConfigErrors, NonMapDocumentIsRejected) {
       "pendulum.yaml: 'just text' is not a map; expected a map with keys beams, joints, solver, output, loads");
 }
 
+TEST(ConfigErrors, ErrorFloorIsReadAndChecked) {
+  const SolverSpec solver =
+      Pendulum("solver: {error_floor: {position: 1.0e-9, rotation: 2.0e-9, joint: 3.0e-9}}").solver;
+  EXPECT_EQ(solver.error_floor.position, 1.0e-9);
+  EXPECT_EQ(solver.error_floor.rotation, 2.0e-9);
+  EXPECT_EQ(solver.error_floor.joint, 3.0e-9);
+  EXPECT_CONFIG_ERROR(Pendulum("solver: {error_floor: {position: -1.0}}"), "pendulum.yaml: solver.error_floor.position");
+  EXPECT_CONFIG_ERROR(Pendulum("solver: {error_floor: {angle: 1.0}}"), "pendulum.yaml: solver.error_floor.angle");
+}
+
 }  // namespace
 }  // namespace flexmbd

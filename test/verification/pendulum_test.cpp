@@ -6,21 +6,13 @@
 #include <vector>
 
 #include "case_builders.hpp"
+#include "closed_forms.hpp"
 #include "flexmbd/solver/simulation.hpp"
 
 namespace flexmbd {
 namespace {
 
-// Complete elliptic integral of the first kind K(k) by the arithmetic-geometric mean (exact to round-off).
-double EllipticK(double k) {
-  double a = 1.0, b = std::sqrt(1.0 - k * k);
-  for (int i = 0; i < 40; ++i) {
-    const double next = 0.5 * (a + b);
-    b = std::sqrt(a * b);
-    a = next;
-  }
-  return M_PI / (2.0 * a);
-}
+using test::EllipticK;
 
 // Times at which the joint rate changes sign, linearly interpolated between samples.
 std::vector<double> RateSignChanges(const std::vector<OutputSample>& samples) {

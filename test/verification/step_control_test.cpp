@@ -1,0 +1,128 @@
+// Step-size control against exact periods (issue 13; docs/theory.md, (T12)): the error falls with the tolerance,
+// the default tolerance meets the issue's bounds, and adaptive steps beat fixed ones of the same count. The
+// cases are read from test/data the way a user runs them, with the default settings unless a test varies one.
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "closed_forms.hpp"
+#include "flexmbd/io/config_loader.hpp"
+#include "flexmbd/solver/simulation.hpp"
+
+namespace flexmbd {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+constexpr double kGravity = 9.81;
+
+ModelSpec Case(const std::string& urdf, const std::string& yaml) {
+  const std::string data = std::string(FLEXMBD_SOURCE_DIR) + "/test/data/";
+  return LoadModelSpec(data + "urdf/" + urdf, data + "yaml/" + yaml);
+}
+
+ModelSpec Pendulum() { return Case("simple_pendulum.urdf", "simple_pendulum.yaml"); }
+ModelSpec Freeplay() { return Case("freeplay_disk.urdf", "freeplay_oscillator.yaml"); }
+
+// Simple pendulum of 1 m released at 90 degrees: T = 4 sqrt(l/g) K(sin 45 deg) = 2.36784 s.
+double PendulumPeriod() { return 4.0 * std::sqrt(1.0 / kGravity) * test::EllipticK(std::sin(kPi / 4.0)); }
+
+// Freeplay oscillator: free flight across the 4 degree gap at the initial rate, both ways, and half an
+// oscillation of sqrt(k/J) in each stop (linear, lossless): T = 4 g / v + 2 pi / omega.
+double FreeplayPeriod() {
+  const double gap = 2.0 * kPi / 180.0, speed = 0.41166339, omega = std::sqrt(20.0 / 0.5);
+  return 4.0 * gap / speed + 2.0 * kPi / omega;
+}
+
+struct PeriodRun {
+  long steps = 0;
+  double error = 0;  ///< largest relative error of the periods between every other zero crossing
+};
+
+// Runs the case and measures its periods at the zero crossings of the joint angle, interpolated linearly between
+// steps: both cases cross zero where the angle's second derivative vanishes (the pendulum hangs, the disk flies
+// freely), so the interpolation adds O(h^3) to crossing times.
+PeriodRun MeasurePeriods(const ModelSpec& spec, double exact) {
+  const Model model = BuildModel(spec);
+  Simulation simulation(model);
+  std::vector<double> crossings;
+  double t_before = 0, q_before = 0;
+  simulation.Run([&](const OutputSample& s) {
+    const double q = s.position[0];
+    if (s.t > 0 && ((q_before < 0 && q >= 0) || (q_before > 0 && q <= 0))) {
+      crossings.push_back(t_before + (s.t - t_before) * q_before / (q_before - q));
+    }
+    t_before = s.t;
+    q_before = q;
+  });
+  PeriodRun run;
+  run.steps = simulation.statistics().accepted;
+  EXPECT_GE(crossings.size(), 4u);
+  for (size_t k = 2; k < crossings.size(); ++k) {
+    run.error = std::max(run.error, std::abs((crossings[k] - crossings[k - 2]) / exact - 1.0));
+  }
+  return run;
+}
+
+PeriodRun WithTolerance(ModelSpec spec, double exact, double error_tol) {
+  spec.solver.error_tol = error_tol;
+  return MeasurePeriods(spec, exact);
+}
+
+PeriodRun WithFixedSteps(ModelSpec spec, double exact, long steps) {
+  spec.solver.adaptive = false;
+  spec.solver.dt = spec.solver.t_end / steps;
+  return MeasurePeriods(spec, exact);
+}
+
+// The issue's proportionality: at least 10 times smaller errors for every 100 times smaller tolerance.
+void ExpectProportional(const ModelSpec& spec, double exact) {
+  const PeriodRun loose = WithTolerance(spec, exact, 1.0e-3);
+  const PeriodRun middle = WithTolerance(spec, exact, 1.0e-5);
+  const PeriodRun tight = WithTolerance(spec, exact, 1.0e-7);
+  EXPECT_LT(middle.error, loose.error / 10) << loose.steps << " and " << middle.steps << " steps";
+  EXPECT_LT(tight.error, middle.error / 10) << middle.steps << " and " << tight.steps << " steps";
+}
+
+// The issue's efficiency: the fixed step that costs as many steps as the adaptive run is less accurate.
+void ExpectAdaptiveBeatsFixed(const ModelSpec& spec, double exact, double error_tol) {
+  const PeriodRun adaptive = WithTolerance(spec, exact, error_tol);
+  const PeriodRun fixed = WithFixedSteps(spec, exact, adaptive.steps);
+  EXPECT_LT(adaptive.error, fixed.error) << adaptive.steps << " steps, error_tol " << error_tol;
+}
+
+TEST(StepControl, PendulumPeriodFallsWithTheTolerance) {
+  // Measured: 1.0e-3, 1.1e-5, 6.5e-7 at error_tol 1e-3, 1e-5, 1e-7 (197, 1852, 14920 steps).
+  ExpectProportional(Pendulum(), PendulumPeriod());
+}
+
+TEST(StepControl, PendulumAtDefaultToleranceWithinTheIssuesBound) {
+  // Reference cases at default settings within 1e-3 of the exact answer (measured 9.9e-5 in 606 steps).
+  constexpr double kDefaultAccuracy = 1.0e-3;
+  EXPECT_LT(MeasurePeriods(Pendulum(), PendulumPeriod()).error, kDefaultAccuracy);
+}
+
+TEST(StepControl, PendulumAdaptiveStepsBeatFixedStepsOfTheSameCount) {
+  for (double error_tol : {1.0e-4, 1.0e-5, 1.0e-6}) ExpectAdaptiveBeatsFixed(Pendulum(), PendulumPeriod(), error_tol);
+}
+
+TEST(StepControl, FreeplayPeriodFallsWithTheTolerance) {
+  // Measured: 2.9e-3, 6.6e-5, 2.1e-6 at error_tol 1e-3, 1e-5, 1e-7: the tolerance governs inside the contacts.
+  ExpectProportional(Freeplay(), FreeplayPeriod());
+}
+
+TEST(StepControl, FreeplayPeriodWithinTheIssuesBounds) {
+  // The issue: 0.5% at the default tolerance (measured 0.048%) and 0.05% at 1e-6 (measured 0.0011%).
+  EXPECT_LT(MeasurePeriods(Freeplay(), FreeplayPeriod()).error, 5.0e-3);
+  EXPECT_LT(WithTolerance(Freeplay(), FreeplayPeriod(), 1.0e-6).error, 5.0e-4);
+}
+
+TEST(StepControl, FreeplayAdaptiveStepsBeatFixedStepsOfTheSameCount) {
+  for (double error_tol : {1.0e-4, 1.0e-5, 1.0e-6}) ExpectAdaptiveBeatsFixed(Freeplay(), FreeplayPeriod(), error_tol);
+}
+
+}  // namespace
+}  // namespace flexmbd
