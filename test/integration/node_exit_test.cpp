@@ -78,16 +78,17 @@ TEST(NodeExit, SigintMidRunLeavesAReadableBagWithEverySampleSoFar) {
 }
 
 TEST(NodeExit, SolverFailureExitsWithThreeAndClosesTheBag) {
-  // Reference: test/integration/data/failing_run.yaml fails at its second step (t = 0.01 s) with the step
-  // below dt_min: the bag holds the samples before the failure, t = 0 and 0.01 s.
+  // Reference: test/integration/data/failing_run.yaml fails once the error estimate has its three steps of
+  // history, after t = 0.02 s, with the step below dt_min: the bag holds the samples before the failure, t = 0,
+  // 0.01 and 0.02 s.
   const TempDir dir("flexmbd_node_exit");
   const std::string bag = dir.File("failing.bag");
   NodeProcess node("flexmbd_failing", {"_bag:=" + bag});
   EXPECT_EQ(node.WaitForExit(kTimeout), std::optional<int>(kRunFailedExit));
   EXPECT_TRUE(Contains(node.Output(), "run failed: step size fell below dt_min")) << node.Output();
   const Samples recorded = ReadBagSamples(bag, "flexmbd_failing");
-  ASSERT_EQ(recorded.joint_states.size(), 2u);
-  EXPECT_NEAR(TimeOf(recorded.joint_states[1]), kSamplePeriod, kStampResolution);
+  ASSERT_EQ(recorded.joint_states.size(), 3u);
+  EXPECT_NEAR(TimeOf(recorded.joint_states[2]), 2 * kSamplePeriod, kStampResolution);
 }
 
 }  // namespace

@@ -303,6 +303,20 @@ Case DynamicCase(const ElementState& state, test::Random* random) {
   return c;
 }
 
+// The energy-decaying scheme's dissipation of the strains (B13) in a case: alpha for the element (index 0) and a
+// start state holding a previous step of 0.8 h with random strain changes of the size of this step's.
+struct SchemeDissipation {
+  std::vector<double> alpha{0.05};
+  State start;
+  SchemeDissipation(BeamElement* element, Case* c, test::Random* random) {
+    element->set_index(0);
+    start.h_prev = 0.8 * c->ctx.h;
+    start.element_history = {random->VectorX(element->history_size(), 1.0e-2)};
+    c->ctx.start = &start;
+    c->ctx.element_alpha = &alpha;
+  }
+};
+
 TEST(BeamElement, DynamicTangentIsExact) {
   test::Random random(24);
   for (int order = 1; order <= 3; ++order) {
@@ -311,6 +325,20 @@ TEST(BeamElement, DynamicTangentIsExact) {
       const BeamElement element("e", NodeIndices(order), state.length, Section(&random), damping);
       ExpectTangentMatches(element, DynamicCase(state, &random),
                            "dynamic order " + std::to_string(order) + " damping " + std::to_string(damping));
+    }
+  }
+}
+
+TEST(BeamElement, DynamicTangentWithSchemeDissipationIsExact) {
+  test::Random random(26);
+  for (int order = 1; order <= 3; ++order) {
+    for (double damping : {0.0, 0.02}) {
+      const ElementState state = BentElement(order, &random);
+      BeamElement element("e", NodeIndices(order), state.length, Section(&random), damping);
+      Case c = DynamicCase(state, &random);
+      const SchemeDissipation scheme(&element, &c, &random);
+      ExpectTangentMatches(element, c, "dynamic order " + std::to_string(order) + " damping " +
+                                           std::to_string(damping) + " with the scheme's dissipation");
     }
   }
 }
@@ -348,6 +376,16 @@ TEST(BeamElement, StepForcesCloseTheEnergyBooks) {
     EXPECT_GT(dissipation.dissipated, 0.0);
     EXPECT_NEAR(test::LocalResidual(damped, c.ctx).dot(d) - work, dissipation.dissipated,
                 1e-12 * std::max(1.0, dissipation.dissipated));
+    // The scheme's dissipation of the strains does the work alpha sum_g w_g (de - de_lagged)^T C de (B13),
+    // booked as numerical.
+    BeamElement decaying("e", NodeIndices(order), state.length, C, mu);
+    const SchemeDissipation scheme(&decaying, &c, &random);
+    StepWork both;
+    decaying.AddStepWork(c.ctx, &both);
+    EXPECT_NEAR(both.dissipated, dissipation.dissipated, 1e-12 * std::max(1.0, dissipation.dissipated));
+    EXPECT_NE(both.numerical, 0.0);
+    EXPECT_NEAR(test::LocalResidual(decaying, c.ctx).dot(d) - work, both.dissipated + both.numerical,
+                1e-12 * std::max(1.0, both.dissipated + std::abs(both.numerical)));
   }
 }
 

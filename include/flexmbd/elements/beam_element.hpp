@@ -37,8 +37,11 @@ class BeamElement : public Element {
   void AddResidualAndTangent(const StepContext& ctx, Eigen::Ref<Eigen::VectorXd> r,
                              Eigen::Ref<Eigen::VectorXd> magnitude, Eigen::Ref<Eigen::MatrixXd>* J) const override;
   void AddEnergy(const State& state, const Vec3& gravity, EnergyTally* tally) const override;
-  /// Energy dissipated by structural damping over the step (B7).
+  /// Energy dissipated over the step by structural damping (B7) and by the scheme on the strains (B13).
   void AddStepWork(const StepContext& ctx, StepWork* work) const override;
+  /// The strain change of the last accepted step at each Gauss point, for the scheme's dissipation (B13).
+  int history_size() const override { return 6 * shape_.num_points; }
+  void RecordHistory(const StepContext& ctx, Eigen::VectorXd* history) const override;
 
   /// One section of the element at a state, interpolated with the shape functions (B1)-(B2).
   struct Section {
@@ -67,10 +70,10 @@ class BeamElement : public Element {
   void EvaluateStep(const StepContext& ctx, Field::Vector* forces, Field::Matrix* K) const;
   struct StepFields;
   using RowVector = Eigen::Matrix<double, 1, Eigen::Dynamic, Eigen::RowMajor, 1, Field::kMaxDofs>;
-  // The step's damping forces (B7) and what their tangent reuses.
+  // The step's damping forces, structural (B7) and the scheme's (B13), and what their tangent reuses.
   struct StepDamping {
     Field::Vector forces;
-    Field::PointVectors viscous, gap;  // mu w C de / h and de - B_mid d per point
+    Field::PointVectors viscous, gap;  // w C [(mu/h + alpha) de - alpha de_lagged] and de - B_mid d per point
     std::array<Mat6, BeamShape::kMaxPoints> rate;  // d viscous / d strain_f
     std::array<Field::Jacobian, BeamShape::kMaxPoints> B_mid;
     double gap_work = 0;  // sum_g gap . viscous
@@ -87,6 +90,9 @@ class BeamElement : public Element {
   // The element's nodes at the start and the end of the step of ctx.
   void StepEnds(const StepContext& ctx, Field::Nodes* start, Field::Nodes* end) const;
   double Energy(const Field& field) const;
+  // The strain changes of the step at the Gauss points, and the previous step's scaled to this step's size.
+  Field::PointVectors StrainChanges(const StepContext& ctx) const;
+  Vec6 LaggedStrainChange(const StepContext& ctx, int point) const;
   // Round-off of a strain computed from these node positions: eps times the largest coordinate over the
   // element length [-].
   double StrainRoundOff(const StepContext& ctx) const;

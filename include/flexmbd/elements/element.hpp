@@ -83,6 +83,8 @@ struct StepContext {
   const Eigen::VectorXd* lambda = nullptr;  ///< trial multipliers (num_multipliers)
   const std::vector<EffectState>* effects = nullptr;  ///< trial modes of the effects with modes
   bool geometric_stiffness = false;  ///< add the second-derivative terms of constraint forces to the tangent
+  /// Energy-decaying coefficient alpha of each element's own stretch, by Element::index() (null: none).
+  const std::vector<double>* element_alpha = nullptr;
   /// True when forces are evaluated at the end configuration (start moved to the end, theta = 0).
   bool at_end() const { return mode != AnalysisMode::kDynamic; }
   /// d(mid-step value)/d(increment): 1/2 with mid-step forces, 1 at the end configuration.
@@ -133,8 +135,26 @@ class Element {
   /// Work done by the element over the converged step described by ctx (zero by default).
   virtual void AddStepWork(const StepContext&, StepWork*) const {}
 
+  /// Size of the element's own history in State::element_history (0: it keeps none).
+  virtual int history_size() const { return 0; }
+  /// Writes the element's history after the accepted step ctx (only called when history_size() > 0).
+  virtual void RecordHistory(const StepContext& /*ctx*/, Eigen::VectorXd* /*history*/) const {}
+
+  /// Position in Model::elements(), which indexes State::element_history and StepContext::element_alpha.
+  int index() const { return index_; }
+  /// Set once by the model builder.
+  void set_index(int index) { index_ = index; }
+
  protected:
+  /// The scheme's dissipation coefficient for this element's stretch in ctx (0 outside energy-decaying steps).
+  double Alpha(const StepContext& ctx) const {
+    return ctx.element_alpha != nullptr && ctx.mode == AnalysisMode::kDynamic ? (*ctx.element_alpha)[index_] : 0.0;
+  }
+
   std::vector<int> unknowns_;
+
+ private:
+  int index_ = -1;
 };
 
 }  // namespace flexmbd

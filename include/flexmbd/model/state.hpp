@@ -51,6 +51,8 @@ struct State {
   Eigen::VectorXd qacc_alg;         ///< generalized-alpha algorithmic accelerations of the variables
   Eigen::VectorXd lambda;           ///< constraint multipliers [N, N m] (num_multipliers)
   std::vector<EffectState> effects; ///< per effect with modes (Model::modal_effects())
+  /// Per element (Model::elements()), what it keeps of past steps (Element::history_size(); mostly empty).
+  std::vector<Eigen::VectorXd> element_history;
   int history_steps = 0;            ///< accepted steps whose accelerations are in a_prev (0, 1 or 2+)
   double h_prev = 0.0;              ///< size of the last accepted step [s]
   std::array<double, 3> recent_h = {0.0, 0.0, 0.0};  ///< sizes of the last three accepted steps, newest first [s]

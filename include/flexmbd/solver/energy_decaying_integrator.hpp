@@ -36,10 +36,12 @@ class EnergyDecayingIntegrator : public TimeIntegrator {
   struct Coefficients {
     std::vector<NodeSchemeCoefficients> nodes;
     std::vector<double> variables;
+    std::vector<double> elements;  ///< by Element::index(): elements that dissipate on their own stretch
   };
   // Chosen before the step from the previous steps' accelerations.
   Coefficients Choose(const State& start) const;
-  // Turns off the dissipation of nodes and variables whose converged step would gain energy; true if any was.
+  // Turns off the dissipation of nodes, variables and elements whose converged step would gain energy; true if
+  // any was.
   bool DropEnergyGainingDissipation(const State& start, double h, Coefficients* c) const;
   Eigen::VectorXd Predict(const State& start, double h) const;
   // The kinematic unknowns of a step that coasts at the start velocities: h v, h w, h qdot.

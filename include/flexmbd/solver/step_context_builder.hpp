@@ -39,6 +39,11 @@ class StepContextBuilder {
   /// Dissipation coefficients of the energy-decaying scheme for the springs on each variable, used by the
   /// dynamic contexts built next (all zero unless set).
   void set_variable_dissipation(const std::vector<double>& alpha) { variable_alpha_ = alpha; }
+  /// The energy-decaying coefficients of the elements' own stretch for the next Dynamic() (by Element::index()).
+  void set_element_dissipation(const std::vector<double>& alpha) {
+    element_alpha_ = alpha;
+    ctx_.element_alpha = &element_alpha_;
+  }
 
   /// Trial modes of the effects with modes for the dynamic contexts built next (null: the start state's).
   /// @pre the vector outlives the contexts built from it.
@@ -55,6 +60,7 @@ class StepContextBuilder {
   std::vector<VariableStep> variables_;
   Eigen::VectorXd lambda_;
   std::vector<double> variable_alpha_;
+  std::vector<double> element_alpha_;
   const std::vector<EffectState>* effect_modes_ = nullptr;
   StepContext ctx_;
 };

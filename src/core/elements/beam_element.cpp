@@ -161,7 +161,7 @@ void BeamElement::EvaluateStep(const StepContext& ctx, Field::Vector* forces, Fi
   step.Wd = step.W.cwiseProduct(step.d);
   step.norm = step.d.dot(step.Wd);
   step.strain_round_off = StrainRoundOff(ctx);
-  const bool damped = damping_ > 0.0;
+  const bool damped = damping_ > 0.0 || Alpha(ctx) > 0.0;
   step.start.emplace(shape_, start, Field::Order::kStrains);
   step.mid.emplace(shape_, mid, tangent ? Field::Order::kSecond : Field::Order::kFirst);
   step.end.emplace(shape_, end, tangent ? Field::Order::kFirst : Field::Order::kStrains);
@@ -229,15 +229,17 @@ void BeamElement::AddCorrectionDerivative(const StepFields& step, double value, 
 }
 
 BeamElement::StepDamping BeamElement::StepDampingForces(const StepContext& ctx, const StepFields& step) const {
-  // Section forces mu C (e_f - e_i) / h paired with a strain-increment operator B_m = B_mid + (de - B_mid d)
-  // (W d)^T / (d^T W d), for which B_m d = de exactly (B7): the forces then do the work
-  // -mu sum_g w_g de^T C de / h over the increments d.
+  // Section forces mu C (e_f - e_i) / h, plus the scheme's alpha C (de - de_lagged) (B13), paired with a
+  // strain-increment operator B_m = B_mid + (de - B_mid d) (W d)^T / (d^T W d), for which B_m d = de exactly
+  // (B7): the forces then do the work -sum_g w_g [mu de^T C de / h + alpha (de - de_lagged)^T C de].
   const Field& mid = *step.mid;
+  const double alpha = Alpha(ctx);
   StepDamping damping;
   for (int g = 0; g < mid.num_points(); ++g) {
     const Vec6 de = step.end->strain(g) - step.start->strain(g);
-    damping.rate[g] = damping_ * weighted_stiffness_[g] / ctx.h;
+    damping.rate[g] = (damping_ / ctx.h + alpha) * weighted_stiffness_[g];
     damping.viscous[g] = damping.rate[g] * de;
+    if (alpha > 0) damping.viscous[g] -= alpha * (weighted_stiffness_[g] * LaggedStrainChange(ctx, g));
     damping.B_mid[g] = mid.StrainJacobian(g);
     damping.gap[g] = de - damping.B_mid[g] * step.d;
     if (damping.gap[g].cwiseAbs().maxCoeff() <= 100.0 * step.strain_round_off) damping.gap[g].setZero();  // as in (B5)
@@ -299,14 +301,33 @@ void BeamElement::AddEnergy(const State& state, const Vec3&, EnergyTally* tally)
 }
 
 void BeamElement::AddStepWork(const StepContext& ctx, StepWork* work) const {
-  if (ctx.mode != AnalysisMode::kDynamic || damping_ == 0.0) return;
+  const double alpha = Alpha(ctx);
+  if (ctx.mode != AnalysisMode::kDynamic || (damping_ == 0.0 && alpha == 0.0)) return;
+  const Field::PointVectors de = StrainChanges(ctx);
+  for (int g = 0; g < shape_.num_points; ++g) {
+    const Vec6 stress_change = weighted_stiffness_[g] * de[g];
+    work->dissipated += damping_ * de[g].dot(stress_change) / ctx.h;
+    if (alpha > 0) work->numerical += alpha * (de[g] - LaggedStrainChange(ctx, g)).dot(stress_change);
+  }
+}
+
+void BeamElement::RecordHistory(const StepContext& ctx, Eigen::VectorXd* history) const {
+  const Field::PointVectors de = StrainChanges(ctx);
+  for (int g = 0; g < shape_.num_points; ++g) history->segment<6>(6 * g) = de[g];
+}
+
+BeamElement::Field::PointVectors BeamElement::StrainChanges(const StepContext& ctx) const {
   Field::Nodes start, end;
   StepEnds(ctx, &start, &end);
   const Field at_start(shape_, start, Field::Order::kStrains), at_end(shape_, end, Field::Order::kStrains);
-  for (int g = 0; g < shape_.num_points; ++g) {
-    const Vec6 de = at_end.strain(g) - at_start.strain(g);
-    work->dissipated += damping_ * de.dot(weighted_stiffness_[g] * de) / ctx.h;
-  }
+  Field::PointVectors de;
+  for (int g = 0; g < shape_.num_points; ++g) de[g] = at_end.strain(g) - at_start.strain(g);
+  return de;
+}
+
+Vec6 BeamElement::LaggedStrainChange(const StepContext& ctx, int point) const {
+  // (h / h_prev) de_prev, as dq_lagged for springs; Alpha() is nonzero only once a step has been taken.
+  return ctx.h / ctx.start->h_prev * ctx.start->element_history[index()].segment<6>(6 * point);
 }
 
 BeamElement::Section BeamElement::SectionAt(const State& state, double s) const {

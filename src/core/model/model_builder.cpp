@@ -297,6 +297,12 @@ Model BuildModel(const ModelSpec& spec) {
     model.elements_.push_back(std::make_unique<AppliedLoad>(node, model.node_unknown(node), load, p_NP));
   }
 
+  model.initial_state_.element_history.resize(model.elements_.size());
+  for (size_t k = 0; k < model.elements_.size(); ++k) {
+    model.elements_[k]->set_index(static_cast<int>(k));
+    model.initial_state_.element_history[k] = Eigen::VectorXd::Zero(model.elements_[k]->history_size());
+  }
+
   // The initial poses must satisfy every joint.
   StepContextBuilder context(model);
   const StepContext ctx = context.AtState(state);

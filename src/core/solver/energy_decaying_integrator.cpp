@@ -51,7 +51,13 @@ EnergyDecayingIntegrator::Coefficients EnergyDecayingIntegrator::Choose(const St
   Coefficients c;
   c.nodes.resize(model_.num_nodes());
   c.variables.assign(model_.num_variables(), 0.0);
+  c.elements.assign(model_.elements().size(), 0.0);
   if (alpha_inf_ == 0.0 || start.history_steps < 1) return c;
+  // Elements with a stretch of their own (beams) start with it on; the check after convergence turns it off
+  // where it would gain energy.
+  for (const auto& element : model_.elements()) {
+    if (element->history_size() > 0) c.elements[element->index()] = alpha_inf_;
+  }
   const double ratio = start.history_steps >= 2 ? 1.0 : 0.0;  // no a_prev2 before the second step
   for (int k = 0; k < model_.num_nodes(); ++k) {
     const NodeState& n = start.nodes[k];
@@ -85,6 +91,12 @@ bool EnergyDecayingIntegrator::DropEnergyGainingDissipation(const State& start, 
     const VariableStep& v = (*ctx.variables)[k];
     const double dq = v.q_f - v.q_i;
     drop_unless((dq - v.dq_lagged) * dq >= 0.0, &c->variables[k]);
+  }
+  for (const auto& element : model_.elements()) {
+    if (c->elements[element->index()] == 0) continue;
+    StepWork work;
+    element->AddStepWork(ctx, &work);
+    drop_unless(work.numerical >= 0.0, &c->elements[element->index()]);
   }
   return dropped;
 }
@@ -148,6 +160,7 @@ StepResult EnergyDecayingIntegrator::Step(const State& start, double h, State* e
           tangents += with_tangent ? 1 : 0;
           builder_.set_geometric_stiffness(with_tangent && tangents > 1);
           builder_.set_variable_dissipation(coefficients.variables);
+          builder_.set_element_dissipation(coefficients.elements);
           return builder_.Dynamic(start, unknowns, h, coefficients.nodes);
         },
         [&](const Eigen::VectorXd& increment) {
@@ -166,6 +179,7 @@ StepResult EnergyDecayingIntegrator::Step(const State& start, double h, State* e
       return result;
     }
     builder_.set_variable_dissipation(coefficients.variables);
+    builder_.set_element_dissipation(coefficients.elements);
     builder_.Dynamic(start, unknowns, h, coefficients.nodes);
     if (DropEnergyGainingDissipation(start, h, &coefficients)) continue;
     if (!ReviseModes()) break;
@@ -225,6 +239,9 @@ void EnergyDecayingIntegrator::Commit(const State& start, const Eigen::VectorXd&
     n.alpha_prev = (s.w_f - s.w_i) / h;
   }
   for (int k = 0; k < model_.num_variables(); ++k) end->q[k] = (*ctx.variables)[k].q_f;
+  for (const auto& element : model_.elements()) {
+    if (element->history_size() > 0) element->RecordHistory(ctx, &end->element_history[element->index()]);
+  }
   end->lambda = unknowns.tail(model_.num_multipliers());
   end->qdot = JointRates(model_, *end);
   end->qddot_prev2 = start.qddot_prev;
