@@ -62,7 +62,9 @@ class RigidStop : public JointStop {
 
 class ElasticStop : public JointStop {
  public:
-  ElasticStop(const StopSpec& spec, int variable, int variable_unknown, int slot);
+  /// @param error_controlled the run's steps follow the local error test, which then resolves a contact after its
+  /// first step; otherwise the contact rule (C6) bounds every contact step.
+  ElasticStop(const StopSpec& spec, int variable, int variable_unknown, int slot, bool error_controlled);
   void AddResidual(const StepContext& ctx, Eigen::Ref<Eigen::VectorXd> r,
                    Eigen::Ref<Eigen::VectorXd> magnitude) const override;
   void AddTangent(const StepContext& ctx, Eigen::Ref<Eigen::MatrixXd> J) const override;
@@ -89,9 +91,12 @@ class ElasticStop : public JointStop {
   double Approach(double q) const { return std::max(0.0, -Gap(q)); }  ///< [m], 0 when open
   // v_in of a step: the memory when in contact at its start, else the approach speed at its start.
   double ReferenceSpeed(const StepContext& ctx) const;
+  // The change of the joint's rate over the step ctx, from mean rates (C6).
+  double MeanRateChange(const StepContext& ctx) const;
 
   ContactLaw law_;
   int steps_per_contact_;
+  bool error_controlled_;
 };
 
 }  // namespace flexmbd

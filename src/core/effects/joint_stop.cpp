@@ -96,8 +96,11 @@ StopSample RigidStop::Sample(const State& state) const {
   return s;
 }
 
-ElasticStop::ElasticStop(const StopSpec& spec, int variable, int variable_unknown, int slot)
-    : JointStop(spec, variable, slot), law_(spec), steps_per_contact_(spec.steps_per_contact) {
+ElasticStop::ElasticStop(const StopSpec& spec, int variable, int variable_unknown, int slot, bool error_controlled)
+    : JointStop(spec, variable, slot),
+      law_(spec),
+      steps_per_contact_(spec.steps_per_contact),
+      error_controlled_(error_controlled) {
   unknowns_ = {variable_unknown};
 }
 
@@ -156,6 +159,18 @@ void ElasticStop::AddStepWork(const StepContext& ctx, StepWork* work) const {
   work->dissipated += (f.force - f.elastic) * (f.a_f - f.a_i);
 }
 
+double ElasticStop::MeanRateChange(const StepContext& ctx) const {
+  // The mean rates dq/h of this step and the previous one, whose difference spans (h + h_prev)/2, scaled to one
+  // step: unlike end rates they carry no alternating mode of the trapezoidal relation (docs/theory.md, (T12)),
+  // which after a stick-slip transition can be as large as the budget whatever the step.
+  const VariableStep& q = (*ctx.variables)[variable()];
+  const State& start = *ctx.start;
+  const double rate = (q.q_f - q.q_i) / ctx.h;
+  if (start.h_prev <= 0 || start.dq_prev.size() == 0) return 2.0 * (rate - q.qdot_i);
+  const double rate_before = start.dq_prev[variable()] / start.h_prev;
+  return (rate - rate_before) * ctx.h / (0.5 * (ctx.h + start.h_prev));
+}
+
 StepLimit ElasticStop::Limit(const StepContext& ctx, const State& end) const {
   StepLimit limit = JointStop::Limit(ctx, end);
   const StepForce f = Evaluate(ctx);
@@ -163,15 +178,16 @@ StepLimit ElasticStop::Limit(const StepContext& ctx, const State& end) const {
   // Resolve the impact in steps_per_contact steps: over an impact the approach speed turns from v_in to
   // -e v_in along about half a period, changing by at most pi v_in / N per step of 1/N of it.
   const double budget = kPi * f.reference_speed / steps_per_contact_;
-  const double change = std::abs(GapRate(end.qdot[variable()] - ctx.start->qdot[variable()]));
-  // The rule resolves impacts: a contact that has come to rest (approach speed below a tenth of v_in at the
-  // start of the step) is left to the local error test (T12), for there a change of rate need not shrink with
-  // the step (a joint starting to stick absorbs its slip in one step whatever its size) and a budget scaled by
-  // the impact speed could not be met. Likewise only the step that begins the contact is redone.
+  const double change = std::abs(GapRate(MeanRateChange(ctx)));
+  // Only the step that begins the contact is judged when the local error test (T12) resolves the rest of it, and
+  // with fixed steps a contact that has come to rest (approach speed below a tenth of v_in at the start of the
+  // step) is left alone: inside a contact a change of rate need not shrink with the step (a joint starting to
+  // stick absorbs its slip in one step whatever its size), and a budget scaled by the impact speed could not be met.
+  const bool begins = f.a_i <= 0;
   const double speed_i = std::abs(GapRate(ctx.start->qdot[variable()]));
-  if (f.a_i > 0 && speed_i < kRestingFraction * f.reference_speed) return limit;
+  if (!begins && (error_controlled_ || speed_i < kRestingFraction * f.reference_speed)) return limit;
   const double ratio = change / budget;
-  if (f.a_i <= 0 && ratio > kRejectRatio) limit.retry = std::min(limit.retry, kRetrySafety * ctx.h / ratio);
+  if (begins && ratio > kRejectRatio) limit.retry = std::min(limit.retry, kRetrySafety * ctx.h / ratio);
   else if (ratio > 0) limit.next = std::min(limit.next, ctx.h / ratio);
   return limit;
 }
