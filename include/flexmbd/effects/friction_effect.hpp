@@ -65,6 +65,8 @@ class FrictionEffect : public ModalEffect {
   int Direction(int mode) const { return mode == kSlidingPositive ? 1 : mode == kSlidingNegative ? -1 : 0; }
   // The regularised law's factor (1 - exp(-|v|/v0)) sign(v) at slip velocity v, and its derivative in *d_dv.
   double RegularisedFactor(double v, double* d_dv) const;
+  // True in a step that began stuck and is solved sliding: the static bound did not hold.
+  bool BreakingAway(const StepContext& ctx) const;
   // End rate of q from the scheme's relation over the step, 2 dq / h - qdot_i.
   static double EndRate(const StepContext& ctx, int variable);
 

@@ -65,6 +65,10 @@ double FrictionEffect::RegularisedFactor(double v, double* d_dv) const {
   return (1.0 - decay) * (v > 0 ? 1.0 : v < 0 ? -1.0 : 0.0);
 }
 
+bool FrictionEffect::BreakingAway(const StepContext& ctx) const {
+  return ctx.start->effects[slot()].mode == kSticking && TrialMode(ctx) != kSticking;
+}
+
 double FrictionEffect::EndRate(const StepContext& ctx, int variable) {
   const VariableStep& q = (*ctx.variables)[variable];
   return 2.0 * (q.q_f - q.q_i) / ctx.h - q.qdot_i;
@@ -156,6 +160,11 @@ int FrictionEffect::ReviseMode(const StepContext& ctx) const {
     if (std::abs(lambda) <= Bound(spec_.mu_s, normal)) return mode;
     return lambda > 0 ? kSlidingPositive : kSlidingNegative;
   }
+  // A joint breaking away (it began the step stuck and its static bound did not hold) keeps sliding for the
+  // step even if its slide reverses within it, as when it is pressed into a stiff contact: it has then come to
+  // rest again at a new position, and sticks from the next step on (Commit). Solving it stuck again would only
+  // exceed the bound again, and the step would chatter between the two modes.
+  if (BreakingAway(ctx)) return mode;
   // A slip that reverses within the step sticks in it if it was slow enough to stick; a faster one is located
   // first (Limit).
   const double slip_i = spec_.radius * std::abs((*ctx.variables)[variable_].qdot_i);
@@ -167,7 +176,7 @@ StepLimit FrictionEffect::Limit(const StepContext& ctx, const State& end) const 
   StepLimit limit;
   if (spec_.law == FrictionSpec::Law::kRegularised || TrialMode(ctx) == kSticking) return limit;
   const double v_i = ctx.start->qdot[variable_], v_f = end.qdot[variable_];
-  if (Direction(TrialMode(ctx)) * v_f < 0) {
+  if (Direction(TrialMode(ctx)) * v_f < 0 && !BreakingAway(ctx)) {
     // Redo the step to end just before the slip stops (linear in the rate), where it can stick gently.
     limit.retry = kEventLanding * ctx.h * std::abs(v_i) / (std::abs(v_i) + std::abs(v_f));
     return limit;
@@ -189,6 +198,12 @@ void FrictionEffect::Commit(const StepContext& ctx, const State& end, EffectStat
   const double speed = spec_.radius * std::abs(end.qdot[variable_]);
   effect->reference = std::max(effect->reference, speed);
   if (spec_.law == FrictionSpec::Law::kRegularised) return;
+  // A breakaway whose slide reversed within the step came to rest in it: it sticks, or slides the other way
+  // if it left faster than it could stick.
+  if (BreakingAway(ctx) && Direction(effect->mode) * end.qdot[variable_] < 0) {
+    effect->mode = speed <= kCaptureSpeeds * StickingSpeed(*effect) ? kSticking : InitialMode(end.qdot[variable_]);
+    return;
+  }
   // A joint slowing down below v0 sticks from the next step on (one speeding up is breaking away).
   const bool slowing = std::abs(end.qdot[variable_]) < std::abs(ctx.start->qdot[variable_]);
   if (effect->mode != kSticking && slowing && speed <= StickingSpeed(*effect)) effect->mode = kSticking;
