@@ -53,7 +53,7 @@ struct State {
   std::vector<EffectState> effects; ///< per effect with modes (Model::modal_effects())
   /// Per element (Model::elements()), what it keeps of past steps (Element::history_size(); mostly empty).
   std::vector<Eigen::VectorXd> element_history;
-  int history_steps = 0;            ///< accepted steps whose accelerations are in a_prev (0, 1 or 2+)
+  int history_steps = 0;            ///< accepted steps since the start or the last jump in the motion (T12)
   double h_prev = 0.0;              ///< size of the last accepted step [s]
   std::array<double, 3> recent_h = {0.0, 0.0, 0.0};  ///< sizes of the last three accepted steps, newest first [s]
   std::array<Eigen::VectorXd, 3> mean_qdot;          ///< dq / h of the last three accepted steps, newest first

@@ -160,15 +160,15 @@ void ElasticStop::AddStepWork(const StepContext& ctx, StepWork* work) const {
 }
 
 double ElasticStop::MeanRateChange(const StepContext& ctx) const {
-  // The mean rates dq/h of this step and the previous one, whose difference spans (h + h_prev)/2, scaled to one
-  // step: unlike end rates they carry no alternating mode of the trapezoidal relation (docs/theory.md, (T12)),
-  // which after a stick-slip transition can be as large as the budget whatever the step.
+  // The mean rates dq/h of this step and the previous one (State::mean_qdot), whose difference spans
+  // (h + h_prev)/2, scaled to one step: unlike end rates they carry no alternating mode of the trapezoidal
+  // relation (docs/theory.md, (T12)), which after a stick-slip transition can be as large as the budget whatever
+  // the step.
   const VariableStep& q = (*ctx.variables)[variable()];
   const State& start = *ctx.start;
   const double rate = (q.q_f - q.q_i) / ctx.h;
-  if (start.h_prev <= 0 || start.dq_prev.size() == 0) return 2.0 * (rate - q.qdot_i);
-  const double rate_before = start.dq_prev[variable()] / start.h_prev;
-  return (rate - rate_before) * ctx.h / (0.5 * (ctx.h + start.h_prev));
+  if (start.mean_qdot[0].size() == 0) return 2.0 * (rate - q.qdot_i);  // the first step
+  return (rate - start.mean_qdot[0][variable()]) * ctx.h / (0.5 * (ctx.h + start.h_prev));
 }
 
 StepLimit ElasticStop::Limit(const StepContext& ctx, const State& end) const {

@@ -150,7 +150,6 @@ void GeneralizedAlphaIntegrator::Commit(const State& start, const State& iterate
   const Eigen::VectorXd acc = OrZero(start.qacc_alg, nv), qddot = OrZero(start.qddot_prev, nv);
   end->qacc_alg.resize(nv);
   end->qddot_prev.resize(nv);
-  end->qddot_prev2 = qddot;
   for (int k = 0; k < nv; ++k) {
     end->qacc_alg[k] = c_.Acceleration<double>(dq[k], start.qdot[k], acc[k], h);
     end->qddot_prev[k] = c_.TrueAcceleration<double>(end->qacc_alg[k], acc[k], qddot[k]);
