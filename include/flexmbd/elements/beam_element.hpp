@@ -8,9 +8,10 @@
 /// integrated with order Gauss points (reduced, free of shear locking).
 ///
 /// Generalised forces are the exact gradient of V and tangents their exact derivatives, both analytic
-/// (BeamStrainField). In a dynamic step the forces are the gradient at the mid-step configuration corrected so
-/// that G . increments = V_f - V_i exactly (Gonzalez's discrete gradient), which keeps the energy identity (T6).
-/// Structural damping adds the viscous section forces mu C eps_dot (B7); over a step they dissipate exactly
+/// (BeamStrainField). In a dynamic step the section forces are C times the mean of the end strains, paired with
+/// the strain Jacobian of the mid-step configuration corrected so that it maps the increments onto the strain
+/// changes exactly: G . increments = V_f - V_i, which keeps the energy identity (T6) (B5). Structural damping
+/// adds the viscous section forces mu C eps_dot (B7); over a step they dissipate exactly
 /// mu sum_g w_g deps^T C deps / h.
 
 #include <array>
@@ -66,23 +67,22 @@ class BeamElement : public Element {
   void Evaluate(const StepContext& ctx, Field::Vector* forces, Field::Matrix* K) const;
   // Statics and the end point: the gradient at the end configuration, plus damping at the end point.
   void EvaluateAtEnd(const StepContext& ctx, Field::Vector* forces, Field::Matrix* K) const;
-  // The dynamic step: the discrete gradient (B5) and the step's damping forces (B7).
+  // The dynamic step: the discrete gradient (B5) and the step's damping forces (B7), (B13).
   void EvaluateStep(const StepContext& ctx, Field::Vector* forces, Field::Matrix* K) const;
   struct StepFields;
-  using RowVector = Eigen::Matrix<double, 1, Eigen::Dynamic, Eigen::RowMajor, 1, Field::kMaxDofs>;
-  // The step's damping forces, structural (B7) and the scheme's (B13), and what their tangent reuses.
-  struct StepDamping {
+  // The step's section forces, elastic (B5), structural damping (B7) and the scheme's (B13), and what their
+  // tangent reuses.
+  struct StepStress {
     Field::Vector forces;
-    Field::PointVectors viscous, gap;  // w C [(mu/h + alpha) de - alpha de_lagged] and de - B_mid d per point
-    std::array<Mat6, BeamShape::kMaxPoints> rate;  // d viscous / d strain_f
+    // w C [(e_i + e_f)/2 + (mu/h + alpha) de - alpha de_lagged] and de - B_mid d per point
+    Field::PointVectors stress, gap;
+    std::array<Mat6, BeamShape::kMaxPoints> rate;  // d stress / d e_f
     std::array<Field::Jacobian, BeamShape::kMaxPoints> B_mid;
-    double gap_work = 0;  // sum_g gap . viscous
+    double gap_work = 0;  // sum_g gap . stress
   };
-  StepDamping StepDampingForces(const StepContext& ctx, const StepFields& step) const;
-  void AddStepDampingTangent(const StepFields& step, const StepDamping& damping,
-                             const std::array<Field::Jacobian, BeamShape::kMaxPoints>& d_derivatives,
-                             Field::Matrix* K) const;
-  // K += d/dd [value W d / (d^T W d)] given d value / dd: the corrections of (B5) and (B7).
+  StepStress StepStresses(const StepContext& ctx, const StepFields& step) const;
+  void AddStepStressTangent(const StepFields& step, const StepStress& stress, Field::Matrix* K) const;
+  // K += d/dd [value W d / (d^T W d)] given d value / dd: the gap correction of (B5).
   void AddCorrectionDerivative(const StepFields& step, double value, const Field::Vector& derivative,
                                Field::Matrix* K) const;
 

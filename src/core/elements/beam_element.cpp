@@ -161,63 +161,18 @@ void BeamElement::EvaluateStep(const StepContext& ctx, Field::Vector* forces, Fi
   step.Wd = step.W.cwiseProduct(step.d);
   step.norm = step.d.dot(step.Wd);
   step.strain_round_off = StrainRoundOff(ctx);
-  const bool damped = damping_ > 0.0 || Alpha(ctx) > 0.0;
   step.start.emplace(shape_, start, Field::Order::kStrains);
   step.mid.emplace(shape_, mid, tangent ? Field::Order::kSecond : Field::Order::kFirst);
   step.end.emplace(shape_, end, tangent ? Field::Order::kFirst : Field::Order::kStrains);
-  const Field& at_mid = *step.mid;
-
-  Field::PointVectors elastic;
-  double stress_work = 0;
-  for (int g = 0; g < at_mid.num_points(); ++g) {
-    elastic[g] = weighted_stiffness_[g] * at_mid.strain(g);
-    stress_work += elastic[g].cwiseAbs().sum();
-  }
-  const Field::Vector G_mid = at_mid.Gradient(elastic);
-  const double V_f = Energy(*step.end), V_i = Energy(*step.start);
-  const double mismatch = (V_f - V_i) - G_mid.dot(step.d);
-  // V_f - V_i carries the round-off of the strains, about eps x / length each, times the stresses: in a stiff
-  // section at rest it dwarfs eps V, and the correction (divided by the squared increments) would turn it
-  // into forces that Newton cannot remove.
-  const double round_off = 100.0 * std::numeric_limits<double>::epsilon() * (std::abs(V_f) + std::abs(V_i)) +
-                           100.0 * step.strain_round_off * stress_work;
-  const bool corrected = std::abs(mismatch) > round_off && step.norm > 0.0;
-  *forces += G_mid;
-  if (corrected) *forces += mismatch / step.norm * step.Wd;
-  StepDamping damping;
-  if (damped) {
-    damping = StepDampingForces(ctx, step);
-    *forces += damping.forces;
-  }
+  const StepStress stress = StepStresses(ctx, step);
+  *forces += stress.forces;
   if (!tangent) return;
-  // d G_mid / d increments with the damping forces' own geometric part in the same pass (B12).
-  Field::PointVectors stress = elastic;
-  if (damped) {
-    for (int g = 0; g < at_mid.num_points(); ++g) stress[g] += damping.viscous[g];
-  }
+  // The stresses' geometric part at the middle configuration (B12), then their material part and the gap's.
   Field::Matrix K_mid = Field::Matrix::Zero(dofs, dofs);
-  at_mid.AddTangent(stress, &weighted_stiffness_, &K_mid);
-  const bool moved = step.norm > 0.0;
-  std::array<Field::Jacobian, BeamShape::kMaxPoints> d_derivatives;
-  if (damped && moved) d_derivatives = at_mid.StrainJacobianDerivatives(step.d);
-  if (corrected) {
-    // The correction (B5) differentiated exactly: d mismatch = dV_f - G_mid - (dG_mid)^T d, the last with the
-    // elastic part of K_mid only (K^T d of the damping part is sum_g D_g(d)^T viscous_g).
-    RowVector elastic_Kd = (K_mid.transpose() * step.d).transpose();
-    if (damped && moved) {
-      for (int g = 0; g < at_mid.num_points(); ++g) elastic_Kd -= damping.viscous[g].transpose() * d_derivatives[g];
-    }
-    step.to_mid.ApplyToColumns(n, &elastic_Kd);
-    Field::PointVectors elastic_end;
-    for (int g = 0; g < at_mid.num_points(); ++g) elastic_end[g] = weighted_stiffness_[g] * step.end->strain(g);
-    RowVector dV_f = step.end->Gradient(elastic_end).transpose();
-    step.to_end.ApplyToColumns(n, &dV_f);
-    const Field::Vector dmismatch = (dV_f - elastic_Kd).transpose() - G_mid;
-    AddCorrectionDerivative(step, mismatch, dmismatch, K);
-  }
+  step.mid->AddTangent(stress.stress, nullptr, &K_mid);
   step.to_mid.ApplyToColumns(n, &K_mid);
   *K += K_mid;
-  if (damped) AddStepDampingTangent(step, damping, d_derivatives, K);
+  AddStepStressTangent(step, stress, K);
 }
 
 void BeamElement::AddCorrectionDerivative(const StepFields& step, double value, const Field::Vector& derivative,
@@ -228,49 +183,55 @@ void BeamElement::AddCorrectionDerivative(const StepFields& step, double value, 
   K->diagonal() += (value / step.norm) * step.W;
 }
 
-BeamElement::StepDamping BeamElement::StepDampingForces(const StepContext& ctx, const StepFields& step) const {
-  // Section forces mu C (e_f - e_i) / h, plus the scheme's alpha C (de - de_lagged) (B13), paired with a
-  // strain-increment operator B_m = B_mid + (de - B_mid d) (W d)^T / (d^T W d), for which B_m d = de exactly
-  // (B7): the forces then do the work -sum_g w_g [mu de^T C de / h + alpha (de - de_lagged)^T C de].
+BeamElement::StepStress BeamElement::StepStresses(const StepContext& ctx, const StepFields& step) const {
+  // Section forces C (e_i + e_f) / 2, plus mu C (e_f - e_i) / h and the scheme's alpha C (de - de_lagged)
+  // (B13), paired with a strain-increment operator B_m = B_mid + (de - B_mid d) (W d)^T / (d^T W d), for which
+  // B_m d = de exactly (B5): the forces then do the work V_f - V_i - sum_g w_g [mu de^T C de / h +
+  // alpha (de - de_lagged)^T C de]. The mean of the end strains, not the strains of the middle configuration,
+  // carries the stress: the chord between two rotated positions is shorter than either, so a beam turning by
+  // theta in a step would be compressed by theta^2 / 8 in the middle (B5).
   const Field& mid = *step.mid;
   const double alpha = Alpha(ctx);
-  StepDamping damping;
+  const double viscosity = damping_ / ctx.h + alpha;
+  StepStress stress;
   for (int g = 0; g < mid.num_points(); ++g) {
     const Vec6 de = step.end->strain(g) - step.start->strain(g);
-    damping.rate[g] = (damping_ / ctx.h + alpha) * weighted_stiffness_[g];
-    damping.viscous[g] = damping.rate[g] * de;
-    if (alpha > 0) damping.viscous[g] -= alpha * (weighted_stiffness_[g] * LaggedStrainChange(ctx, g));
-    damping.B_mid[g] = mid.StrainJacobian(g);
-    damping.gap[g] = de - damping.B_mid[g] * step.d;
-    if (damping.gap[g].cwiseAbs().maxCoeff() <= 100.0 * step.strain_round_off) damping.gap[g].setZero();  // as in (B5)
-    damping.gap_work += damping.gap[g].dot(damping.viscous[g]);
+    stress.rate[g] = (0.5 + viscosity) * weighted_stiffness_[g];
+    stress.stress[g] = weighted_stiffness_[g] * (0.5 * (step.start->strain(g) + step.end->strain(g)) + viscosity * de);
+    if (alpha > 0) stress.stress[g] -= alpha * (weighted_stiffness_[g] * LaggedStrainChange(ctx, g));
+    stress.B_mid[g] = mid.StrainJacobian(g);
+    stress.gap[g] = de - stress.B_mid[g] * step.d;
+    // A gap at the round-off of the strains would be divided by the squared increments into forces that
+    // Newton cannot remove (a stiff section at rest).
+    if (stress.gap[g].cwiseAbs().maxCoeff() <= 100.0 * step.strain_round_off) stress.gap[g].setZero();
+    stress.gap_work += stress.gap[g].dot(stress.stress[g]);
   }
-  damping.forces = mid.Gradient(damping.viscous);
-  if (step.norm > 0.0) damping.forces += damping.gap_work / step.norm * step.Wd;
-  return damping;
+  stress.forces = mid.Gradient(stress.stress);
+  if (step.norm > 0.0) stress.forces += stress.gap_work / step.norm * step.Wd;
+  return stress;
 }
 
-void BeamElement::AddStepDampingTangent(const StepFields& step, const StepDamping& damping,
-                                        const std::array<Field::Jacobian, BeamShape::kMaxPoints>& d_derivatives,
-                                        Field::Matrix* K) const {
-  // The viscous forces' geometric part came with the elastic pass; here their material part B_mid^T rate B_end
-  // and the derivative of the gap term.
+void BeamElement::AddStepStressTangent(const StepFields& step, const StepStress& stress, Field::Matrix* K) const {
+  // The material part B_mid^T rate B_end and the derivative of the gap term; the geometric part came with
+  // the middle configuration's tangent.
   const int n = shape_.num_nodes(), dofs = 6 * n;
   const bool moved = step.norm > 0.0;
+  std::array<Field::Jacobian, BeamShape::kMaxPoints> d_derivatives;
+  if (moved) d_derivatives = step.mid->StrainJacobianDerivatives(step.d);
   Field::Vector dgap_work = Field::Vector::Zero(dofs);
   for (int g = 0; g < step.mid->num_points(); ++g) {
     Field::Jacobian B_end = step.end->StrainJacobian(g);
     step.to_end.ApplyToColumns(n, &B_end);
-    K->noalias() += damping.B_mid[g].transpose() * damping.rate[g] * B_end;
+    K->noalias() += stress.B_mid[g].transpose() * stress.rate[g] * B_end;
     if (!moved) continue;
-    dgap_work.noalias() += B_end.transpose() * (damping.rate[g].transpose() * damping.gap[g]);
-    if (damping.gap[g].isZero(0.0)) continue;
+    dgap_work.noalias() += B_end.transpose() * (stress.rate[g].transpose() * stress.gap[g]);
+    if (stress.gap[g].isZero(0.0)) continue;
     Field::Jacobian dgap = d_derivatives[g];
     step.to_mid.ApplyToColumns(n, &dgap);
-    dgap = B_end - damping.B_mid[g] - dgap;
-    dgap_work.noalias() += dgap.transpose() * damping.viscous[g];
+    dgap = B_end - stress.B_mid[g] - dgap;
+    dgap_work.noalias() += dgap.transpose() * stress.stress[g];
   }
-  if (moved) AddCorrectionDerivative(step, damping.gap_work, dgap_work, K);
+  if (moved) AddCorrectionDerivative(step, stress.gap_work, dgap_work, K);
 }
 
 void BeamElement::AddResidual(const StepContext& ctx, Eigen::Ref<Eigen::VectorXd> r,
