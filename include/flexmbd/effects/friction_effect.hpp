@@ -10,9 +10,14 @@
 ///             kinetic energy of the slip speed below v0; later steps have q_f = q_i and do no work). The joint
 ///             stays stuck while |lambda_t| <= mu_s rho N, else the step is redone sliding in the direction of
 ///             lambda_t
-/// A sliding joint whose slip speed at the end of a step is below v0 sticks from the next step on. The
+/// A sliding joint whose slip speed at the end of a step is below v0 sticks from the next step on. In a step in
+/// which a rigid stop of the joint is in contact the stop holds q (q_f = q_i): friction then does no work and
+/// its torque is not determined, so it applies none, and a sticking constraint would repeat the stop's; the
+/// joint sticks or slides from the next step as its speed after the contact says. The
 /// regularised law Q = -mu_k rho N (1 - exp(-|v|/v0)) sign(v) has no modes; the constant-torque law (URDF
 /// <dynamics friction>) replaces mu rho N by a fixed bound.
+
+#include <vector>
 
 #include "flexmbd/effects/modal_effect.hpp"
 #include "flexmbd/joints/joint.hpp"
@@ -43,6 +48,8 @@ class FrictionEffect : public ModalEffect {
   double StickingSpeed(const EffectState& effect) const;
   FrictionSample Sample(const State& state) const;
   int variable() const { return variable_; }
+  /// The joint's rigid stops (their slots in State::effects), which hold q while in contact.
+  void set_rigid_stop_slots(std::vector<int> slots) { rigid_stop_slots_ = std::move(slots); }
 
  private:
   // The friction force on q over a step and its derivatives.
@@ -67,6 +74,10 @@ class FrictionEffect : public ModalEffect {
   double RegularisedFactor(double v, double* d_dv) const;
   // True in a step that began stuck and is solved sliding: the static bound did not hold.
   bool BreakingAway(const StepContext& ctx) const;
+  // True in a step solved sticking: the sticking constraint is enforced.
+  bool Constrained(const StepContext& ctx) const;
+  // True when a rigid stop of the joint is in contact in these effect modes (a step's trial modes or a state's).
+  bool HeldByStop(const std::vector<EffectState>& effects) const;
   // End rate of q from the scheme's relation over the step, 2 dq / h - qdot_i.
   static double EndRate(const StepContext& ctx, int variable);
 
@@ -78,6 +89,7 @@ class FrictionEffect : public ModalEffect {
   int joint_multiplier_;       ///< first position multiplier of the joint
   int stick_multiplier_;       ///< -1 when the law has none
   int local_joint_multipliers_;  ///< local index of the joint's first position multiplier
+  std::vector<int> rigid_stop_slots_;
 };
 
 }  // namespace flexmbd

@@ -33,7 +33,8 @@ struct NodeState {
 /// The mode and memory of one effect with modes (a stop, a frictional joint).
 struct EffectState {
   int mode = 0;            ///< stops: 0 open, 1 in contact, 2 retracted; friction: 0 sliding, 1 sticking
-  double reference = 0.0;  ///< elastic stops: approach speed when the contact began [m/s]; friction: the
+  double reference = 0.0;  ///< elastic stops: approach speed when the contact began, rigid stops: the fastest
+                           ///< approach speed at an impact [m/s]; friction: the
                            ///< largest slip speed seen [m/s]
   double work = 0.0;       ///< energy this effect dissipated since t = 0 [J]
   long events = 0;         ///< contacts begun (stops), sticking episodes begun (friction)

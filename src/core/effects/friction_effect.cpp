@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "flexmbd/effects/joint_stop.hpp"
+
 namespace flexmbd {
 namespace {
 // Without a given v0 the sticking threshold is this fraction of the largest slip speed seen (issue 5) ...
@@ -65,6 +67,11 @@ double FrictionEffect::RegularisedFactor(double v, double* d_dv) const {
   return (1.0 - decay) * (v > 0 ? 1.0 : v < 0 ? -1.0 : 0.0);
 }
 
+bool FrictionEffect::HeldByStop(const std::vector<EffectState>& effects) const {
+  return std::any_of(rigid_stop_slots_.begin(), rigid_stop_slots_.end(),
+                     [&](int slot) { return effects[slot].mode == JointStop::kContact; });
+}
+
 bool FrictionEffect::BreakingAway(const StepContext& ctx) const {
   return ctx.start->effects[slot()].mode == kSticking && TrialMode(ctx) != kSticking;
 }
@@ -77,7 +84,8 @@ double FrictionEffect::EndRate(const StepContext& ctx, int variable) {
 FrictionEffect::StepForce FrictionEffect::Evaluate(const StepContext& ctx) const {
   StepForce f;
   const int mode = TrialMode(ctx);
-  if (ctx.mode == AnalysisMode::kStatic || (mode == kSticking && spec_.law != FrictionSpec::Law::kRegularised)) {
+  if (ctx.mode == AnalysisMode::kStatic || HeldByStop(*ctx.effects) ||
+      (mode == kSticking && spec_.law != FrictionSpec::Law::kRegularised)) {
     return f;
   }
   const Vec3 lambda = ctx.lambda->segment<3>(joint_multiplier_);
@@ -98,9 +106,13 @@ FrictionEffect::StepForce FrictionEffect::Evaluate(const StepContext& ctx) const
   return f;
 }
 
+bool FrictionEffect::Constrained(const StepContext& ctx) const {
+  return TrialMode(ctx) == kSticking && ctx.mode != AnalysisMode::kStatic && !HeldByStop(*ctx.effects);
+}
+
 void FrictionEffect::AddResidual(const StepContext& ctx, Eigen::Ref<Eigen::VectorXd> r,
                                 Eigen::Ref<Eigen::VectorXd> magnitude) const {
-  const bool sticking = TrialMode(ctx) == kSticking && ctx.mode != AnalysisMode::kStatic;
+  const bool sticking = Constrained(ctx);
   if (stick_multiplier_ >= 0) {
     const double lambda = (*ctx.lambda)[stick_multiplier_];
     if (sticking) {
@@ -117,7 +129,7 @@ void FrictionEffect::AddResidual(const StepContext& ctx, Eigen::Ref<Eigen::Vecto
 }
 
 void FrictionEffect::AddTangent(const StepContext& ctx, Eigen::Ref<Eigen::MatrixXd> J) const {
-  const bool sticking = TrialMode(ctx) == kSticking && ctx.mode != AnalysisMode::kStatic;
+  const bool sticking = Constrained(ctx);
   if (stick_multiplier_ >= 0) {
     if (sticking) {
       J(0, 1) += 1.0;
@@ -138,7 +150,7 @@ double FrictionEffect::StickingResidual(const StepContext& ctx) const {
 
 double FrictionEffect::StepDissipation(const StepContext& ctx) const {
   const VariableStep& q = (*ctx.variables)[variable_];
-  const bool sticking = TrialMode(ctx) == kSticking && stick_multiplier_ >= 0;
+  const bool sticking = Constrained(ctx) && stick_multiplier_ >= 0;
   const double force = sticking ? -(*ctx.lambda)[stick_multiplier_] : Evaluate(ctx).force;
   return -force * (q.q_f - q.q_i);
 }
@@ -149,7 +161,7 @@ void FrictionEffect::AddStepWork(const StepContext& ctx, StepWork* work) const {
 
 int FrictionEffect::ReviseMode(const StepContext& ctx) const {
   const int mode = TrialMode(ctx);
-  if (spec_.law == FrictionSpec::Law::kRegularised) return mode;
+  if (spec_.law == FrictionSpec::Law::kRegularised || HeldByStop(*ctx.effects)) return mode;
   if (mode == kSticking) {
     // The step that starts sticking absorbs the slip below v0 whatever force that takes (F3); the static bound
     // applies from the next step on, when the multiplier is the force holding the joint at rest.
@@ -174,7 +186,7 @@ int FrictionEffect::ReviseMode(const StepContext& ctx) const {
 
 StepLimit FrictionEffect::Limit(const StepContext& ctx, const State& end) const {
   StepLimit limit;
-  if (spec_.law == FrictionSpec::Law::kRegularised || TrialMode(ctx) == kSticking) return limit;
+  if (spec_.law == FrictionSpec::Law::kRegularised || TrialMode(ctx) == kSticking || HeldByStop(*ctx.effects)) return limit;
   const double v_i = ctx.start->qdot[variable_], v_f = end.qdot[variable_];
   if (Direction(TrialMode(ctx)) * v_f < 0 && !BreakingAway(ctx)) {
     // Redo the step to end just before the slip stops (linear in the rate), where it can stick gently.
@@ -198,15 +210,19 @@ void FrictionEffect::Commit(const StepContext& ctx, const State& end, EffectStat
   const double speed = spec_.radius * std::abs(end.qdot[variable_]);
   effect->reference = std::max(effect->reference, speed);
   if (spec_.law == FrictionSpec::Law::kRegularised) return;
-  // A breakaway whose slide reversed within the step came to rest in it: it sticks, or slides the other way
-  // if it left faster than it could stick.
-  if (BreakingAway(ctx) && Direction(effect->mode) * end.qdot[variable_] < 0) {
-    effect->mode = speed <= kCaptureSpeeds * StickingSpeed(*effect) ? kSticking : InitialMode(end.qdot[variable_]);
-    return;
+  const bool slow = speed <= kCaptureSpeeds * StickingSpeed(*effect);
+  if (HeldByStop(*ctx.effects)) {
+    // The joint moves on, or rests, as the contact left it.
+    effect->mode = slow ? kSticking : InitialMode(end.qdot[variable_]);
+  } else if (BreakingAway(ctx) && Direction(effect->mode) * end.qdot[variable_] < 0) {
+    // A breakaway whose slide reversed within the step came to rest in it: it sticks, or slides the other way
+    // if it left faster than it could stick.
+    effect->mode = slow ? kSticking : InitialMode(end.qdot[variable_]);
+  } else {
+    // A joint slowing down below v0 sticks from the next step on (one speeding up is breaking away).
+    const bool slowing = std::abs(end.qdot[variable_]) < std::abs(ctx.start->qdot[variable_]);
+    if (effect->mode != kSticking && slowing && speed <= StickingSpeed(*effect)) effect->mode = kSticking;
   }
-  // A joint slowing down below v0 sticks from the next step on (one speeding up is breaking away).
-  const bool slowing = std::abs(end.qdot[variable_]) < std::abs(ctx.start->qdot[variable_]);
-  if (effect->mode != kSticking && slowing && speed <= StickingSpeed(*effect)) effect->mode = kSticking;
   if (effect->mode == kSticking && ctx.start->effects[slot()].mode != kSticking) ++effect->events;
 }
 
@@ -223,6 +239,7 @@ FrictionSample FrictionEffect::Sample(const State& state) const {
     return s;
   }
   s.sticking = effect.mode == kSticking;
+  if (HeldByStop(state.effects)) return s;  // the stop holds the joint: no friction torque
   s.torque = s.sticking ? -state.lambda[stick_multiplier_] : -Bound(spec_.mu_k, s.normal_force) * Direction(effect.mode);
   return s;
 }

@@ -20,6 +20,11 @@ constexpr double kRestingFraction = 0.1;
 // Shrink beyond the budget's estimate when redoing, so the retry is not rejected again.
 constexpr double kRetrySafety = 0.8;
 constexpr double kPi = 3.14159265358979323846;
+// A rigid impact slower than this fraction of the fastest one the stop has seen is plastic (C2a'): a joint
+// pressed onto a stop then comes to rest on it instead of bouncing ever lower and faster (a Zeno sequence that
+// no step size resolves). A faster one returns the approach speed; if the contact still holds over the next
+// steps (the load presses the joint back within a step), the first of them that approaches brings it to rest.
+constexpr double kPlasticFraction = 0.01;
 }  // namespace
 
 JointStop::JointStop(const StopSpec& spec, int variable, int slot)
@@ -66,8 +71,40 @@ void RigidStop::AddResidual(const StepContext& ctx, Eigen::Ref<Eigen::VectorXd> 
   const double force = GeneralisedForce(lambda);
   r[0] -= force;
   magnitude[0] += std::abs(force);
-  // In a step the gap keeps its start value (zero work); at rest (static analysis) it closes.
-  r[1] += ctx.at_end() ? Gap(q.q_f) : Gap(q.q_f) - Gap(q.q_i);
+  // An impact keeps the gap at its start value (zero work: the approach speed comes back), as does a contact
+  // that goes on while the joint moves off the stop (the load turns it back within the step); one that goes on
+  // approaching the stop, or a plastic impact, ends at rest on it under the scheme's relation, absorbing the
+  // approach; at rest (static analysis) the gap closes (C2a), (C2a').
+  if (ctx.at_end()) {
+    r[1] += Gap(q.q_f);
+  } else {
+    r[1] += Gap(q.q_f) - Gap(q.q_i) - (EndsAtRest(ctx) ? 0.5 * ctx.h * GapRate(q.qdot_i) : 0.0);
+  }
+}
+
+bool RigidStop::EndsAtRest(const StepContext& ctx) const {
+  const EffectState& start = ctx.start->effects[slot()];
+  const double approach = -GapRate((*ctx.variables)[variable()].qdot_i);
+  if (TrialMode(ctx) != kContact || approach <= 0) return false;
+  return start.mode == kContact || approach < kPlasticFraction * start.reference;
+}
+
+double RigidStop::StepWorkOnVariable(const StepContext& ctx) const {
+  if (!EndsAtRest(ctx)) return 0.0;
+  const VariableStep& q = (*ctx.variables)[variable()];
+  return GeneralisedForce((*ctx.lambda)[multiplier_]) * (q.q_f - q.q_i);
+}
+
+void RigidStop::AddStepWork(const StepContext& ctx, StepWork* work) const {
+  work->dissipated -= StepWorkOnVariable(ctx);
+}
+
+void RigidStop::Commit(const StepContext& ctx, const State& end, EffectState* effect) const {
+  effect->work -= StepWorkOnVariable(ctx);
+  if (effect->mode == kContact && ctx.start->effects[slot()].mode != kContact) {
+    effect->reference = std::max(effect->reference, -GapRate(ctx.start->qdot[variable()]));
+  }
+  JointStop::Commit(ctx, end, effect);
 }
 
 void RigidStop::AddTangent(const StepContext& ctx, Eigen::Ref<Eigen::MatrixXd> J) const {
@@ -83,7 +120,9 @@ int RigidStop::ReviseMode(const StepContext& ctx) const {
   const int mode = TrialMode(ctx);
   const VariableStep& q = (*ctx.variables)[variable()];
   const double g_i = Gap(q.q_i), g_f = Gap(q.q_f);
-  if (mode == kOpen && g_f < 0 && g_i <= kEventFraction * (g_i - g_f)) return kContact;
+  // Only a closing gap begins a contact: a joint that a plastic impact left a round-off inside the stop and
+  // that moves off it stays open.
+  if (mode == kOpen && g_f < 0 && g_f < g_i && g_i <= kEventFraction * (g_i - g_f)) return kContact;
   if (mode == kContact && (*ctx.lambda)[multiplier_] < 0) return kOpen;
   return mode;
 }

@@ -87,6 +87,11 @@ void VariableEffectsBuilder::AddFriction(const std::string& where, const JointSp
       friction, element_joint, model_.variable_unknown(v), sticks ? *multiplier : -1,
       sticks ? model_.multiplier_unknown(*multiplier) : -1,
       model_.multiplier_unknown(element_joint.first_multiplier()), slot);
+  std::vector<int> rigid_stops;
+  for (const JointStop* stop : model_.stop_effects_) {
+    if (stop->variable() == v && dynamic_cast<const RigidStop*>(stop) != nullptr) rigid_stops.push_back(stop->slot());
+  }
+  element->set_rigid_stop_slots(std::move(rigid_stops));
   if (sticks) {
     model_.multiplier_names_.push_back("friction " + model_.variable_names_[v]);
     ++*multiplier;

@@ -14,6 +14,27 @@ constexpr double kTimeEpsilon = 1.0e-9;
 // A step that would leave less than this fraction of itself before t_end is stretched to reach t_end, so the
 // run never ends with a sliver step dominated by round-off.
 constexpr double kSliverFraction = 0.01;
+
+// What a user can try when the step size fell below dt_min, by the reason the last attempt failed.
+const char* WhatToTry(StepStatus status) {
+  switch (status) {
+    case StepStatus::kRejectedError:
+      return "try a larger solver.error_tol or solver.error_floor, or a smaller solver.dt_min";
+    case StepStatus::kRejectedEvent:
+      return "a stop or friction event could not be stepped across, which is a defect of flexmbd: please report "
+             "the model; meanwhile try solver.adaptive: false with a smaller solver.dt, or an elastic stop";
+    case StepStatus::kNewtonDiverged:
+      return "try a smaller solver.dt, a larger solver.tol, or check that the joints' initial positions and "
+             "drives agree";
+    case StepStatus::kSingularMatrix:
+      return "check for constraints that repeat each other (a closed loop of joints, a drive on a fixed "
+             "motion) and for bodies without mass or inertia";
+    case StepStatus::kAccepted:
+      break;
+  }
+  return "try a smaller solver.dt_min";
+}
+
 }  // namespace
 
 Simulation::Simulation(const Model& model)
@@ -36,6 +57,7 @@ void Simulation::Fail(const char* what, double h, const StepResult& last) const 
     msg << "; worst residual at " << model_.DescribeUnknown(last.newton.worst_unknown) << " (force "
         << last.newton.force_residual << " relative, constraint " << last.newton.constraint_residual << ")";
   }
+  msg << "; " << WhatToTry(last.status);
   throw SolverError(msg.str());
 }
 
