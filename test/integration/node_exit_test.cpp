@@ -115,7 +115,8 @@ TEST(NodeExit, BagOnADiskFillingUpMidRunExitsWithThreeInOneLine) {
   std::unique_ptr<NodeProcess> node;
   {
     const FileSizeLimit cap(60000);
-    node = std::make_unique<NodeProcess>("flexmbd_bag_capped", std::vector<std::string>{"_bag:=" + dir.File("capped.bag")});
+    node = std::make_unique<NodeProcess>("flexmbd_bag_capped",
+                                         std::vector<std::string>{"_bag:=" + dir.File("capped.bag")});
   }
   EXPECT_EQ(node->WaitForExit(kTimeout), std::optional<int>(kRunFailedExit)) << node->Output();
   EXPECT_EQ(FatalLines(node->Output()), 1) << node->Output();

@@ -122,29 +122,29 @@ TEST(BagSink, FirstSampleAtTimeZeroIsRecordedAtTheEarliestBagTime) {
   EXPECT_EQ(first.instantiate<sensor_msgs::JointState>()->header.stamp, ::ros::Time(0.0));
 }
 
-TEST(BagSink, UnwritablePathIsAConfigErrorNamingIt) {
+// The message of the `Error` that creating a bag at `path` throws, or a note that it threw none.
+template <typename Error>
+std::string OpenErrorOf(const std::string& path) {
   const Model model = test::DoublePendulum();
   try {
-    BagSink bag("/nonexistent_dir/run.bag", BagCompression::kNone, DefaultTopicNames(), ToBodyMarkers(model));
-    FAIL() << "no ConfigError";
-  } catch (const ConfigError& error) {
-    const std::string message = error.what();
-    EXPECT_NE(message.find("cannot open bag '/nonexistent_dir/run.bag' for writing"), std::string::npos) << message;
-    EXPECT_NE(message.find("expected a writable file path"), std::string::npos) << message;
+    BagSink bag(path, BagCompression::kNone, DefaultTopicNames(), ToBodyMarkers(model));
+  } catch (const Error& error) {
+    return error.what();
   }
+  return "(none thrown)";
+}
+
+TEST(BagSink, UnwritablePathIsAConfigErrorNamingIt) {
+  const std::string message = OpenErrorOf<ConfigError>("/nonexistent_dir/run.bag");
+  EXPECT_NE(message.find("cannot open bag '/nonexistent_dir/run.bag' for writing"), std::string::npos) << message;
+  EXPECT_NE(message.find("expected a writable file path"), std::string::npos) << message;
 }
 
 TEST(BagSink, FullDeviceIsAnOutputErrorNamingIt) {
   // /dev/full opens but takes no byte: an output failure (exit 3), not a bad path (exit 2), and no abort.
-  const Model model = test::DoublePendulum();
-  try {
-    BagSink bag("/dev/full", BagCompression::kNone, DefaultTopicNames(), ToBodyMarkers(model));
-    FAIL() << "no OutputError";
-  } catch (const OutputError& error) {
-    const std::string message = error.what();
-    EXPECT_EQ(message.find("bag '/dev/full': writing failed after 0 samples ("), 0u) << message;
-    EXPECT_NE(message.find("No space left on device"), std::string::npos) << message;
-  }
+  const std::string message = OpenErrorOf<OutputError>("/dev/full");
+  EXPECT_EQ(message.find("bag '/dev/full': writing failed after 0 samples ("), 0u) << message;
+  EXPECT_NE(message.find("No space left on device); the bag holds no sample"), std::string::npos) << message;
 }
 
 TEST(BagSink, DiskFullMidRunIsAnOutputErrorCountingTheSamplesRecorded) {

@@ -1,13 +1,13 @@
 #pragma once
 /// @file
-/// Writes samples to a SampleFanOut from a thread of its own, so that serialising, sending and recording them
-/// never hold up the solver. Samples are written in the order they are submitted, none is dropped (until a
-/// write fails, which ends the run): when the writer falls kMaxQueued samples behind, Submit waits for it. Waking the thread costs a context switch
-/// (several microseconds, as much as a small model's step), and so does taking its lock under contention:
-/// submitted samples are handed over `wake_batch` at a time, under one lock, and the thread woken for them;
-/// Wake() and Flush() hand over what was submitted since. Records travel between the threads by pointer and
-/// are recycled: once written, a record goes back to the run loop (Acquire), whose next sample reuses its
-/// vectors and strings, so a sample costs no allocation on either thread after the first few.
+/// Writes samples to a SampleFanOut from a thread of its own, so that serialising, sending and recording them never
+/// hold up the solver. Samples are written in the order they are submitted, none is dropped (until a write fails, which
+/// ends the run): when the writer falls kMaxQueued samples behind, Submit waits for it. Waking the thread costs a
+/// context switch (several microseconds, as much as a small model's step), and so does taking its lock under
+/// contention: submitted samples are handed over `wake_batch` at a time, under one lock, and the thread woken for them;
+/// Wake() and Flush() hand over what was submitted since. Records travel between the threads by pointer and are
+/// recycled: once written, a record goes back to the run loop (Acquire), whose next sample reuses its vectors and
+/// strings, so a sample costs no allocation on either thread after the first few.
 
 #include <condition_variable>
 #include <exception>
