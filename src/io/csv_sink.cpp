@@ -13,8 +13,11 @@ const char* const kStationColumns[18] = {"N",  "V2", "V3", "T",  "M2", "M3", "e1
                                          "k1", "k2", "k3", "ux", "uy", "uz", "rx", "ry", "rz"};
 }  // namespace
 
-CsvSink::CsvSink(const Model& model, const std::string& path) : out_(path) {
-  if (!out_) throw ConfigError("output.csv: cannot open '" + path + "' for writing; expected a writable file path");
+CsvSink::CsvSink(const Model& model, const std::string& path) : path_(path), file_(path), out_(&file_) {
+  if (!file_.is_open()) {
+    throw ConfigError("output.csv: cannot open '" + path + "' for writing (" + file_.error() +
+                      "); expected a writable file path");
+  }
   out_ << std::setprecision(std::numeric_limits<double>::max_digits10) << "t";
   for (const std::string& name : model.variable_names()) {
     out_ << ",joint." << name << ".position,joint." << name << ".velocity,joint." << name << ".effort";
@@ -40,6 +43,7 @@ CsvSink::CsvSink(const Model& model, const std::string& path) : out_(path) {
   }
   out_ << ",energy.kinetic,energy.potential,energy.total,energy.external_work,energy.dissipated,"
           "energy.numerical_dissipation,solver.dt,solver.iterations\n";
+  if (!out_) ThrowWriteError();
 }
 
 void CsvSink::Write(const OutputSample& s) {
@@ -64,10 +68,21 @@ void CsvSink::Write(const OutputSample& s) {
   }
   out_ << ',' << s.kinetic << ',' << s.potential << ',' << s.total() << ',' << s.external_work << ',' << s.dissipated
        << ',' << s.numerical_dissipation << ',' << s.dt << ',' << s.iterations << '\n';
+  if (!out_) ThrowWriteError();
 }
 
 void CsvSink::Close() {
-  if (out_.is_open()) out_.close();
+  // a stream already bad has thrown from Write (or from an earlier Close)
+  if (!file_.Close() && out_.good()) ThrowWriteError();
+}
+
+void CsvSink::ThrowWriteError() {
+  out_.setstate(std::ios::badbit);
+  const long rows = file_.lines_written();
+  const std::string holds = rows == 0   ? "nothing"
+                            : rows == 1 ? "its header row and no sample"
+                                        : "its header row and the first " + std::to_string(rows - 1) + " samples";
+  throw OutputError("output.csv: writing '" + path_ + "' failed (" + file_.error() + "); the file holds " + holds);
 }
 
 }  // namespace flexmbd

@@ -76,12 +76,15 @@ void AsyncSampleWriter::WriteLoop() {
     batch.swap(queue_);
     awake_ = false;
     writing_ = true;
+    const bool write = !failed_;  // after a failed write the run has ended: later samples are dropped
     lock.unlock();
     if (was_full) changed_.notify_all();  // Submit may wait for room
     std::exception_ptr error;
     try {
-      for (const RecordPtr& record : batch) outputs_->Write(record->sample, record->messages);
-      outputs_->EndBatch();
+      if (write) {
+        for (const RecordPtr& record : batch) outputs_->Write(record->sample, record->messages);
+        outputs_->EndBatch();
+      }
     } catch (...) {
       error = std::current_exception();
     }
@@ -89,7 +92,10 @@ void AsyncSampleWriter::WriteLoop() {
     recycled_.insert(recycled_.end(), std::make_move_iterator(batch.begin()), std::make_move_iterator(batch.end()));
     batch.clear();
     writing_ = false;
-    if (error) write_error_ = error;
+    if (error) {
+      write_error_ = error;
+      failed_ = true;
+    }
     awake_ = awake_ || !queue_.empty();  // samples that came meanwhile: the next batch
     changed_.notify_all();               // Flush may wait for this
   }

@@ -1,5 +1,7 @@
 #include "flexmbd/ros/sample_fan_out.hpp"
 
+#include "flexmbd/common/error.hpp"
+
 namespace flexmbd {
 namespace ros {
 
@@ -12,8 +14,13 @@ void SampleFanOut::AddLiveSink(std::unique_ptr<MessageSink> sink) { live_sinks_.
 
 void SampleFanOut::Write(const OutputSample& sample, const SampleMessages& messages) {
   for (const auto& sink : live_sinks_) sink->Write(messages);
-  if (bag_) bag_->Write(messages);
-  if (csv_) csv_->Write(sample);
+  try {
+    if (bag_) bag_->Write(messages);
+    if (csv_) csv_->Write(sample);
+  } catch (const OutputError& failure) {
+    const std::string others = CloseEachRecording();
+    throw OutputError(others.empty() ? failure.what() : failure.what() + ("; " + others));
+  }
 }
 
 void SampleFanOut::EndBatch() {
@@ -38,10 +45,24 @@ void SampleFanOut::OpenRecordings() {
 }
 
 void SampleFanOut::CloseRecordings() {
-  if (bag_) bag_->Close();
-  if (csv_) csv_->Close();
-  bag_.reset();
-  csv_.reset();
+  const std::string failures = CloseEachRecording();
+  if (!failures.empty()) throw OutputError(failures);
+}
+
+std::string SampleFanOut::CloseEachRecording() {
+  std::string failures;
+  const auto close = [&failures](auto* sink) {
+    if (!*sink) return;
+    try {
+      (*sink)->Close();
+    } catch (const OutputError& failure) {
+      failures += (failures.empty() ? "" : "; ") + std::string(failure.what());
+    }
+    sink->reset();
+  };
+  close(&bag_);
+  close(&csv_);
+  return failures;
 }
 
 }  // namespace ros

@@ -96,9 +96,12 @@ int SimulatorNode::Run() {
     }
     if (computed_to_end_ && pending_.empty()) LetSubscribersDrain();
   } catch (const SolverError& error) {
-    FlushPending();
     ROS_FATAL_STREAM("flexmbd: run failed: " << error.what());
     ROS_INFO_STREAM("flexmbd: " << simulation_->statistics().Summary(simulation_->model()));
+    status = kExitRunFailed;
+    FlushPending();  // may throw OutputError, which main reports
+  } catch (const OutputError& error) {  // the recording files are closed (SampleFanOut::Write)
+    ROS_FATAL_STREAM("flexmbd: " << error.what());
     status = kExitRunFailed;
   }
   if (StopRequested() || !::ros::ok()) {

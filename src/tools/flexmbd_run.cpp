@@ -1,7 +1,9 @@
 // Command-line runner: runs a case without roscore.
 //   flexmbd_run --urdf F --config F [--csv F] [--bag F]
 // --csv and --bag override output.csv and output.bag; the bag is the one the node writes (docs/ros.md).
-// Exit status: 0 success, 1 usage error, 2 bad input (ConfigError), 3 the run failed (SolverError).
+// Exit status (flexmbd/common/exit_status.hpp): 0 success, 1 usage error, 2 bad input (ConfigError), 3 the run
+// failed (SolverError, or an output file that cannot be written), 4 an unexpected error (a bug); every failure
+// prints one line on stderr.
 
 #include <chrono>
 #include <cstdio>
@@ -10,6 +12,7 @@
 #include <vector>
 
 #include "flexmbd/common/error.hpp"
+#include "flexmbd/common/exit_status.hpp"
 #include "flexmbd/io/config_loader.hpp"
 #include "flexmbd/ros/sample_fan_out.hpp"
 #include "flexmbd/io/text_file.hpp"
@@ -107,7 +110,7 @@ int main(int argc, char** argv) {
   Arguments args;
   if (!Parse(argc, argv, &args)) {
     std::fputs(kUsage, stderr);
-    return 1;
+    return flexmbd::kExitUsage;
   }
   try {
     flexmbd::ModelSpec spec = flexmbd::LoadModelSpec(args.urdf, args.config);
@@ -119,9 +122,9 @@ int main(int argc, char** argv) {
         RunEigen(model);
       } catch (const flexmbd::SolverError& e) {
         std::fprintf(stderr, "flexmbd_run: eigen-analysis failed: %s\n", e.what());
-        return 3;
+        return flexmbd::kExitRunFailed;
       }
-      return 0;
+      return flexmbd::kExitSuccess;
     }
     const flexmbd::ros::RecordingFiles files{model.output().bag, flexmbd::ros::BagCompression::kNone,
                                              model.output().csv};
@@ -144,10 +147,10 @@ int main(int argc, char** argv) {
         last = sample;
       });
     } catch (const flexmbd::SolverError& e) {
-      outputs.Close();
       std::fprintf(stderr, "flexmbd_run: run failed: %s\n", e.what());
       std::printf("flexmbd_run: %s\n", simulation.statistics().Summary(simulation.model()).c_str());
-      return 3;
+      outputs.Close();  // may throw OutputError, reported below
+      return flexmbd::kExitRunFailed;
     }
     outputs.Close();
     const double wall_seconds =
@@ -155,7 +158,16 @@ int main(int argc, char** argv) {
     PrintSummary(simulation, last, samples, wall_seconds);
   } catch (const flexmbd::ConfigError& e) {
     std::fprintf(stderr, "flexmbd_run: %s\n", e.what());
-    return 2;
+    return flexmbd::kExitBadInput;
+  } catch (const flexmbd::OutputError& e) {  // the recording files are closed (SampleFanOut)
+    std::fprintf(stderr, "flexmbd_run: %s\n", e.what());
+    return flexmbd::kExitRunFailed;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "flexmbd_run: internal error: %s\n", e.what());
+    return flexmbd::kExitInternalError;
+  } catch (...) {
+    std::fputs("flexmbd_run: internal error: an exception of unknown type\n", stderr);
+    return flexmbd::kExitInternalError;
   }
-  return 0;
+  return flexmbd::kExitSuccess;
 }

@@ -1,12 +1,15 @@
 // How the node ends (src/nodes/flexmbd_node.cpp): bad input -> exit 2 with one line naming the parameter or
 // file and the expected form; SIGINT in the middle of a run -> exit 0 with a readable bag holding every
-// sample so far; a solver failure -> exit 3 with a readable bag.
+// sample so far; a solver failure -> exit 3 with a readable bag; a bag or CSV write that fails (a full disk:
+// /dev/full, or a file size cap) -> exit 3 with one line naming the file, never an abort.
 
 #include <gtest/gtest.h>
 
 #include <cstdlib>
+#include <memory>
 
 #include "helpers/bag_samples.hpp"
+#include "helpers/file_size_limit.hpp"
 #include "helpers/node_process.hpp"
 #include "helpers/sample_recorder.hpp"
 #include "helpers/temp_dir.hpp"
@@ -89,6 +92,48 @@ TEST(NodeExit, SolverFailureExitsWithThreeAndClosesTheBag) {
   const Samples recorded = ReadBagSamples(bag, "flexmbd_failing");
   ASSERT_EQ(recorded.joint_states.size(), 3u);
   EXPECT_NEAR(TimeOf(recorded.joint_states[2]), 2 * kSamplePeriod, kStampResolution);
+}
+
+long FatalLines(const std::string& output) {
+  long count = 0;
+  for (size_t at = output.find("[FATAL]"); at != std::string::npos; at = output.find("[FATAL]", at + 1)) ++count;
+  return count;
+}
+
+TEST(NodeExit, BagOnAFullDeviceExitsWithThreeInOneLine) {
+  NodeProcess node("flexmbd_bag_full", {"_bag:=/dev/full"});
+  EXPECT_EQ(node.WaitForExit(kTimeout), std::optional<int>(kRunFailedExit)) << node.Output();
+  EXPECT_EQ(FatalLines(node.Output()), 1) << node.Output();
+  EXPECT_TRUE(Contains(node.Output(), "flexmbd: bag '/dev/full': writing failed after 0 samples (")) << node.Output();
+}
+
+TEST(NodeExit, BagOnADiskFillingUpMidRunExitsWithThreeInOneLine) {
+  // The 201 samples of short_double_pendulum.yaml make a bag of about 120 kB; a 60 kB cap on the node's files
+  // (RLIMIT_FSIZE, inherited by the node only) fails a write in the node's writer thread, which passes the
+  // error to the run loop.
+  const TempDir dir("flexmbd_node_exit");
+  std::unique_ptr<NodeProcess> node;
+  {
+    const FileSizeLimit cap(60000);
+    node = std::make_unique<NodeProcess>("flexmbd_bag_capped",
+                                         std::vector<std::string>{"_bag:=" + dir.File("capped.bag")});
+  }
+  EXPECT_EQ(node->WaitForExit(kTimeout), std::optional<int>(kRunFailedExit)) << node->Output();
+  EXPECT_EQ(FatalLines(node->Output()), 1) << node->Output();
+  EXPECT_TRUE(Contains(node->Output(), "flexmbd: bag '" + dir.File("capped.bag") + "': writing failed after "))
+      << node->Output();
+  EXPECT_TRUE(Contains(node->Output(), "File too large")) << node->Output();
+}
+
+TEST(NodeExit, CsvWriteFailureInTheWriterThreadExitsWithThreeInOneLine) {
+  // output.csv = /dev/full: the CSV's first 64 KiB go out from the writer thread, about 150 rows into the
+  // 201-sample run.
+  NodeProcess node("flexmbd_csv_full", {});
+  EXPECT_EQ(node.WaitForExit(kTimeout), std::optional<int>(kRunFailedExit)) << node.Output();
+  EXPECT_EQ(FatalLines(node.Output()), 1) << node.Output();
+  EXPECT_TRUE(Contains(node.Output(), "flexmbd: output.csv: writing '/dev/full' failed (No space left on device); "
+                                      "the file holds nothing"))
+      << node.Output();
 }
 
 }  // namespace

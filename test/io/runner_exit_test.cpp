@@ -5,10 +5,14 @@
 
 #include <sys/wait.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <fstream>
 #include <sstream>
 #include <string>
+
+#include "../integration/helpers/file_size_limit.hpp"
+#include "cut_csv.hpp"
 
 namespace {
 
@@ -92,6 +96,39 @@ TEST(RunnerExit, MissingArgumentsPrintUsageAndExitWithOne) {
   const RunOutcome out = RunRunner("--config");
   EXPECT_EQ(out.exit_status, 1);
   EXPECT_NE(out.stderr_text.find("usage"), std::string::npos) << out.stderr_text;
+}
+
+constexpr int kRunFailedExit = 3;
+
+// The double pendulum of config/double_pendulum/: 10 s at 100 samples/s, 1001 rows of about 600 bytes.
+std::string DoublePendulumCase() {
+  const std::string root = FLEXMBD_SOURCE_DIR;
+  return "--urdf " + root + "/config/double_pendulum/double_pendulum.urdf --config " + root +
+         "/config/double_pendulum/double_pendulum.yaml";
+}
+
+TEST(RunnerExit, CsvOnAFullDeviceExitsWithThreeInOneLineNamingTheFile) {
+  const RunOutcome out = RunRunner(DoublePendulumCase() + " --csv /dev/full");
+  EXPECT_EQ(out.exit_status, kRunFailedExit);
+  EXPECT_EQ(out.stderr_text,
+            "flexmbd_run: output.csv: writing '/dev/full' failed (No space left on device); the file holds nothing\n");
+}
+
+TEST(RunnerExit, CsvOnADiskFillingUpMidRunExitsWithThreeKeepingWholeRows) {
+  // A 100 kB cap on the runner's files (RLIMIT_FSIZE, inherited) stops the CSV at about a sixth of the run.
+  const std::string csv = testing::TempDir() + "capped_run.csv";
+  RunOutcome out;
+  {
+    const flexmbd::test::FileSizeLimit cap(100000);
+    out = RunRunner(DoublePendulumCase() + " --csv " + csv);
+  }
+  EXPECT_EQ(out.exit_status, kRunFailedExit);
+  EXPECT_EQ(std::count(out.stderr_text.begin(), out.stderr_text.end(), '\n'), 1) << out.stderr_text;
+  EXPECT_EQ(out.stderr_text.find("flexmbd_run: output.csv: writing '" + csv + "' failed (File too large); the file "
+                                 "holds its header row and the first "),
+            0u)
+      << out.stderr_text;
+  flexmbd::test::ExpectWholeRowsAsClaimed(csv, out.stderr_text);
 }
 
 }  // namespace

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 #include <rosbag/view.h>
 
+#include "../integration/helpers/file_size_limit.hpp"
 #include "flexmbd/common/error.hpp"
 #include "flexmbd/solver/simulation.hpp"
 #include "ros_test_util.hpp"
@@ -121,16 +122,54 @@ TEST(BagSink, FirstSampleAtTimeZeroIsRecordedAtTheEarliestBagTime) {
   EXPECT_EQ(first.instantiate<sensor_msgs::JointState>()->header.stamp, ::ros::Time(0.0));
 }
 
-TEST(BagSink, UnwritablePathIsAConfigErrorNamingIt) {
+// The message of the `Error` that creating a bag at `path` throws, or a note that it threw none.
+template <typename Error>
+std::string OpenErrorOf(const std::string& path) {
   const Model model = test::DoublePendulum();
   try {
-    BagSink bag("/nonexistent_dir/run.bag", BagCompression::kNone, DefaultTopicNames(), ToBodyMarkers(model));
-    FAIL() << "no ConfigError";
-  } catch (const ConfigError& error) {
-    const std::string message = error.what();
-    EXPECT_NE(message.find("cannot open bag '/nonexistent_dir/run.bag' for writing"), std::string::npos) << message;
-    EXPECT_NE(message.find("expected a writable file path"), std::string::npos) << message;
+    BagSink bag(path, BagCompression::kNone, DefaultTopicNames(), ToBodyMarkers(model));
+  } catch (const Error& error) {
+    return error.what();
   }
+  return "(none thrown)";
+}
+
+TEST(BagSink, UnwritablePathIsAConfigErrorNamingIt) {
+  const std::string message = OpenErrorOf<ConfigError>("/nonexistent_dir/run.bag");
+  EXPECT_NE(message.find("cannot open bag '/nonexistent_dir/run.bag' for writing"), std::string::npos) << message;
+  EXPECT_NE(message.find("expected a writable file path"), std::string::npos) << message;
+}
+
+TEST(BagSink, FullDeviceIsAnOutputErrorNamingIt) {
+  // /dev/full opens but takes no byte: an output failure (exit 3), not a bad path (exit 2), and no abort.
+  const std::string message = OpenErrorOf<OutputError>("/dev/full");
+  EXPECT_EQ(message.find("bag '/dev/full': writing failed after 0 samples ("), 0u) << message;
+  EXPECT_NE(message.find("No space left on device); the bag holds no sample"), std::string::npos) << message;
+}
+
+TEST(BagSink, DiskFullMidRunIsAnOutputErrorCountingTheSamplesRecorded) {
+  // A 100 kB cap (RLIMIT_FSIZE) against the double pendulum's samples written over and over: Write throws,
+  // and the sink (and its rosbag::Bag, whose close would throw again) is destroyed without terminating.
+  const std::string path = testing::TempDir() + "bag_sink_capped.bag";
+  const std::vector<SampleMessages> samples = RecordDoublePendulum(path, BagCompression::kNone);
+  const Model model = test::DoublePendulum();
+  std::string message;
+  long recorded = 0;
+  {
+    const test::FileSizeLimit cap(100000);
+    BagSink bag(path, BagCompression::kNone, DefaultTopicNames(), ToBodyMarkers(model));
+    try {
+      for (; recorded < 100000; ++recorded) bag.Write(samples[recorded % samples.size()]);
+    } catch (const OutputError& error) {
+      message = error.what();
+    }
+    EXPECT_NO_THROW(bag.Close());  // the failure was reported once
+  }
+  ASSERT_LT(recorded, 100000) << "the cap did not stop the bag";
+  EXPECT_EQ(message.find("bag '" + path + "': writing failed after " + std::to_string(recorded) + " samples ("), 0u)
+      << message;
+  EXPECT_NE(message.find("File too large"), std::string::npos) << message;
+  EXPECT_NE(message.find("'rosbag reindex " + path + "'"), std::string::npos) << message;
 }
 
 TEST(BagSink, ParsesTheCompressionNames) {

@@ -1,6 +1,7 @@
 #pragma once
 /// @file
-/// The three kinds of error (DESIGN.md): bad input, numerical failure, broken internal invariant.
+/// The kinds of error (DESIGN.md): bad input, numerical failure, an output file that cannot be written,
+/// broken internal invariant.
 
 #include <stdexcept>
 #include <string>
@@ -19,6 +20,13 @@ class ConfigError : public std::runtime_error {
 class SolverError : public std::runtime_error {
  public:
   explicit SolverError(const std::string& message) : std::runtime_error(message) {}
+};
+
+/// An output file that cannot be written during a run (disk full, file size limit, I/O error); the run ends.
+/// The message names the file, says why, and what the file holds.
+class OutputError : public std::runtime_error {
+ public:
+  explicit OutputError(const std::string& message) : std::runtime_error(message) {}
 };
 
 namespace internal {

@@ -10,10 +10,14 @@
 /// .{ux,uy,uz} (displacement, W) and .{rx,ry,rz} (rotation vector of R_W(s) R_W0(s)^T, W), then
 /// energy.kinetic/.potential/.total/.external_work/.dissipated/.numerical_dissipation, solver.dt,
 /// solver.iterations.
+///
+/// Every write is checked: a failed one throws OutputError, and the file keeps its whole rows (the row being
+/// written is cut off), so it stays readable up to the failure.
 
-#include <fstream>
+#include <ostream>
 #include <string>
 
+#include "flexmbd/io/whole_line_file_buffer.hpp"
 #include "flexmbd/solver/output_sample.hpp"
 
 namespace flexmbd {
@@ -25,13 +29,20 @@ class CsvSink {
   /// Opens `path` for writing; throws ConfigError naming the path if it cannot.
   CsvSink(const Model& model, const std::string& path);
 
+  /// Appends the row of `sample`. Throws OutputError naming the file, the reason and the samples it holds
+  /// if writing fails; the sink writes nothing afterwards.
   void Write(const OutputSample& sample);
 
-  /// Flushes and closes; also done by the destructor.
+  /// Writes what is buffered and closes the file; throws OutputError as Write does, unless Write already
+  /// did. Also done by the destructor, which cannot report a failure.
   void Close();
 
  private:
-  std::ofstream out_;
+  [[noreturn]] void ThrowWriteError();
+
+  std::string path_;
+  WholeLineFileBuffer file_;
+  std::ostream out_;
 };
 
 }  // namespace flexmbd

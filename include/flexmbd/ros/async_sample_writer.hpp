@@ -1,13 +1,13 @@
 #pragma once
 /// @file
-/// Writes samples to a SampleFanOut from a thread of its own, so that serialising, sending and recording them
-/// never hold up the solver. Samples are written in the order they are submitted, none is dropped: when the
-/// writer falls kMaxQueued samples behind, Submit waits for it. Waking the thread costs a context switch
-/// (several microseconds, as much as a small model's step), and so does taking its lock under contention:
-/// submitted samples are handed over `wake_batch` at a time, under one lock, and the thread woken for them;
-/// Wake() and Flush() hand over what was submitted since. Records travel between the threads by pointer and
-/// are recycled: once written, a record goes back to the run loop (Acquire), whose next sample reuses its
-/// vectors and strings, so a sample costs no allocation on either thread after the first few.
+/// Writes samples to a SampleFanOut from a thread of its own, so that serialising, sending and recording them never
+/// hold up the solver. Samples are written in the order they are submitted, none is dropped (until a write fails, which
+/// ends the run): when the writer falls kMaxQueued samples behind, Submit waits for it. Waking the thread costs a
+/// context switch (several microseconds, as much as a small model's step), and so does taking its lock under
+/// contention: submitted samples are handed over `wake_batch` at a time, under one lock, and the thread woken for them;
+/// Wake() and Flush() hand over what was submitted since. Records travel between the threads by pointer and are
+/// recycled: once written, a record goes back to the run loop (Acquire), whose next sample reuses its vectors and
+/// strings, so a sample costs no allocation on either thread after the first few.
 
 #include <condition_variable>
 #include <exception>
@@ -52,7 +52,8 @@ class AsyncSampleWriter {
 
   /// Waits until every submitted sample is written (each batch the thread takes ends with
   /// SampleFanOut::EndBatch); afterwards the caller may use the fan-out directly
-  /// until the next Submit. Rethrows an exception the fan-out raised while writing.
+  /// until the next Submit. Rethrows an exception the fan-out raised while writing (as Submit and Wake do),
+  /// once: the writer drops every sample after a failed write, and a later Flush waits for it to be idle.
   void Flush();
 
  private:
@@ -70,7 +71,8 @@ class AsyncSampleWriter {
   bool writing_ = false;  ///< the thread holds records it took off the queue
   bool awake_ = false;    ///< the thread writes until the queue is empty
   bool stopping_ = false;
-  std::exception_ptr write_error_;
+  bool failed_ = false;              ///< a write failed: later samples are dropped
+  std::exception_ptr write_error_;  ///< the failure, until it is rethrown to the run loop
   std::thread thread_;  ///< last: starts once the members above exist
 };
 

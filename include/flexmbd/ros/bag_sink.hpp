@@ -4,9 +4,14 @@
 /// sample topics of TopicNames, each message recorded at its header stamp (~contacts, ~friction and
 /// ~beam_loads only for a model that has stops, frictional joints or beam stations), plus the markers once at
 /// the start.
+///
+/// Every write is checked: a failed one (disk full, file size limit) throws OutputError. The bag cannot be
+/// closed then (closing writes its index, which fails as well), so it is left unindexed: `rosbag reindex`
+/// recovers the samples in its complete chunks (768 KiB each).
 
 #include <rosbag/bag.h>
 
+#include <memory>
 #include <optional>
 #include <string>
 
@@ -28,19 +33,32 @@ std::optional<BagCompression> ParseBagCompression(const std::string& text);
 class BagSink : public MessageSink {
  public:
   /// Creates (or truncates) the bag at `path` and records `markers`. Throws ConfigError naming the path if
-  /// it cannot be opened.
+  /// it cannot be opened, OutputError if it cannot be written.
   BagSink(const std::string& path, BagCompression compression, const TopicNames& topics,
           const visualization_msgs::MarkerArray& markers);
+  /// Closes the bag as Close() does; a failure then goes unreported (call Close() to learn of it).
   ~BagSink() override;
 
+  /// Records the messages of one sample. Throws OutputError naming the file, the reason and the samples
+  /// recorded if writing fails; the sink records nothing afterwards.
   void Write(const SampleMessages& messages) override;
 
-  /// Writes the index and closes the file, so `rosbag info` reads it; also done by the destructor.
+  /// Writes the index and closes the file, so `rosbag info` reads it. Throws OutputError if that fails.
   void Close() override;
 
  private:
-  rosbag::Bag bag_;
+  void WriteSample(const SampleMessages& messages);
+  /// Runs `operation` on the bag; gives the bag up (Abandon) if it fails.
+  template <typename Operation>
+  void Checked(const char* action, Operation operation);
+  /// Gives the bag up after `action` failed with `error` (and errno `system_error`, 0 if none): throws
+  /// OutputError.
+  [[noreturn]] void Abandon(const std::string& action, const std::exception& error, int system_error);
+
+  std::string path_;
+  std::unique_ptr<rosbag::Bag> bag_;  ///< null once closed or abandoned
   TopicNames topics_;
+  long samples_ = 0;  ///< samples recorded
 };
 
 }  // namespace ros

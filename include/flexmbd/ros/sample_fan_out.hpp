@@ -24,14 +24,16 @@ struct RecordingFiles {
 class SampleFanOut {
  public:
   /// Opens the recording files (the node and the runner share this, so they write the same bag and CSV).
-  /// `model` must outlive the fan-out. Throws ConfigError naming a path that cannot be opened.
+  /// `model` must outlive the fan-out. Throws ConfigError naming a path that cannot be opened, OutputError
+  /// if a file cannot be written.
   SampleFanOut(const Model& model, RecordingFiles files, TopicNames topics);
 
   /// Adds a sink that lives across runs (the topics).
   void AddLiveSink(std::unique_ptr<MessageSink> sink);
 
   /// Writes `sample` to the CSV and `messages` (its conversion) to the message sinks; `messages` may be empty
-  /// when there is none (no bag, no topics).
+  /// when there is none (no bag, no topics). A recording that cannot be written ends the run: every recording
+  /// file is closed (the others complete) and OutputError says what the failed one holds.
   void Write(const OutputSample& sample, const SampleMessages& messages);
 
   /// Ends a batch of Writes (MessageSink::EndBatch): what the live sinks held back goes out.
@@ -41,13 +43,17 @@ class SampleFanOut {
   void RestartRecordings();
 
   /// Closes the recording files: they are complete and readable afterwards; later samples are not recorded.
+  /// Throws OutputError, after closing every file, if one could not be completed.
   void CloseRecordings();
 
-  /// Closes every sink.
+  /// Closes every sink; throws as CloseRecordings does.
   void Close();
 
  private:
   void OpenRecordings();
+  /// Closes every recording file, even when one fails; returns the failures' messages ("; "-separated, empty
+  /// if none).
+  std::string CloseEachRecording();
 
   const Model& model_;
   RecordingFiles files_;

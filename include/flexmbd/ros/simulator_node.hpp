@@ -21,6 +21,7 @@
 #include <string>
 #include <vector>
 
+#include "flexmbd/common/exit_status.hpp"
 #include "flexmbd/ros/async_sample_writer.hpp"
 #include "flexmbd/ros/node_case.hpp"
 #include "flexmbd/ros/pacer.hpp"
@@ -31,19 +32,15 @@
 namespace flexmbd {
 namespace ros {
 
-/// Exit statuses of the node, as the runner's.
-constexpr int kExitSuccess = 0;
-constexpr int kExitBadInput = 2;
-constexpr int kExitRunFailed = 3;
-
 class SimulatorNode {
  public:
-  /// Loads the case and opens the outputs. Throws ConfigError (bad URDF, parameter or output path).
+  /// Loads the case and opens the outputs. Throws ConfigError (bad URDF, parameter or output path), or
+  /// OutputError (an output file that cannot be written).
   SimulatorNode(::ros::NodeHandle node, ::ros::NodeHandle private_node);
 
   /// Runs the case until it ends (or, with ~keep_alive, until shutdown), or until SIGINT / SIGTERM. The
-  /// recording files are closed on every way out and hold every sample computed. Returns kExitSuccess, or
-  /// kExitRunFailed after a SolverError.
+  /// recording files are closed on every way out and hold every sample computed, or after a failed write
+  /// what they took. Returns kExitSuccess, or kExitRunFailed after a SolverError or an OutputError.
   int Run();
 
  private:
