@@ -87,6 +87,9 @@ std::string Model::DescribeUnknown(int unknown) const {
 }
 
 Model BuildModel(const ModelSpec& spec) {
+  if (spec.bodies.empty() && spec.beams.empty()) {
+    throw ConfigError(Prefix(spec) + "nothing can move: the model has no body and no beam; expected at least one");
+  }
   const SolverSpec& solver = spec.solver;
   if (solver.integrator == SolverSpec::Integrator::kEnergyDecaying &&
       !(solver.rho_inf >= kMinRhoInf && solver.rho_inf <= 1.0)) {
