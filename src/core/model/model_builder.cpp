@@ -7,6 +7,7 @@
 #include "flexmbd/elements/applied_load.hpp"
 #include "flexmbd/model/beam_layout.hpp"
 #include "flexmbd/model/model.hpp"
+#include "flexmbd/model/output_size.hpp"
 #include "flexmbd/solver/energy_decaying_integrator.hpp"
 #include "flexmbd/solver/step_context_builder.hpp"
 #include "variable_effects_builder.hpp"
@@ -318,6 +319,7 @@ Model BuildModel(const ModelSpec& spec) {
       throw ConfigError(msg.str());
     }
   }
+  CheckOutputSize(model);
   return model;
 }
 
