@@ -4,25 +4,16 @@
 #include "flexmbd/io/initial_placement.hpp"
 #include "flexmbd/io/text_file.hpp"
 #include "flexmbd/io/urdf_reader.hpp"
+#include "flexmbd/io/yaml_document.hpp"
 #include "flexmbd/io/yaml_overlay.hpp"
 #include "flexmbd/io/yaml_sections.hpp"
 
 namespace flexmbd {
-namespace {
-YAML::Node ParseYaml(const std::string& text, const std::string& name) {
-  try {
-    return YAML::Load(text);
-  } catch (const YAML::ParserException& error) {
-    throw ConfigError(name + ": line " + std::to_string(error.mark.line + 1) + ", column " +
-                      std::to_string(error.mark.column + 1) + ": not valid YAML (" + error.msg + ")");
-  }
-}
-}  // namespace
 
 ModelSpec LoadModelSpec(const std::string& urdf_path, const std::string& yaml_path) {
   const std::string urdf_xml = ReadTextFile(urdf_path, "URDF file");
   const YAML::Node params =
-      yaml_path.empty() ? YAML::Node() : ParseYaml(ReadTextFile(yaml_path, "YAML file"), yaml_path);
+      yaml_path.empty() ? YAML::Node() : io::ParseYamlDocument(ReadTextFile(yaml_path, "YAML file"), yaml_path);
   return LoadModelSpecFromStrings(urdf_xml, urdf_path, params, yaml_path);
 }
 

@@ -2,8 +2,8 @@
 
 #include <Eigen/Geometry>
 #include <map>
-#include <set>
 #include <string>
+#include <vector>
 
 #include "flexmbd/common/error.hpp"
 #include "flexmbd/joints/joint_kinematics.hpp"
@@ -40,24 +40,37 @@ class Placer {
     const BodyMount* free;
   };
 
-  FrameMotion Place(const std::string& body) {
-    if (body.empty()) return FrameMotion{};
-    const auto placed = placed_.find(body);
-    if (placed != placed_.end()) return placed->second;
-    // each body is placed once, from exactly one mount: a second visit before placement would be a loop
-    const bool first_visit = visited_.insert(body).second;
-    FLEXMBD_DEMAND(first_visit && mount_of_.count(body) == 1);
+  // Places `body` and the unplaced bodies it hangs from, top down. Iterative: a chain may be tens of
+  // thousands of bodies deep.
+  void Place(const std::string& body) {
+    std::vector<std::string> unplaced;  // from `body` up to a placed body or the ground
+    for (std::string link = body; !link.empty() && !placed_.count(link); link = ParentOf(link)) {
+      // each body hangs from exactly one mount, so the walk up reaches the ground before it repeats a body
+      FLEXMBD_DEMAND(unplaced.size() < mount_of_.size());
+      unplaced.push_back(link);
+    }
+    for (auto link = unplaced.rbegin(); link != unplaced.rend(); ++link) PlaceOnParent(*link);
+  }
+
+  std::string ParentOf(const std::string& body) const {
     const Mount& mount = mount_of_.at(body);
-    const FrameMotion motion = mount.joint
-                                   ? ChildMotion(Place(mount.joint->parent), *mount.joint)
-                                   : CarryRigidly(Place(mount.free->parent), mount.free->R_PB, mount.free->p_PB);
+    return mount.joint ? mount.joint->parent : mount.free->parent;
+  }
+
+  // @pre the parent of `body` is placed (or is the ground)
+  void PlaceOnParent(const std::string& body) {
+    const Mount& mount = mount_of_.at(body);
+    const std::string parent = ParentOf(body);
+    const FrameMotion parent_motion = parent.empty() ? FrameMotion{} : placed_.at(parent);
+    const FrameMotion motion = mount.joint ? ChildMotion(parent_motion, *mount.joint)
+                                           : CarryRigidly(parent_motion, mount.free->R_PB, mount.free->p_PB);
     const auto rigid = body_index_.find(body);
     if (rigid != body_index_.end()) {
       SetPose(motion, &spec_->bodies[rigid->second]);
     } else {
       SetPose(motion, &spec_->beams[beam_index_.at(body)]);
     }
-    return placed_[body] = motion;
+    placed_[body] = motion;
   }
 
   // Bodies and beams carry the same initial pose and velocity fields of their link frame.
@@ -73,7 +86,6 @@ class Placer {
   std::map<std::string, size_t> body_index_, beam_index_;
   std::map<std::string, Mount> mount_of_;
   std::map<std::string, FrameMotion> placed_;
-  std::set<std::string> visited_;
 };
 }  // namespace
 

@@ -16,6 +16,27 @@ std::string FormatNumber(double value) {
   return buffer;
 }
 
+std::string QuoteForMessage(const std::string& text) {
+  std::string quoted;
+  for (const char c : text) {
+    const unsigned char code = static_cast<unsigned char>(c);
+    if (c == '\n') {
+      quoted += "\\n";
+    } else if (c == '\r') {
+      quoted += "\\r";
+    } else if (c == '\t') {
+      quoted += "\\t";
+    } else if (code < 0x20 || code == 0x7f) {
+      char escape[5];
+      std::snprintf(escape, sizeof(escape), "\\x%02x", code);
+      quoted += escape;
+    } else {
+      quoted += c;
+    }
+  }
+  return quoted;
+}
+
 std::string FormatVector(const Vec3& value) {
   return "[" + FormatNumber(value.x()) + ", " + FormatNumber(value.y()) + ", " + FormatNumber(value.z()) + "]";
 }

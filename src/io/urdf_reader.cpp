@@ -11,6 +11,7 @@
 #include "flexmbd/common/error.hpp"
 #include "flexmbd/io/joint_axes.hpp"
 #include "flexmbd/io/message_text.hpp"
+#include "flexmbd/io/urdf_tree.hpp"
 #include "flexmbd/joints/joint_kinematics.hpp"
 
 namespace flexmbd {
@@ -80,7 +81,8 @@ class UrdfWalker {
   UrdfModel Walk() {
     const urdf::Link& root = *urdf_.getRoot();
     AddRoot(root);
-    AddSubtree(root);
+    AddTree(root);
+    if (model_.spec.bodies.empty() && model_.spec.beams.empty()) FailNothingMoves(root);
     return std::move(model_);
   }
 
@@ -100,12 +102,31 @@ class UrdfWalker {
     frames_[root.name] = LinkFrame{root.name};
   }
 
-  void AddSubtree(const urdf::Link& link) {
-    for (const urdf::JointSharedPtr& joint : link.child_joints) {
-      const urdf::Link& child = *urdf_.getLink(joint->child_link_name);
-      AddJoint(*joint, child, frames_.at(link.name));
-      AddSubtree(child);
+  // Depth first, each link's joints in URDF order (the order of the joints, and of their CSV columns), with a
+  // stack of joints rather than recursion: a chain may be tens of thousands of links deep.
+  void AddTree(const urdf::Link& root) {
+    std::vector<const urdf::Joint*> to_add;
+    auto push_children = [&to_add](const urdf::Link& link) {
+      for (auto joint = link.child_joints.rbegin(); joint != link.child_joints.rend(); ++joint) {
+        to_add.push_back(joint->get());
+      }
+    };
+    push_children(root);
+    while (!to_add.empty()) {
+      const urdf::Joint& joint = *to_add.back();
+      to_add.pop_back();
+      const urdf::Link& child = *urdf_.links_.at(joint.child_link_name);
+      AddJoint(joint, child, frames_.at(joint.parent_link_name));
+      push_children(child);
     }
+  }
+
+  // A model with no body and no beam has no unknowns: the solver would have nothing to solve.
+  [[noreturn]] void FailNothingMoves(const urdf::Link& root) const {
+    Fail("nothing can move: root link '" + root.name + "' is the ground and " +
+         (urdf_.links_.size() == 1 ? std::string("there is no other link")
+                                   : "every other link is fixed to it as a frame (no <inertial>)") +
+         "; expected at least one link with <inertial> (or named under beams:) below a joint");
   }
 
   void AddJoint(const urdf::Joint& joint, const urdf::Link& child, const LinkFrame& parent) {
@@ -252,7 +273,8 @@ class UrdfWalker {
 
 UrdfModel ReadUrdf(const std::string& urdf_xml, const std::string& urdf_name,
                    const std::set<std::string>& beam_links) {
-  const urdf::ModelInterfaceSharedPtr urdf = ParseUrdf(urdf_xml, urdf_name);
+  const UrdfTreeOwner urdf(ParseUrdf(urdf_xml, urdf_name));
+  CheckUrdfTree(*urdf, urdf_name);
   for (const std::string& beam : beam_links) {
     if (!urdf->getLink(beam)) {
       std::vector<std::string> links;

@@ -11,7 +11,7 @@ const std::vector<std::string> kSolverKeys = {"analysis",       "integrator", "r
 const std::vector<std::string> kEigenKeys = {"modes", "static_first", "method", "shift_hz", "sweep"};
 const std::vector<std::string> kSweepKeys = {"velocity_scale"};
 const std::vector<std::string> kErrorFloorKeys = {"position", "rotation", "joint"};
-const std::vector<std::string> kOutputKeys = {"rate_hz", "csv", "bag", "beam_stations"};
+const std::vector<std::string> kOutputKeys = {"rate_hz", "csv", "bag", "beam_stations", "allow_large_output"};
 
 // "0.01", or "0.01 (default)" if the key was not given.
 std::string ValueText(const Field& map, const std::string& key, double value) {
@@ -111,6 +111,7 @@ void ReadOutput(const Field& output, OutputSpec* spec) {
                 &spec->rate_hz);
   OverlayString(output, "csv", "a file path (\"\" for none)", &spec->csv);
   OverlayString(output, "bag", "a file path (\"\" for none)", &spec->bag);
+  OverlayBool(output, "allow_large_output", &spec->allow_large_output);
 }
 
 }  // namespace io

@@ -48,7 +48,9 @@ NodeCase LoadNodeCase(const ::ros::NodeHandle& node, const ::ros::NodeHandle& pr
                       "(flexmbd_run prints eigen-analyses)");
   }
   if (settings.rate_hz) spec.output.rate_hz = *settings.rate_hz;
-  RecordingFiles files{settings.bag.value_or(spec.output.bag), settings.bag_compression, spec.output.csv};
+  // the node's ~bag counts in BuildModel's bound on the output size
+  if (settings.bag) spec.output.bag = *settings.bag;
+  RecordingFiles files{spec.output.bag, settings.bag_compression, spec.output.csv};
   Model model = BuildModel(spec);
   std::string world_frame = WorldFrameName(urdf.xml, model);
   return NodeCase{std::move(settings), std::move(model), std::move(world_frame), std::move(files)};

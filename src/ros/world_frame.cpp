@@ -4,14 +4,16 @@
 
 #include <algorithm>
 
+#include "flexmbd/io/urdf_tree.hpp"
+
 namespace flexmbd {
 namespace ros {
 
 std::string WorldFrameName(const std::string& urdf_xml, const Model& model) {
   const std::string kWorld = "world";
-  const urdf::ModelInterfaceSharedPtr urdf = urdf::parseURDF(urdf_xml);
+  const io::UrdfTreeOwner urdf(urdf::parseURDF(urdf_xml));
   if (!urdf || !urdf->getRoot()) return kWorld;
-  const std::string& root = urdf->getRoot()->name;
+  const std::string root = urdf->getRoot()->name;
   const bool root_is_body = std::any_of(model.bodies().begin(), model.bodies().end(),
                                         [&root](const BodyInfo& body) { return body.name == root; });
   return root_is_body ? kWorld : root;

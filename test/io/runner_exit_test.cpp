@@ -36,8 +36,8 @@ RunOutcome RunRunner(const std::string& arguments) {
 
 std::string Data(const std::string& relative) { return std::string(FLEXMBD_SOURCE_DIR) + "/test/data/" + relative; }
 
-// Writes a YAML file for one test and returns its path.
-std::string WriteYaml(const std::string& name, const std::string& text) {
+// Writes a file (YAML or URDF) for one test and returns its path.
+std::string WriteFile(const std::string& name, const std::string& text) {
   const std::string path = testing::TempDir() + name;
   std::ofstream(path) << text;
   return path;
@@ -65,31 +65,70 @@ TEST(RunnerExit, NegativeMassExitsWithTwo) {
 }
 
 TEST(RunnerExit, UnknownJointNameExitsWithTwoAndListsJoints) {
-  const std::string yaml = WriteYaml("unknown_joint.yaml", "joints:\n  B7:\n    damper: {c: 1.0}\n");
+  const std::string yaml = WriteFile("unknown_joint.yaml", "joints:\n  B7:\n    damper: {c: 1.0}\n");
   const RunOutcome out = RunRunner("--urdf " + Data("urdf/pendulum.urdf") + " --config " + yaml);
   EXPECT_EQ(out.exit_status, kBadInputExit);
   EXPECT_NE(out.stderr_text.find("joints.B7"), std::string::npos) << out.stderr_text;
 }
 
 TEST(RunnerExit, NegativeStiffnessExitsWithTwoAndNamesField) {
-  const std::string yaml = WriteYaml("negative_k.yaml", "joints:\n  B1:\n    spring: {k: -3.0}\n");
+  const std::string yaml = WriteFile("negative_k.yaml", "joints:\n  B1:\n    spring: {k: -3.0}\n");
   const RunOutcome out = RunRunner("--urdf " + Data("urdf/pendulum.urdf") + " --config " + yaml);
   EXPECT_EQ(out.exit_status, kBadInputExit);
   EXPECT_NE(out.stderr_text.find("joints.B1.spring.k"), std::string::npos) << out.stderr_text;
 }
 
 TEST(RunnerExit, UnknownKeyExitsWithTwoAndSuggests) {
-  const std::string yaml = WriteYaml("unknown_key.yaml", "solver: {dtt: 0.01}\n");
+  const std::string yaml = WriteFile("unknown_key.yaml", "solver: {dtt: 0.01}\n");
   const RunOutcome out = RunRunner("--urdf " + Data("urdf/pendulum.urdf") + " --config " + yaml);
   EXPECT_EQ(out.exit_status, kBadInputExit);
   EXPECT_NE(out.stderr_text.find("did you mean 'dt'"), std::string::npos) << out.stderr_text;
 }
 
 TEST(RunnerExit, RhoInfBelowSchemeRangeExitsWithTwo) {
-  const std::string yaml = WriteYaml("low_rho.yaml", "solver: {rho_inf: 0.2}\n");
+  const std::string yaml = WriteFile("low_rho.yaml", "solver: {rho_inf: 0.2}\n");
   const RunOutcome out = RunRunner("--urdf " + Data("urdf/pendulum.urdf") + " --config " + yaml);
   EXPECT_EQ(out.exit_status, kBadInputExit);
   EXPECT_NE(out.stderr_text.find("solver.rho_inf: 0.2"), std::string::npos) << out.stderr_text;
+}
+
+TEST(RunnerExit, DirectoryAsConfigExitsWithTwo) {
+  const RunOutcome out = RunRunner("--urdf " + Data("urdf/pendulum.urdf") + " --config " + Data("yaml"));
+  EXPECT_EQ(out.exit_status, kBadInputExit);
+  EXPECT_NE(out.stderr_text.find("it is a directory; expected a text file"), std::string::npos) << out.stderr_text;
+}
+
+TEST(RunnerExit, JointCycleExitsWithTwoAndNamesTheJoints) {
+  const std::string inertial =
+      "<inertial><mass value=\"1\"/><inertia ixx=\"1\" ixy=\"0\" ixz=\"0\" iyy=\"1\" iyz=\"0\" izz=\"1\"/></inertial>";
+  const std::string urdf = WriteFile(
+      "cycle.urdf", "<robot name=\"r\"><link name=\"world\"/><link name=\"a\">" + inertial +
+                        "</link><link name=\"b\">" + inertial + "</link><link name=\"c\">" + inertial +
+                        "</link><joint name=\"j1\" type=\"continuous\"><parent link=\"world\"/><child link=\"a\"/>"
+                        "</joint><joint name=\"j2\" type=\"continuous\"><parent link=\"b\"/><child link=\"c\"/>"
+                        "</joint><joint name=\"j3\" type=\"continuous\"><parent link=\"c\"/><child link=\"b\"/>"
+                        "</joint></robot>");
+  const RunOutcome out = RunRunner("--urdf " + urdf + " --config \"\"");
+  EXPECT_EQ(out.exit_status, kBadInputExit);
+  EXPECT_NE(out.stderr_text.find("cycle.urdf: joints 'j2', 'j3' form a cycle"), std::string::npos) << out.stderr_text;
+}
+
+TEST(RunnerExit, NothingToMoveExitsWithTwo) {
+  const std::string urdf = WriteFile("world_only.urdf", "<robot name=\"r\"><link name=\"world\"/></robot>");
+  const RunOutcome out = RunRunner("--urdf " + urdf + " --config \"\"");
+  EXPECT_EQ(out.exit_status, kBadInputExit);
+  EXPECT_NE(out.stderr_text.find("world_only.urdf: nothing can move"), std::string::npos) << out.stderr_text;
+}
+
+TEST(RunnerExit, UnboundedOutputExitsWithTwoBeforeWriting) {
+  const std::string csv = testing::TempDir() + "unbounded.csv";
+  std::remove(csv.c_str());
+  const std::string yaml = WriteFile("unbounded.yaml", "solver: {t_end: 1.0e300}\noutput: {rate_hz: 1.0e6}\n");
+  const RunOutcome out = RunRunner("--urdf " + Data("urdf/pendulum.urdf") + " --config " + yaml + " --csv " + csv);
+  EXPECT_EQ(out.exit_status, kBadInputExit);
+  EXPECT_NE(out.stderr_text.find("output.rate_hz 1e+06 Hz and solver.t_end 1e+300 s"), std::string::npos)
+      << out.stderr_text;
+  EXPECT_FALSE(std::ifstream(csv).good()) << "the CSV was created";
 }
 
 TEST(RunnerExit, MissingArgumentsPrintUsageAndExitWithOne) {

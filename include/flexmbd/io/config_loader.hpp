@@ -19,8 +19,9 @@ namespace flexmbd {
 /// Reads and loads a URDF file and a YAML file of extension parameters.
 /// @param[in] urdf_path path of the URDF file
 /// @param[in] yaml_path path of the YAML file; "" loads the URDF alone (ModelSpec defaults elsewhere)
-/// @throws ConfigError "cannot open ..." if a file cannot be read, "<file>: line L, column C: not valid
-///   YAML (...)" on a YAML syntax error, and every error of LoadModelSpecFromStrings.
+/// @throws ConfigError "cannot open ..." if a file cannot be read, "cannot read ...: it is a directory" if
+///   it is not a text file (text_file.hpp), the errors of ParseYamlDocument (a syntax error, a second
+///   document, a tag; yaml_document.hpp), and every error of LoadModelSpecFromStrings.
 ModelSpec LoadModelSpec(const std::string& urdf_path, const std::string& yaml_path);
 
 /// Loads a URDF document and a YAML tree of extension parameters.

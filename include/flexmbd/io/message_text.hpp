@@ -14,6 +14,9 @@ namespace io {
 /// Shortest decimal text that reads back as exactly `value` ("-3", "0.1", "1e-07").
 std::string FormatNumber(double value);
 
+/// `text` with control characters written as escapes (\n, \t, \x01), so that a message stays one line.
+std::string QuoteForMessage(const std::string& text);
+
 /// "[x, y, z]" with FormatNumber entries.
 std::string FormatVector(const Vec3& value);
 

@@ -34,8 +34,10 @@ struct UrdfModel {
 
 /// Reads a URDF. The links named in `beam_links` become beams (BeamSpec with only name and frame set; their
 /// <inertial>, if any, is not used: the beam's section gives its mass). Throws ConfigError naming
-/// `urdf_name` if urdfdom cannot parse it, if a beam link is not in it, if a link that moves has no
-/// <inertial>, if a mass is not positive or an inertia not positive semi-definite, or if a damping is negative.
+/// `urdf_name` if urdfdom cannot parse it, if its links are not one tree or a name would break the CSV
+/// (CheckUrdfTree), if a beam link is not in it, if nothing can move (no body and no beam), if a link that
+/// moves has no <inertial>, if a mass is not positive or an inertia not positive semi-definite, or if a
+/// damping is negative. The tree is walked without recursion.
 UrdfModel ReadUrdf(const std::string& urdf_xml, const std::string& urdf_name,
                    const std::set<std::string>& beam_links = {});
 

@@ -125,7 +125,8 @@ class Model {
 };
 
 /// Builds and validates a Model. Throws ConfigError for inconsistent input (unknown body names, non-positive
-/// mass, initial poses that violate a joint, a drive whose f(0) differs from the initial position).
+/// mass, initial poses that violate a joint, a drive whose f(0) differs from the initial position), for a
+/// model with no body and no beam (nothing to move), and for output larger than CheckOutputSize allows.
 Model BuildModel(const ModelSpec& spec);
 
 }  // namespace flexmbd

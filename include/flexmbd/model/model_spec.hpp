@@ -217,6 +217,8 @@ struct OutputSpec {
   std::string bag;         ///< bag path; empty for none
   /// Beam name -> stations, distances from the root in [0, length] [m], sampled in OutputSample::beam_stations.
   std::map<std::string, std::vector<double>> beam_stations;
+  /// Allow a run to write more than kMaxOutputValues values to its CSV or bag (model/output_size.hpp).
+  bool allow_large_output = false;
 };
 
 /// The whole mechanism and its run settings.

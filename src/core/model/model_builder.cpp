@@ -7,6 +7,7 @@
 #include "flexmbd/elements/applied_load.hpp"
 #include "flexmbd/model/beam_layout.hpp"
 #include "flexmbd/model/model.hpp"
+#include "flexmbd/model/output_size.hpp"
 #include "flexmbd/solver/energy_decaying_integrator.hpp"
 #include "flexmbd/solver/step_context_builder.hpp"
 #include "variable_effects_builder.hpp"
@@ -87,6 +88,9 @@ std::string Model::DescribeUnknown(int unknown) const {
 }
 
 Model BuildModel(const ModelSpec& spec) {
+  if (spec.bodies.empty() && spec.beams.empty()) {
+    throw ConfigError(Prefix(spec) + "nothing can move: the model has no body and no beam; expected at least one");
+  }
   const SolverSpec& solver = spec.solver;
   if (solver.integrator == SolverSpec::Integrator::kEnergyDecaying &&
       !(solver.rho_inf >= kMinRhoInf && solver.rho_inf <= 1.0)) {
@@ -315,6 +319,7 @@ Model BuildModel(const ModelSpec& spec) {
       throw ConfigError(msg.str());
     }
   }
+  CheckOutputSize(model);
   return model;
 }
 

@@ -1,0 +1,52 @@
+#include "flexmbd/model/output_size.hpp"
+
+#include <sstream>
+
+#include "flexmbd/common/error.hpp"
+
+namespace flexmbd {
+namespace {
+constexpr int kValuesPerVariable = 3;        // position, velocity, effort
+constexpr int kValuesPerJoint = 6;           // reaction force and moment
+constexpr int kValuesPerStop = 4;            // in_contact, force, torque, approach
+constexpr int kValuesPerFriction = 5;        // sticking, torque, normal_force, slip_velocity, work
+constexpr int kValuesPerBeamStation = 18;    // loads, strains, displacement, rotation
+constexpr int kValuesPerSampleHeader = 1;    // t
+constexpr int kValuesPerSampleTrailer = 8;   // six energies, dt, iterations
+}  // namespace
+
+long OutputValuesPerSample(const Model& model) {
+  return kValuesPerSampleHeader + kValuesPerVariable * static_cast<long>(model.variable_names().size()) +
+         kValuesPerJoint * static_cast<long>(model.joints().size()) +
+         kValuesPerStop * static_cast<long>(model.stops().size()) +
+         kValuesPerFriction * static_cast<long>(model.frictions().size()) +
+         kValuesPerBeamStation * static_cast<long>(model.beam_stations().size()) + kValuesPerSampleTrailer;
+}
+
+double ExpectedOutputSamples(const SolverSpec& solver, const OutputSpec& output) {
+  if (output.rate_hz > 0) return solver.t_end * output.rate_hz + 1.0;
+  return solver.t_end / (solver.adaptive ? solver.dt_max : solver.dt) + 1.0;
+}
+
+void CheckOutputSize(const Model& model) {
+  const OutputSpec& output = model.output();
+  const bool writes = !output.csv.empty() || !output.bag.empty();
+  if (model.solver().analysis != SolverSpec::Analysis::kDynamic || !writes || output.allow_large_output) return;
+  const double samples = ExpectedOutputSamples(model.solver(), output);
+  const long per_sample = OutputValuesPerSample(model);
+  if (!(samples * per_sample > kMaxOutputValues)) return;
+  std::ostringstream msg;
+  msg << (model.source().empty() ? "" : model.source() + ": ") << "output.rate_hz " << output.rate_hz
+      << " Hz and solver.t_end " << model.solver().t_end << " s give " << samples << " samples";
+  if (output.rate_hz == 0) msg << " (one per step, at least t_end / dt" << (model.solver().adaptive ? "_max" : "") << ")";
+  msg << " of " << per_sample << " values";
+  if (!model.beam_stations().empty()) {
+    msg << " (" << kValuesPerBeamStation * model.beam_stations().size() << " of them from output.beam_stations)";
+  }
+  msg << ": " << samples * per_sample << " values to write, more than " << kMaxOutputValues
+      << " (about 1 GB of CSV); expected a lower rate_hz, a shorter t_end, "
+      << (model.beam_stations().empty() ? "" : "fewer beam stations, ") << "or output.allow_large_output: true";
+  throw ConfigError(msg.str());
+}
+
+}  // namespace flexmbd
