@@ -9,6 +9,7 @@
 #include <string>
 
 #include "flexmbd/io/config_loader.hpp"
+#include "friction_bound.hpp"
 #include "run_trace.hpp"
 
 namespace flexmbd {
@@ -57,8 +58,10 @@ double FallTime(bool friction) {
 TEST(RigidStop, ForearmFallsOntoRigidStopsWithAndWithoutFriction) {
   for (const Variant& v : kVariants) {
     SCOPED_TRACE(v.name);
+    const ModelSpec spec = Forearm(v);
+    const Model model = BuildModel(spec);
     test::Trace run;
-    ASSERT_NO_THROW(run = test::RunTrace(Forearm(v)));
+    ASSERT_NO_THROW(run = test::RunTrace(spec));
     const OutputSample& first = run.samples.front();
     const OutputSample& last = run.samples.back();
     EXPECT_DOUBLE_EQ(last.t, 3.0);
@@ -81,6 +84,10 @@ TEST(RigidStop, ForearmFallsOntoRigidStopsWithAndWithoutFriction) {
     // tolerance over a few thousand steps on 0.34 J of fall.
     EXPECT_NEAR(last.total() + last.dissipated + last.numerical_dissipation, first.total(), 1e-6);
     if (v.friction) {
+      // The friction torque never exceeds the static bound mu_s rho N (F3).
+      double worst = 0;
+      for (const OutputSample& s : run.samples) worst = std::max(worst, test::StaticBoundRatio(spec, model, s));
+      EXPECT_LE(worst, 1.0 + 1e-9);
       // Friction stops the bouncing: the rod comes to rest on the stop, stuck, within the run.
       EXPECT_TRUE(last.stops[1].in_contact);
       EXPECT_LT(last.kinetic, 1e-12);

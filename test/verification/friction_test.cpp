@@ -3,10 +3,12 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <vector>
 
 #include "case_builders.hpp"
+#include "friction_bound.hpp"
 #include "run_trace.hpp"
 #include "flexmbd/common/error.hpp"
 #include "flexmbd/solver/simulation.hpp"
@@ -47,7 +49,9 @@ double FirstStickTime(const test::Trace& run) {
 
 TEST(Friction, SpinDownStopsAtAnalyticTimeAndStaysStuck) {
   constexpr double kOmega0 = 10.0, kV0 = 1.0e-4;
-  const test::Trace run = test::RunTrace(FrictionalRotor(kOmega0, Friction(kMuS, kMuK, kV0), 15.0));
+  const ModelSpec spec = FrictionalRotor(kOmega0, Friction(kMuS, kMuK, kV0), 15.0);
+  const test::Trace run = test::RunTrace(spec);
+  const Model model = BuildModel(spec);
   const double t_star = kInertia * kOmega0 / kKineticTorque;  // 12.5 s
   // Sticking begins once the slip speed is below v0, at most v0 / (rho * deceleration) = 6e-3 s before t*;
   // 1e-3 t* (the issue asks for 1%) bounds it.
@@ -59,6 +63,7 @@ TEST(Friction, SpinDownStopsAtAnalyticTimeAndStaysStuck) {
     // tolerance (1e-12) over ~1000 steps: 1e-9 relative.
     constexpr double kEnergyTolerance = 1.0e-9;
     EXPECT_NEAR(s.total() + s.friction[0].work, e0, kEnergyTolerance * e0) << "t = " << s.t;
+    EXPECT_LE(test::StaticBoundRatio(spec, model, s), 1.0 + 1e-9) << "t = " << s.t;  // (F3)
     if (s.t > t_star + 1e-9) {
       EXPECT_TRUE(s.friction[0].sticking) << "t = " << s.t;
       // The sticking step ends at rest up to the round-off of its increment of q (Newton stops at the noise
@@ -165,6 +170,11 @@ TEST(Friction, StickSlipOscillatorMatchesPiecewiseSolution) {
     const double distance = position_at(sticks[k].first) - position_at(sticks[k - 1].second);
     EXPECT_NEAR(distance, slip_distance, kPiecewiseTolerance * slip_distance) << "slip " << k;
   }
+  // Every sample within the static bound (F3), sticking and sliding alike.
+  const Model model = BuildModel(spec);
+  double worst = 0;
+  for (const OutputSample& s : run.samples) worst = std::max(worst, test::StaticBoundRatio(spec, model, s));
+  EXPECT_LE(worst, 1.0 + 1e-9);
   // Normal force from the reaction: the weight.
   EXPECT_NEAR(run.samples.back().friction[0].normal_force, kMassKg * kG, 1e-9 * kMassKg * kG);
   // Energy books: mechanical energy + friction work - work of the pull = initial energy.

@@ -163,9 +163,9 @@ int FrictionEffect::ReviseMode(const StepContext& ctx) const {
   const int mode = TrialMode(ctx);
   if (spec_.law == FrictionSpec::Law::kRegularised || HeldByStop(*ctx.effects)) return mode;
   if (mode == kSticking) {
-    // The step that starts sticking absorbs the slip below v0 whatever force that takes (F3); the static bound
-    // applies from the next step on, when the multiplier is the force holding the joint at rest.
-    if (ctx.start->effects[slot()].mode != kSticking) return mode;
+    // In the step that starts sticking the multiplier is the mean friction force of a slip that stops within
+    // the step and then holds; beyond the static bound, kinetic friction could not stop it in the step, which
+    // is then solved sliding (F3).
     const double lambda = (*ctx.lambda)[stick_multiplier_];
     Vec3 unused;
     const double normal = NormalForce(ctx.lambda->segment<3>(joint_multiplier_), AxisW(*ctx.start), &unused);
