@@ -116,14 +116,15 @@ TEST(Friction, BreakawayWhenTorqueExceedsStaticBound) {
   EXPECT_NEAR(run.samples.back().velocity[0], expected, tolerance);
 }
 
-TEST(Friction, StickSlipOscillatorMatchesPiecewiseSolution) {
-  // Mass m on a prismatic joint, gravity across it (N = m g from the joint reaction), spring k to a point
-  // moving at V (a spring on the joint plus the force k V t). Slip starts at k (V t - x) = F_s; during slip
-  // u = x - V t + F_k / k obeys m u'' = -k u from u0 = -(F_s - F_k) / k, u0' = -V, and ends when x' = 0:
-  // w t_slip = 2 pi - 2 atan(A / V), A = (F_s - F_k) w / k, slip distance 2 (F_s - F_k) / k + V t_slip,
-  // then the stick lasts 2 (F_s - F_k) / (k V).
-  constexpr double kMassKg = 1.0, kSpring = 100.0, kSpeed = 0.1, kG = 9.81, kStaticMu = 0.4, kKineticMu = 0.3;
-  ModelSpec spec = test::Slider(kMassKg, 0.0, 2.2);
+// The stick-slip oscillator: mass m on a prismatic joint, gravity across it (N = m g from the joint reaction),
+// spring k to a point moving at V (a spring on the joint plus the force k V t). Slip starts at k (V t - x) = F_s;
+// during slip u = x - V t + F_k / k obeys m u'' = -k u from u0 = -(F_s - F_k) / k, u0' = -V, and ends when
+// x' = 0: w t_slip = 2 pi - 2 atan(A / V), A = (F_s - F_k) w / k, slip distance 2 (F_s - F_k) / k + V t_slip,
+// then the stick lasts 2 (F_s - F_k) / (k V).
+constexpr double kOscMass = 1.0, kSpring = 100.0, kSpeed = 0.1, kG = 9.81, kStaticMu = 0.4, kKineticMu = 0.3;
+
+ModelSpec StickSlipOscillator() {
+  ModelSpec spec = test::Slider(kOscMass, 0.0, 2.2);
   spec.output.rate_hz = 0;
   spec.solver.dt_max = 1.0e-3;
   spec.joints[0].effects[0].springs = {{kSpring, 0.0}};
@@ -139,9 +140,16 @@ TEST(Friction, StickSlipOscillatorMatchesPiecewiseSolution) {
   pull.scale.value = 10.0;
   pull.scale.duration = 10.0;
   spec.loads.push_back(pull);
-  const test::Trace run = test::RunTrace(spec);
+  return spec;
+}
 
-  const double f_s = kStaticMu * kMassKg * kG, f_k = kKineticMu * kMassKg * kG, w = std::sqrt(kSpring / kMassKg);
+struct StickSlipErrors {
+  double stick = 0, slip = 0, distance = 0;  ///< largest relative errors over the cycles
+  double worst() const { return std::max({stick, slip, distance}); }
+};
+
+StickSlipErrors MeasureStickSlip(const test::Trace& run) {
+  const double f_s = kStaticMu * kOscMass * kG, f_k = kKineticMu * kOscMass * kG, w = std::sqrt(kSpring / kOscMass);
   const double a = (f_s - f_k) * w / kSpring;
   const double t_slip = (2 * M_PI - 2 * std::atan(a / kSpeed)) / w;
   const double slip_distance = 2 * (f_s - f_k) / kSpring + kSpeed * t_slip;
@@ -153,30 +161,49 @@ TEST(Friction, StickSlipOscillatorMatchesPiecewiseSolution) {
     if (e.to == FrictionEffect::kSticking) begin = e.t;
     if (e.from == FrictionEffect::kSticking) sticks.emplace_back(begin, e.t);
   }
-  ASSERT_GE(sticks.size(), 3u);
-  EXPECT_NEAR(sticks[0].second, f_s / (kSpring * kSpeed), 2e-3) << "first breakaway at k V t = F_s";
   auto position_at = [&run](double t) {
     for (size_t k = 1; k < run.samples.size(); ++k) {
       if (run.samples[k].t >= t - 1e-12) return run.samples[k].position[0];
     }
     return run.samples.back().position[0];
   };
-  // The bound is 2%; the transitions are located to within about one step (1e-3 s of 0.2-0.5 s, with
-  // the v0 step rule shrinking the steps before sticking): 1%.
-  constexpr double kPiecewiseTolerance = 0.01;
+  StickSlipErrors e;
   for (size_t k = 1; k + 1 < sticks.size(); ++k) {
-    EXPECT_NEAR(sticks[k].second - sticks[k].first, t_stick, kPiecewiseTolerance * t_stick) << "stick " << k;
-    EXPECT_NEAR(sticks[k].first - sticks[k - 1].second, t_slip, kPiecewiseTolerance * t_slip) << "slip " << k;
+    e.stick = std::max(e.stick, std::abs(sticks[k].second - sticks[k].first - t_stick) / t_stick);
+    e.slip = std::max(e.slip, std::abs(sticks[k].first - sticks[k - 1].second - t_slip) / t_slip);
     const double distance = position_at(sticks[k].first) - position_at(sticks[k - 1].second);
-    EXPECT_NEAR(distance, slip_distance, kPiecewiseTolerance * slip_distance) << "slip " << k;
+    e.distance = std::max(e.distance, std::abs(distance - slip_distance) / slip_distance);
   }
+  if (sticks.size() < 3) e.stick = e.slip = e.distance = 1.0;
+  return e;
+}
+
+TEST(Friction, StickSlipOscillatorMatchesPiecewiseSolution) {
+  const ModelSpec spec = StickSlipOscillator();
+  const test::Trace run = test::RunTrace(spec);
+  const double f_s = kStaticMu * kOscMass * kG;
+  ASSERT_FALSE(run.events.empty());
+  double first_breakaway = -1;
+  for (const EffectEvent& e : run.events) {
+    if (e.from == FrictionEffect::kSticking && first_breakaway < 0) first_breakaway = e.t;
+  }
+  EXPECT_NEAR(first_breakaway, f_s / (kSpring * kSpeed), 2e-3) << "first breakaway at k V t = F_s";
+  // The bound is 2%; the transitions are located to within about one step (1e-3 s of 0.2-0.5 s, with
+  // the v0 step rule shrinking the steps before sticking): 1%. (At the default dt_max of 0.1 s the stick
+  // durations are 36% off: a breakaway is found at the end of whatever sticking step exceeds the bound, and
+  // sticking steps, which carry no local error, grow to dt_max.)
+  constexpr double kPiecewiseTolerance = 0.01;
+  const StickSlipErrors errors = MeasureStickSlip(run);
+  EXPECT_LT(errors.stick, kPiecewiseTolerance);
+  EXPECT_LT(errors.slip, kPiecewiseTolerance);
+  EXPECT_LT(errors.distance, kPiecewiseTolerance);
   // Every sample within the static bound (F3), sticking and sliding alike.
   const Model model = BuildModel(spec);
   double worst = 0;
   for (const OutputSample& s : run.samples) worst = std::max(worst, test::StaticBoundRatio(spec, model, s));
   EXPECT_LE(worst, 1.0 + 1e-9);
   // Normal force from the reaction: the weight.
-  EXPECT_NEAR(run.samples.back().friction[0].normal_force, kMassKg * kG, 1e-9 * kMassKg * kG);
+  EXPECT_NEAR(run.samples.back().friction[0].normal_force, kOscMass * kG, 1e-9 * kOscMass * kG);
   // Energy books: mechanical energy + friction work - work of the pull = initial energy.
   const OutputSample& last = run.samples.back();
   constexpr double kBookTolerance = 1.0e-8;  // J; Newton tolerance 1e-12 over ~3000 steps of ~0.05 J
