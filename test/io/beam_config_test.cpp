@@ -83,6 +83,14 @@ TEST(BeamConfig, ElementsOfNoLengthAreRejected) {
       << message;
 }
 
+TEST(BeamConfig, MoreElementsThanAnyRunCanHoldAreRejected) {
+  // fuzz finding (test/fuzz): 1e9 elements ended in std::length_error while the nodes were laid out
+  std::string yaml = kArmYaml;
+  yaml.replace(yaml.find("elements: 2"), 11, "elements: 1000000000");
+  const std::string message = ConfigErrorOf([&] { LoadDataUrdf("beam_arm.urdf", yaml, "arm.yaml"); });
+  EXPECT_NE(message.find("arm.yaml: beams.arm.elements: 1000000000 is above 1000000"), std::string::npos) << message;
+}
+
 TEST(BeamConfig, UnknownBeamLinkListsLinks) {
   std::string yaml = kArmYaml;
   yaml.replace(yaml.find("  arm:"), 6, "  boom:");
