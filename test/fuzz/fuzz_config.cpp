@@ -8,10 +8,9 @@
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
-#include <fstream>
-#include <sstream>
 #include <string>
 
+#include "flexmbd/io/text_file.hpp"
 #include "harness/campaign.hpp"
 #include "harness/verdict.hpp"
 
@@ -31,16 +30,10 @@ constexpr unsigned long kMemoryMib = 0;
 constexpr unsigned long kMemoryMib = 4096;
 #endif
 
-std::string ReadFile(const std::string& path) {
-  std::ifstream file(path, std::ios::binary);
-  std::ostringstream text;
-  text << file.rdbuf();
-  return text.str();
-}
-
 int Replay(const std::string& urdf, const std::string& yaml, bool param_tree) {
   using namespace flexmbd::fuzz;
-  const FuzzInput input{ReadFile(urdf), ReadFile(yaml), param_tree ? Channel::kParamTree : Channel::kFiles};
+  const FuzzInput input{flexmbd::ReadTextFile(urdf, "URDF file"), flexmbd::ReadTextFile(yaml, "YAML file"),
+                        param_tree ? Channel::kParamTree : Channel::kFiles};
   IsolatedResult isolated;
   isolated.result = LoadAndStep(input);
   const char* outcomes[] = {"completed", "ConfigError", "SolverError", "other exception"};

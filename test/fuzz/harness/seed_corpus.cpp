@@ -4,19 +4,10 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "flexmbd/io/text_file.hpp"
+
 namespace flexmbd {
 namespace fuzz {
-namespace {
-
-std::string ReadFile(const std::string& path) {
-  std::ifstream file(path, std::ios::binary);
-  if (!file) throw std::runtime_error("fuzz: cannot read seed file '" + path + "'");
-  std::ostringstream text;
-  text << file.rdbuf();
-  return text.str();
-}
-
-}  // namespace
 
 std::vector<SeedCase> ReadSeedCorpus(const std::string& root, const std::string& list_path) {
   std::ifstream list(list_path);
@@ -27,8 +18,8 @@ std::vector<SeedCase> ReadSeedCorpus(const std::string& root, const std::string&
     std::istringstream fields(line);
     std::string urdf, yaml;
     if (!(fields >> urdf >> yaml)) throw std::runtime_error("fuzz: " + list_path + ": not '<urdf> <yaml>': " + line);
-    seeds.push_back(SeedCase{urdf + " + " + yaml, ReadFile(root + "/" + urdf),
-                             yaml == "-" ? "" : ReadFile(root + "/" + yaml)});
+    seeds.push_back(SeedCase{urdf + " + " + yaml, ReadTextFile(root + "/" + urdf, "seed URDF file"),
+                             yaml == "-" ? "" : ReadTextFile(root + "/" + yaml, "seed YAML file")});
   }
   if (seeds.empty()) throw std::runtime_error("fuzz: no seed cases in '" + list_path + "'");
   return seeds;

@@ -15,7 +15,8 @@ struct SeedCase {
 };
 
 /// Reads the list at `list_path` ("<urdf> <yaml>" per line, paths relative to `root`, "-" for no YAML, '#'
-/// comments) and the files it names. Throws std::runtime_error naming a line or file that cannot be read.
+/// comments) and the files it names. Throws std::runtime_error for a list that cannot be read or a bad line,
+/// ConfigError (ReadTextFile) for a seed file that cannot be read.
 std::vector<SeedCase> ReadSeedCorpus(const std::string& root, const std::string& list_path);
 
 }  // namespace fuzz
