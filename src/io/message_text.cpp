@@ -89,7 +89,7 @@ std::string SuggestName(const std::string& word, const std::vector<std::string>&
 std::string NotFoundMessage(const std::string& kind, const std::string& kinds, const std::string& name,
                             const std::string& where, const std::vector<std::string>& candidates) {
   const std::string closest = ClosestName(name, candidates);
-  return "no " + kind + " '" + name + "' in " + where + "; " + kinds +
+  return "no " + kind + " '" + QuoteForMessage(name) + "' in " + where + "; " + kinds +
          " are: " + (candidates.empty() ? std::string("(none)") : JoinNames(candidates)) +
          (closest.empty() ? "" : "; did you mean '" + closest + "'?");
 }

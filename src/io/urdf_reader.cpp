@@ -279,7 +279,8 @@ UrdfModel ReadUrdf(const std::string& urdf_xml, const std::string& urdf_name,
     if (!urdf->getLink(beam)) {
       std::vector<std::string> links;
       for (const auto& link : urdf->links_) links.push_back(link.first);
-      throw ConfigError(urdf_name + ": beams." + beam + ": " + NotFoundMessage("link", "links", beam, urdf_name, links));
+      throw ConfigError(urdf_name + ": beams." + QuoteForMessage(beam) + ": " +
+                        NotFoundMessage("link", "links", beam, urdf_name, links));
     }
   }
   return UrdfWalker(*urdf, urdf_name, beam_links).Walk();

@@ -4,6 +4,10 @@
 namespace flexmbd {
 namespace io {
 namespace {
+// Most elements in one beam: 1e9 asked for more nodes than a std::vector holds (std::length_error, a fuzz
+// finding); 1e6 cubic elements are 1.8e7 unknowns, far past what a run can factorise.
+constexpr int kMaxBeamElements = 1000000;
+
 const std::vector<std::string> kBeamKeys = {"length", "elements", "order", "damping", "section"};
 const std::vector<std::string> kSectionKeys = {"EA",        "GA2", "GA3", "GJ",   "EI2",    "EI3",
                                                "stiffness", "m",   "m_ii", "offsets"};
@@ -67,6 +71,10 @@ void ReadBeam(const Field& beam, BeamSpec* spec) {
   RequireKey(beam, "length", "the beam length [m] along the link's x axis");
   spec->length = ReadNumber(beam.Child("length"), Quantity{"a length", Bound::kPositive, "m"});
   OverlayInteger(beam, "elements", Quantity{"a number of elements", Bound::kAtLeastOne, ""}, &spec->elements);
+  if (spec->elements > kMaxBeamElements) {
+    beam.Child("elements").Fail(std::to_string(spec->elements) + " is above " + std::to_string(kMaxBeamElements) +
+                                "; expected at most " + std::to_string(kMaxBeamElements) + " elements in one beam");
+  }
   OverlayInteger(beam, "order", Quantity{"a shape-function order", Bound::kAtLeastOne, ""}, &spec->order);
   if (spec->order > 3) beam.Child("order").Fail(std::to_string(spec->order) + " is above 3; expected 1, 2 or 3");
   OverlayNumber(beam, "damping", Quantity{"a damping time mu", Bound::kNonNegative, "s"}, &spec->damping);

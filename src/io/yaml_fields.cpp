@@ -94,7 +94,8 @@ std::string Field::Describe() const {
 }
 
 void Field::Fail(const std::string& what) const {
-  throw ConfigError(file_ + ": " + (path_.empty() ? "" : path_ + ": ") + what);
+  // keys and values in the path and the text are the user's: a newline in one must not break the line
+  throw ConfigError(QuoteForMessage(file_ + ": " + (path_.empty() ? "" : path_ + ": ") + what));
 }
 
 std::string Expected(const Quantity& quantity) {

@@ -72,6 +72,25 @@ TEST(BeamConfig, ZeroElementsIsRejected) {
   EXPECT_NE(message.find("arm.yaml: beams.arm.elements: 0"), std::string::npos) << message;
 }
 
+TEST(BeamConfig, ElementsOfNoLengthAreRejected) {
+  // fuzz finding (test/fuzz): a denormal length passed the load check and its elements' length underflowed to
+  // 0, failing an internal check of the beam element
+  std::string yaml = kArmYaml;
+  yaml.replace(yaml.find("length: 1.0"), 11, "length: 4.9e-324");
+  const std::string message = ConfigErrorOf([&] { BuildModel(LoadDataUrdf("beam_arm.urdf", yaml, "arm.yaml")); });
+  EXPECT_NE(message.find("beams.arm.length: 4.94066e-324 m in 2 elements gives elements of no length"),
+            std::string::npos)
+      << message;
+}
+
+TEST(BeamConfig, MoreElementsThanAnyRunCanHoldAreRejected) {
+  // fuzz finding (test/fuzz): 1e9 elements ended in std::length_error while the nodes were laid out
+  std::string yaml = kArmYaml;
+  yaml.replace(yaml.find("elements: 2"), 11, "elements: 1000000000");
+  const std::string message = ConfigErrorOf([&] { LoadDataUrdf("beam_arm.urdf", yaml, "arm.yaml"); });
+  EXPECT_NE(message.find("arm.yaml: beams.arm.elements: 1000000000 is above 1000000"), std::string::npos) << message;
+}
+
 TEST(BeamConfig, UnknownBeamLinkListsLinks) {
   std::string yaml = kArmYaml;
   yaml.replace(yaml.find("  arm:"), 6, "  boom:");

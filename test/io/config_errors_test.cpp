@@ -268,6 +268,13 @@ TEST(ConfigErrors, LoadWithForceAndMomentIsRejected) {
                       "pendulum.yaml: loads[0]: gives both 'force' and 'moment'; expected exactly one of them");
 }
 
+TEST(ConfigErrors, NewlineInAGivenNameKeepsTheMessageOneLine) {
+  // fuzz finding (test/fuzz): the unknown name was quoted as written and its newline split the message
+  EXPECT_CONFIG_ERROR(Pendulum("loads: [{body: \"line\\nbreak\", force: [1, 0, 0]}]"),
+                      "pendulum.yaml: loads[0].body: no body or beam 'line\\nbreak' in pendulum.urdf");
+  EXPECT_CONFIG_ERROR(Pendulum("joints: {\"B\\n1\": {damper: {c: 1.0}}}"), "pendulum.yaml: joints.B\\n1: ");
+}
+
 TEST(ConfigErrors, LoadOnUnknownBodyListsBodies) {
   EXPECT_CONFIG_ERROR(
       Pendulum("loads: [{body: rdo, force: [1, 0, 0]}]"),

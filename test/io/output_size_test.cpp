@@ -65,8 +65,17 @@ TEST(OutputSize, OptInAllowsLargeOutput) {
   EXPECT_NO_THROW(Pendulum("solver: {t_end: 1.0e300}\noutput: {rate_hz: 1.0e6, csv: run.csv, allow_large_output: true}"));
 }
 
-TEST(OutputSize, RunWithoutCsvOrBagIsNotBounded) {
-  EXPECT_NO_THROW(Pendulum("solver: {t_end: 1.0e300}\noutput: {rate_hz: 1.0e6}"));
+TEST(OutputSize, RunWithoutCsvOrBagIsBoundedInSamples) {
+  // fuzz finding (test/fuzz): rate_hz 1e18 with no file interpolated samples for ever
+  EXPECT_CONFIG_ERROR(Pendulum("solver: {t_end: 1.0e300}\noutput: {rate_hz: 1.0e6}"),
+                      "pendulum.urdf + pendulum.yaml: output.rate_hz 1e+06 Hz and solver.t_end 1e+300 s give 1e+306 "
+                      "samples, more than 4e+07 (each is interpolated and passed on, with or without an output file)");
+  EXPECT_NO_THROW(Pendulum("solver: {t_end: 3.9e7}\noutput: {rate_hz: 1}"));
+  EXPECT_NO_THROW(Pendulum("solver: {t_end: 1.0e300}\noutput: {rate_hz: 1.0e6, allow_large_output: true}"));
+}
+
+TEST(OutputSize, RunWithoutCsvOrBagAtEveryStepIsNotBounded) {
+  EXPECT_NO_THROW(Pendulum("solver: {t_end: 1.0e300}\noutput: {rate_hz: 0}"));
 }
 
 TEST(OutputSize, StaticAnalysisWritesOneSample) {

@@ -103,7 +103,9 @@ TEST(UrdfReader, DynamicsFrictionBecomesConstantBoundFriction) {
 }
 
 TEST(UrdfReader, LimitGivesStopPositions) {
-  const JointSpec& b1 = Joint(LoadUrdfOnly("double_pendulum.urdf"), "B1");
+  // the spec outlives the reference (a temporary's joint read after its end: AddressSanitizer)
+  const ModelSpec spec = LoadUrdfOnly("double_pendulum.urdf");
+  const JointSpec& b1 = Joint(spec, "B1");
   EXPECT_TRUE(b1.has_limits);
   EXPECT_EQ(b1.limit_lower, -3.0);
   EXPECT_EQ(b1.limit_upper, 3.0);

@@ -22,10 +22,17 @@ std::atomic<long> g_allocations{0};
 // Out of line, so that a debugger can stop on a counted allocation (break CountAllocation).
 __attribute__((noinline)) void CountAllocation() { g_allocations.fetch_add(1, std::memory_order_relaxed); }
 
+// AddressSanitizer owns malloc: an interposed one is called before the sanitizer is set up and crashes every test
+// of the process at start, so a sanitizer build (-DFLEXMBD_SANITIZE=ON) leaves malloc alone and skips the count.
+#if defined(__SANITIZE_ADDRESS__)
+constexpr bool kCountsAllocations = false;
+#else
+constexpr bool kCountsAllocations = true;
 extern "C" void* malloc(size_t size) {
   if (g_counting.load(std::memory_order_relaxed)) CountAllocation();
   return __libc_malloc(size);
 }
+#endif
 
 namespace flexmbd {
 namespace {
@@ -55,6 +62,7 @@ long AllocationsPerIteration(const std::string& urdf, const std::string& yaml, i
 }
 
 TEST(NewtonIteration, FlexibleAntennaWithFrictionAndStopsAllocatesNothing) {
+  if (!kCountsAllocations) GTEST_SKIP() << "malloc is AddressSanitizer's in this build";
   EXPECT_EQ(AllocationsPerIteration("config/antenna/antenna.urdf", "test/data/yaml/antenna_flexible_friction.yaml", 5),
             0);
 }

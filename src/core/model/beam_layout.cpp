@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <sstream>
 
 #include <Eigen/Eigenvalues>
@@ -105,6 +106,13 @@ void ValidateBeam(const std::string& prefix, const BeamSpec& beam) {
   if (!(beam.length > 0.0)) fail("length", std::to_string(beam.length) + " is not positive; expected a length > 0 [m]");
   if (beam.elements < 1) fail("elements", std::to_string(beam.elements) + " is below 1; expected a whole number >= 1");
   if (beam.order < 1 || beam.order > 3) fail("order", std::to_string(beam.order) + " is not 1, 2 or 3");
+  if (!std::isnormal(beam.length / beam.elements)) {
+    // the elements divide by their length (their Jacobian); 4.9e-324 m in 2 elements underflows to 0
+    std::ostringstream msg;
+    msg << beam.length << " m in " << beam.elements << " elements gives elements of no length; expected a length "
+        << "> " << beam.elements * std::numeric_limits<double>::min() << " [m] or fewer elements";
+    fail("length", msg.str());
+  }
   const auto& C = beam.section.stiffness;
   const Eigen::SelfAdjointEigenSolver<Eigen::Matrix<double, 6, 6>> eig(0.5 * (C + C.transpose()));
   if (!(eig.eigenvalues().minCoeff() > 0.0)) {

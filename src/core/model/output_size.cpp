@@ -28,16 +28,38 @@ double ExpectedOutputSamples(const SolverSpec& solver, const OutputSpec& output)
   return solver.t_end / (solver.adaptive ? solver.dt_max : solver.dt) + 1.0;
 }
 
+namespace {
+
+// "<source>: output.rate_hz R Hz and solver.t_end T s give N samples": how every bound's message begins.
+std::string SamplesText(const Model& model, double samples) {
+  std::ostringstream msg;
+  msg << (model.source().empty() ? "" : model.source() + ": ") << "output.rate_hz " << model.output().rate_hz
+      << " Hz and solver.t_end " << model.solver().t_end << " s give " << samples << " samples";
+  return msg.str();
+}
+
+}  // namespace
+
 void CheckOutputSize(const Model& model) {
   const OutputSpec& output = model.output();
-  const bool writes = !output.csv.empty() || !output.bag.empty();
-  if (model.solver().analysis != SolverSpec::Analysis::kDynamic || !writes || output.allow_large_output) return;
+  if (model.solver().analysis != SolverSpec::Analysis::kDynamic || output.allow_large_output) return;
   const double samples = ExpectedOutputSamples(model.solver(), output);
+  const bool writes = !output.csv.empty() || !output.bag.empty();
+  if (!writes) {
+    // with rate_hz 0 the samples are the steps, which the run takes anyway
+    if (output.rate_hz > 0 && samples > kMaxSamplesWithoutFiles) {
+      std::ostringstream msg;
+      msg << SamplesText(model, samples) << ", more than " << kMaxSamplesWithoutFiles
+          << " (each is interpolated and passed on, with or without an output file); expected a lower rate_hz, a "
+             "shorter t_end, or output.allow_large_output: true";
+      throw ConfigError(msg.str());
+    }
+    return;
+  }
   const long per_sample = OutputValuesPerSample(model);
   if (!(samples * per_sample > kMaxOutputValues)) return;
   std::ostringstream msg;
-  msg << (model.source().empty() ? "" : model.source() + ": ") << "output.rate_hz " << output.rate_hz
-      << " Hz and solver.t_end " << model.solver().t_end << " s give " << samples << " samples";
+  msg << SamplesText(model, samples);
   if (output.rate_hz == 0) msg << " (one per step, at least t_end / dt" << (model.solver().adaptive ? "_max" : "") << ")";
   msg << " of " << per_sample << " values";
   if (!model.beam_stations().empty()) {
