@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "closed_forms.hpp"
+#include "flexmbd/common/error.hpp"
 #include "flexmbd/io/config_loader.hpp"
 #include "flexmbd/solver/simulation.hpp"
 
@@ -180,6 +181,14 @@ TEST(StepControl, BeamArmErrorFallsWithTheToleranceAndBeatsFixedSteps) {
   fixed.solver.adaptive = false;
   fixed.solver.dt = fixed.solver.t_end / fine.steps;
   EXPECT_LT(TipError(fine, reference), TipError(RunBeamArm(fixed), reference));
+}
+
+TEST(StepControl, ToleranceSoSmallItsFloorsUnderflowFailsInsteadOfRetryingForEver) {
+  // A fuzz finding: an infinite error estimate was read as "no estimate" and the same step retried for ever.
+  const ModelSpec spec = Case("pendulum.urdf", "error_tol_underflow.yaml");
+  const Model model = BuildModel(spec);
+  Simulation simulation(model);
+  EXPECT_THROW(simulation.Run([](const OutputSample&) {}), SolverError);
 }
 
 TEST(StepControl, FreeplayPeriodFallsWithTheTolerance) {

@@ -165,7 +165,9 @@ int FrictionEffect::ReviseMode(const StepContext& ctx) const {
   if (mode == kSticking) {
     // In the step that starts sticking the multiplier is the mean friction force of a slip that stops within
     // the step and then holds; beyond the static bound, kinetic friction could not stop it in the step, which
-    // is then solved sliding (F3).
+    // is then solved sliding (F3). A joint already at rest in a sliding mode (a static analysis first) takes
+    // one step stuck before its bound is judged.
+    if (ctx.start->effects[slot()].mode != kSticking && (*ctx.variables)[variable_].qdot_i == 0.0) return mode;
     const double lambda = (*ctx.lambda)[stick_multiplier_];
     Vec3 unused;
     const double normal = NormalForce(ctx.lambda->segment<3>(joint_multiplier_), AxisW(*ctx.start), &unused);

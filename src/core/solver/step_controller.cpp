@@ -54,7 +54,7 @@ double StepController::Next(double h, const StepResult& result) {
   if (!solver_.adaptive) return std::min(result.status == StepStatus::kAccepted ? solver_.dt : h, result.limit.next);
   const double error = result.error.error;
   double next = 0;
-  if (std::isfinite(error)) {
+  if (!std::isnan(error)) {  // NaN: no estimate; an infinite error (tolerances underflowing) shrinks most
     const double factor = error > 0 ? kSafety * std::pow(error, -1.0 / kErrorOrder) : kMaxGrowth;
     next = h * std::clamp(factor, kMinShrink, kMaxGrowth);
     if (result.status == StepStatus::kAccepted) estimated_next_ = next;
