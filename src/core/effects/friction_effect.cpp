@@ -212,13 +212,12 @@ void FrictionEffect::Commit(const StepContext& ctx, const State& end, EffectStat
   const double speed = spec_.radius * std::abs(end.qdot[variable_]);
   effect->reference = std::max(effect->reference, speed);
   if (spec_.law == FrictionSpec::Law::kRegularised) return;
-  const bool slow = speed <= kCaptureSpeeds * StickingSpeed(*effect);
-  if (HeldByStop(*ctx.effects)) {
-    // The joint moves on, or rests, as the contact left it.
-    effect->mode = slow ? kSticking : InitialMode(end.qdot[variable_]);
-  } else if (BreakingAway(ctx) && Direction(effect->mode) * end.qdot[variable_] < 0) {
-    // A breakaway whose slide reversed within the step came to rest in it: it sticks, or slides the other way
-    // if it left faster than it could stick.
+  // After a step held by a rigid stop the joint moves on, or rests, as the contact left it; a breakaway whose
+  // slide reversed within the step came to rest in it. Either sticks, or slides the way it now moves if it is
+  // faster than it could stick.
+  const bool reversed_breakaway = BreakingAway(ctx) && Direction(effect->mode) * end.qdot[variable_] < 0;
+  if (HeldByStop(*ctx.effects) || reversed_breakaway) {
+    const bool slow = speed <= kCaptureSpeeds * StickingSpeed(*effect);
     effect->mode = slow ? kSticking : InitialMode(end.qdot[variable_]);
   } else {
     // A joint slowing down below v0 sticks from the next step on (one speeding up is breaking away).
