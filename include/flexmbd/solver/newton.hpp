@@ -26,6 +26,7 @@ struct NewtonReport {
   bool converged = false;
   bool singular = false;
   int iterations = 0;
+  int tangents = 0;                ///< iterations that assembled and factorised a fresh tangent
   double force_residual = 0;       ///< relative, at the last evaluation
   double constraint_residual = 0;  ///< [m or rad]
   int worst_unknown = -1;          ///< row with the largest scaled residual

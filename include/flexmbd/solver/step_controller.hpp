@@ -18,13 +18,14 @@ struct StepStatistics {
   long rejected_newton = 0;
   long rejected_singular = 0;
   long newton_iterations = 0;  ///< over all attempted steps
+  long tangents = 0;           ///< Newton iterations that assembled and factorised a fresh tangent
   double h_min = 0, h_max = 0; ///< smallest and largest accepted step [s]
   /// Per unknown (the first of a node's translation or rotation, or a joint variable): how many times its local
   /// error weighed most in a step the estimate shrank or rejected.
   std::map<int, long> limited_by;
   long rejected() const { return rejected_error + rejected_event + rejected_newton + rejected_singular; }
-  /// One line: "steps: N accepted, M rejected (a error, b event, c Newton, d singular); ...; local error limited
-  /// the step most at <unknown> (k times)".
+  /// One line: "steps: N accepted, M rejected (a error, b event, c Newton, d singular); i Newton iterations (t with a fresh
+  /// tangent); ...; local error limited the step most at <unknown> (k times)".
   std::string Summary(const Model& model) const;
 };
 

@@ -172,14 +172,14 @@ void BeamElement::EvaluateStep(const StepContext& ctx, Field::Vector* forces, Fi
   step.mid->AddTangent(stress.stress, nullptr, &K_mid);
   step.to_mid.ApplyToColumns(n, &K_mid);
   *K += K_mid;
-  AddStepStressTangent(step, stress, K);
+  AddStepStressTangent(step, stress, K_mid, K);
 }
 
 void BeamElement::AddCorrectionDerivative(const StepFields& step, double value, const Field::Vector& derivative,
                                           Field::Matrix* K) const {
-  // d/dd [value W d / (d^T W d)].
-  K->noalias() += step.Wd * derivative.transpose() / step.norm;
-  K->noalias() -= (2.0 * value / (step.norm * step.norm)) * step.Wd * step.Wd.transpose();
+  // d/dd [value W d / (d^T W d)] = W d [derivative / n - 2 value W d / n^2]^T + (value / n) W, n = d^T W d.
+  const Field::Vector row = derivative / step.norm - (2.0 * value / (step.norm * step.norm)) * step.Wd;
+  K->noalias() += step.Wd * row.transpose();
   K->diagonal() += (value / step.norm) * step.W;
 }
 
@@ -211,27 +211,32 @@ BeamElement::StepStress BeamElement::StepStresses(const StepContext& ctx, const 
   return stress;
 }
 
-void BeamElement::AddStepStressTangent(const StepFields& step, const StepStress& stress, Field::Matrix* K) const {
-  // The material part B_mid^T rate B_end and the derivative of the gap term; the geometric part came with
-  // the middle configuration's tangent.
+void BeamElement::AddStepStressTangent(const StepFields& step, const StepStress& stress, const Field::Matrix& K_mid,
+                                       Field::Matrix* K) const {
+  // The material part B_mid^T rate B_end and the derivative of the gap term; the geometric part K_mid came
+  // with the middle configuration's tangent.
   const int n = shape_.num_nodes(), dofs = 6 * n;
   const bool moved = step.norm > 0.0;
-  std::array<Field::Jacobian, BeamShape::kMaxPoints> d_derivatives;
-  if (moved) d_derivatives = step.mid->StrainJacobianDerivatives(step.d);
+  bool any_gap = false;
   Field::Vector dgap_work = Field::Vector::Zero(dofs);
   for (int g = 0; g < step.mid->num_points(); ++g) {
     Field::Jacobian B_end = step.end->StrainJacobian(g);
     step.to_end.ApplyToColumns(n, &B_end);
-    K->noalias() += stress.B_mid[g].transpose() * stress.rate[g] * B_end;
+    const Field::Jacobian rate_B_end = stress.rate[g] * B_end;
+    K->noalias() += stress.B_mid[g].transpose() * rate_B_end;
     if (!moved) continue;
     dgap_work.noalias() += B_end.transpose() * (stress.rate[g].transpose() * stress.gap[g]);
     if (stress.gap[g].isZero(0.0)) continue;
-    Field::Jacobian dgap = d_derivatives[g];
-    step.to_mid.ApplyToColumns(n, &dgap);
-    dgap = B_end - stress.B_mid[g] - dgap;
-    dgap_work.noalias() += dgap.transpose() * stress.stress[g];
+    any_gap = true;
+    dgap_work.noalias() += (B_end - stress.B_mid[g]).transpose() * stress.stress[g];
   }
-  if (moved) AddCorrectionDerivative(step, stress.gap_work, dgap_work, K);
+  if (!moved) return;
+  // The gap's derivative through B_mid at fixed d, summed against the stresses, is K_mid^T d: both are the
+  // second derivative of stress . strain at the middle configuration (BeamStrainField::AddTangent). It is
+  // taken over every point once any gap is above round-off (a point whose gap was cut to zero at round-off
+  // then contributes the derivative of its uncut gap, which only the convergence rate sees).
+  if (any_gap) dgap_work.noalias() -= K_mid.transpose() * step.d;
+  AddCorrectionDerivative(step, stress.gap_work, dgap_work, K);
 }
 
 void BeamElement::AddResidual(const StepContext& ctx, Eigen::Ref<Eigen::VectorXd> r,

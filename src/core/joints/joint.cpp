@@ -131,8 +131,11 @@ void Joint::AddResidualAndTangent(const StepContext& ctx, Eigen::Ref<Eigen::Vect
   J->block(n, 0, num_constraints_, n) += e.D;
   if (!ctx.geometric_stiffness) return;
   // d(G^T lambda)/d(increment k): the exact variation of every discrete gradient along increment k
-  // (docs/theory.md, "Geometric stiffness of constraints").
+  // (docs/theory.md, "Geometric stiffness of constraints"). Node translations enter the rows only through
+  // x_b - x_a, whose discrete gradient is the identity whatever the step, so G does not vary along them.
   for (int k = 0; k < n; ++k) {
+    const bool node_translation = k < 6 * sides.num_nodes && k % 6 < 3;
+    if (node_translation) continue;
     const Evaluation varied = Evaluate(sides, /*with_derivative=*/false, PathDirection{k, ctx.at_end()});
     J->block(0, k, n, 1) += varied.G_variation.transpose() * lambda;
   }

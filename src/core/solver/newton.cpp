@@ -65,6 +65,7 @@ NewtonReport SolveNewton(const Model& model, SparseSystem* system, double tol, i
   double previous_size = std::numeric_limits<double>::infinity();
   for (int iteration = 1; iteration <= max_iterations; ++iteration) {
     report.iterations = iteration;
+    report.tangents += refresh ? 1 : 0;
     system->Assemble(evaluate(iteration, refresh), refresh);
     const ResidualCheck check = CheckResidual(model, *system);
     report.force_residual = check.force;
