@@ -295,6 +295,7 @@ Case DynamicCase(const ElementState& state, test::Random* random) {
   Case c;
   c.ctx.mode = AnalysisMode::kDynamic;
   c.ctx.h = 0.01;
+  c.ctx.geometric_stiffness = true;  // the exact tangent (a step's first tangent leaves the geometric part out)
   for (const NodeState& n : state.nodes) {
     Vec6 increment;
     increment << random->Vector(0.05), random->Vector(0.3);
@@ -340,6 +341,47 @@ TEST(BeamElement, DynamicTangentWithSchemeDissipationIsExact) {
       ExpectTangentMatches(element, c, "dynamic order " + std::to_string(order) + " damping " +
                                            std::to_string(damping) + " with the scheme's dissipation");
     }
+  }
+}
+
+// A step's first tangent (ctx.geometric_stiffness off) leaves out the geometric stiffness of the section forces,
+// which the predictor's spurious stretch would make up (docs/theory.md, "Newton iteration"): it equals the exact
+// tangent where the step's stresses vanish (an unstrained straight beam turned rigidly), and differs from it on
+// a bent beam.
+TEST(BeamElement, FirstTangentOfAStepLeavesOutOnlyTheGeometricStiffness) {
+  test::Random random(27);
+  for (int order = 1; order <= 3; ++order) {
+    const double length = 0.7;
+    const BeamElement element("e", NodeIndices(order), length, Section(&random), 0.02);
+    const Mat3 R0 = random.Rotation();
+    const Vec3 x0 = random.Vector(2.0), turn = random.Vector(0.3), shift = random.Vector(0.05);
+    Case rigid;
+    rigid.ctx.mode = AnalysisMode::kDynamic;
+    rigid.ctx.h = 0.01;
+    for (int k = 0; k <= order; ++k) {
+      NodeState n;
+      n.x = x0 + R0 * Vec3(length * k / order, 0.0, 0.0);
+      n.R = R0;
+      Vec6 increment;
+      increment << (Exp(turn) - Mat3::Identity()) * (n.x - x0) + shift, R0.transpose() * turn;
+      rigid.steps.push_back(MakeNodeStep(n, increment, AnalysisMode::kDynamic));
+    }
+    rigid.Refresh();
+    const Eigen::MatrixXd first = test::LocalTangent(element, rigid.ctx);
+    rigid.ctx.geometric_stiffness = true;
+    const Eigen::MatrixXd exact = test::LocalTangent(element, rigid.ctx);
+    // Both are sums of the same material terms of size |C| / length; what is left is round-off of the
+    // strains of a rigid motion (eps |C| per term).
+    EXPECT_LT((first - exact).cwiseAbs().maxCoeff(), 1.0e-10 * test::MaxAbs(exact)) << "order " << order;
+
+    Case bent = DynamicCase(BentElement(order, &random), &random);
+    bent.Refresh();
+    const Eigen::MatrixXd bent_exact = test::LocalTangent(element, bent.ctx);
+    bent.ctx.geometric_stiffness = false;
+    // The bent beam's stresses are of the order of its stiffness: the geometric part is a sizeable fraction.
+    EXPECT_GT((test::LocalTangent(element, bent.ctx) - bent_exact).cwiseAbs().maxCoeff(),
+              1.0e-3 * test::MaxAbs(bent_exact))
+        << "order " << order;
   }
 }
 

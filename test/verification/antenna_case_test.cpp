@@ -67,5 +67,24 @@ TEST(AntennaCase, FrictionVariantWithFrictionlessFirstHingeRunsToItsEnd) {
   ExpectRunsToItsEnd(spec, "friction, B1 frictionless");
 }
 
+// The antenna with flexible panels and the friction and stops of the friction case (test/data): beams, friction
+// and stops in one model. At its fixed 0.01 s steps it failed at t = 0.056 s (a stop or friction event cut the
+// step below dt_min) while each step's first tangent took the geometric stiffness of the predictor's spurious
+// beam stresses; it now runs to its end, as it does with adaptive steps.
+ModelSpec FlexibleFrictionCase() {
+  const std::string source = std::string(FLEXMBD_SOURCE_DIR);
+  return LoadModelSpec(source + "/config/antenna/antenna.urdf", source + "/test/data/yaml/antenna_flexible_friction.yaml");
+}
+
+TEST(AntennaCase, FlexibleFrictionCaseRunsToItsEndAtFixedSteps) {
+  ExpectRunsToItsEnd(FlexibleFrictionCase(), "flexible friction, fixed steps");
+}
+
+TEST(AntennaCase, FlexibleFrictionCaseRunsToItsEndWithAdaptiveSteps) {
+  ModelSpec spec = FlexibleFrictionCase();
+  spec.solver.adaptive = true;
+  ExpectRunsToItsEnd(spec, "flexible friction, adaptive steps");
+}
+
 }  // namespace
 }  // namespace flexmbd

@@ -82,7 +82,9 @@ struct StepContext {
   const std::vector<VariableStep>* variables = nullptr;
   const Eigen::VectorXd* lambda = nullptr;  ///< trial multipliers (num_multipliers)
   const std::vector<EffectState>* effects = nullptr;  ///< trial modes of the effects with modes
-  bool geometric_stiffness = false;  ///< add the second-derivative terms of constraint forces to the tangent
+  /// Add the stress-dependent (geometric) terms to the tangent: the second derivatives of constraint forces and
+  /// loads, and in a dynamic step the geometric stiffness of beam section forces.
+  bool geometric_stiffness = false;
   /// Energy-decaying coefficient alpha of each element's own stretch, by Element::index() (null: none).
   const std::vector<double>* element_alpha = nullptr;
   /// True when forces are evaluated at the end configuration (start moved to the end, theta = 0).

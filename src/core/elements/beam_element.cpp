@@ -168,10 +168,17 @@ void BeamElement::EvaluateStep(const StepContext& ctx, Field::Vector* forces, Fi
   *forces += stress.forces;
   if (!tangent) return;
   // The stresses' geometric part at the middle configuration (B12), then their material part and the gap's.
+  // The first tangent of a step (without ctx.geometric_stiffness) is assembled at the predictor, whose stresses
+  // are spurious: coasting along the tangents of a turning beam stretches it by O(theta^2), and the geometric
+  // stiffness of EA times that stretch can outweigh the inertia and make the first Newton increments grow. It
+  // leaves the geometric part out, as it does for constraint forces and loads (docs/theory.md, "Newton
+  // iteration"); the tangent refreshed when that one converges slowly is exact.
   Field::Matrix K_mid = Field::Matrix::Zero(dofs, dofs);
-  step.mid->AddTangent(stress.stress, nullptr, &K_mid);
-  step.to_mid.ApplyToColumns(n, &K_mid);
-  *K += K_mid;
+  if (ctx.geometric_stiffness) {
+    step.mid->AddTangent(stress.stress, nullptr, &K_mid);
+    step.to_mid.ApplyToColumns(n, &K_mid);
+    *K += K_mid;
+  }
   AddStepStressTangent(step, stress, K_mid, K);
 }
 

@@ -150,13 +150,16 @@ StepResult EnergyDecayingIntegrator::Step(const State& start, double h, State* e
   // iteration").
   const Eigen::VectorXd coasting = CoastingIncrements(start, h);
   int mode_revisions = 0;
+  // A step redone for its dissipation or modes costs the iterations of every solve: they are all counted.
+  int iterations = 0, fresh_tangents = 0;
   while (true) {
     int tangents = 0;
     result.newton = SolveNewton(
         model_, system_, model_.solver().tol, model_.solver().max_iterations, NoiseFloor(model_, start),
         [&](int, bool with_tangent) -> const StepContext& {
           // The first tangent assembled in a step leaves out the geometric stiffness of constraint forces and
-          // loads (O(h^2) against inertia); one assembled because that one converged slowly includes it.
+          // loads (O(h^2) against inertia) and of beam section forces (spurious at the predictor); one
+          // assembled because that one converged slowly includes it.
           tangents += with_tangent ? 1 : 0;
           builder_.set_geometric_stiffness(with_tangent && tangents > 1);
           builder_.set_variable_dissipation(coefficients.variables);
@@ -168,6 +171,10 @@ StepResult EnergyDecayingIntegrator::Step(const State& start, double h, State* e
           return (unknowns.head(n_kinematic) - coasting).cwiseAbs().maxCoeff() + h * h * kAccelerationFloor;
         },
         system_->factorisation_key() == h);
+    iterations += result.newton.iterations;
+    fresh_tangents += result.newton.tangents;
+    result.newton.iterations = iterations;
+    result.newton.tangents = fresh_tangents;
     // The factorisation now belongs to a step of this size, and may serve the next one of the same size.
     system_->set_factorisation_key(result.newton.converged ? h : std::numeric_limits<double>::quiet_NaN());
     if (result.newton.singular) {
