@@ -81,8 +81,7 @@ class BeamElement : public Element {
     double gap_work = 0;  // sum_g gap . stress
   };
   StepStress StepStresses(const StepContext& ctx, const StepFields& step) const;
-  // K_mid: the geometric tangent of the stresses at the middle configuration, in the step's increments (zero in
-  // a first tangent, which leaves it out).
+  // K_mid: the geometric tangent of the stresses at the middle configuration, in the step's increments.
   void AddStepStressTangent(const StepFields& step, const StepStress& stress, const Field::Matrix& K_mid,
                             Field::Matrix* K) const;
   // K += d/dd [value W d / (d^T W d)] given d value / dd: the gap correction of (B5).
