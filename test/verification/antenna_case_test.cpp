@@ -73,7 +73,8 @@ TEST(AntennaCase, FrictionVariantWithFrictionlessFirstHingeRunsToItsEnd) {
 // beam stresses; it now runs to its end, as it does with adaptive steps.
 ModelSpec FlexibleFrictionCase() {
   const std::string source = std::string(FLEXMBD_SOURCE_DIR);
-  return LoadModelSpec(source + "/config/antenna/antenna.urdf", source + "/test/data/yaml/antenna_flexible_friction.yaml");
+  return LoadModelSpec(source + "/config/antenna/antenna.urdf",
+                       source + "/test/data/yaml/antenna_flexible_friction.yaml");
 }
 
 TEST(AntennaCase, FlexibleFrictionCaseRunsToItsEndAtFixedSteps) {

@@ -24,8 +24,8 @@ struct StepStatistics {
   /// error weighed most in a step the estimate shrank or rejected.
   std::map<int, long> limited_by;
   long rejected() const { return rejected_error + rejected_event + rejected_newton + rejected_singular; }
-  /// One line: "steps: N accepted, M rejected (a error, b event, c Newton, d singular); i Newton iterations (t with a fresh
-  /// tangent); ...; local error limited the step most at <unknown> (k times)".
+  /// One line: "steps: N accepted, M rejected (a error, b event, c Newton, d singular); i Newton iterations (t
+  /// with a fresh tangent); ...; local error limited the step most at <unknown> (k times)".
   std::string Summary(const Model& model) const;
 };
 

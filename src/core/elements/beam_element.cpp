@@ -228,8 +228,7 @@ void BeamElement::AddStepStressTangent(const StepFields& step, const StepStress&
   for (int g = 0; g < step.mid->num_points(); ++g) {
     Field::Jacobian B_end = step.end->StrainJacobian(g);
     step.to_end.ApplyToColumns(n, &B_end);
-    const Field::Jacobian rate_B_end = stress.rate[g] * B_end;
-    K->noalias() += stress.B_mid[g].transpose() * rate_B_end;
+    K->noalias() += stress.B_mid[g].transpose() * stress.rate[g] * B_end;
     if (!moved) continue;
     dgap_work.noalias() += B_end.transpose() * (stress.rate[g].transpose() * stress.gap[g]);
     if (stress.gap[g].isZero(0.0)) continue;
