@@ -16,6 +16,7 @@
 #include <Eigen/Core>
 
 #include "flexmbd/solver/step_context_builder.hpp"
+#include "flexmbd/solver/dissipation_judging.hpp"
 #include "flexmbd/solver/time_integrator.hpp"
 
 namespace flexmbd {
@@ -37,6 +38,7 @@ class EnergyDecayingIntegrator : public TimeIntegrator {
     std::vector<NodeSchemeCoefficients> nodes;
     std::vector<double> variables;
     std::vector<double> elements;  ///< by Element::index(): elements that dissipate on their own stretch
+    bool any() const;              ///< some coefficient is nonzero
   };
   // Chosen before the step from the previous steps' accelerations.
   Coefficients Choose(const State& start) const;
@@ -59,8 +61,9 @@ class EnergyDecayingIntegrator : public TimeIntegrator {
   SparseSystem* system_;
   StepContextBuilder builder_;
   double alpha_inf_;
-  std::vector<Mat3> node_inertia_;
-  std::vector<EffectState> modes_;  ///< trial modes of the step being solved  ///< rotational inertia of each node's body, weights the dissipation check
+  std::vector<Mat3> node_inertia_;  ///< rotational inertia of each node's body, weights the dissipation check
+  std::vector<EffectState> modes_;  ///< trial modes of the step being solved
+  DissipationJudging judging_;      ///< when a step judges its dissipation terms, learnt from the steps taken
 };
 
 }  // namespace flexmbd
