@@ -15,8 +15,8 @@
 
 #include <Eigen/Core>
 
-#include "flexmbd/solver/step_context_builder.hpp"
 #include "flexmbd/solver/dissipation_judging.hpp"
+#include "flexmbd/solver/step_context_builder.hpp"
 #include "flexmbd/solver/time_integrator.hpp"
 
 namespace flexmbd {
