@@ -291,6 +291,32 @@ TEST(BeamElement, EndPointTangentWithDampingIsExact) {
   }
 }
 
+TEST(BeamElement, EndPointRatePartsAreTheDampingDerivatives) {
+  // Reference: central differences of the end-point forces in the end rates (v_f, w_f): D is B^T mu C B (B7);
+  // nothing reads accelerations (M = 0); statics and the dynamic step read no end rates. The forces are linear
+  // in the rates, so the differences are exact to round-off, ~1e-16 |r| / 1e-6 = 1e-10 of the largest entry.
+  constexpr double kRateStep = 1.0e-6, kRateTolerance = 1.0e-8;
+  test::Random random(24);
+  for (int order = 1; order <= 3; ++order) {
+    const ElementState state = BentElement(order, &random);
+    const BeamElement element("e", NodeIndices(order), state.length, Section(&random), 0.05);
+    EXPECT_FALSE(element.HasRateParts(AnalysisMode::kStatic));
+    EXPECT_FALSE(element.HasRateParts(AnalysisMode::kDynamic));
+    Case c = StaticCase(state, AnalysisMode::kEndPoint);
+    for (size_t k = 0; k < c.steps.size(); ++k) {
+      c.steps[k].v_f = state.nodes[k].v;
+      c.steps[k].w_f = state.nodes[k].w;
+    }
+    c.Refresh();
+    const test::RateParts parts = test::LocalRateParts(element, c.ctx);
+    const Eigen::MatrixXd D = test::RateDifferences(element, c.ctx, false, kRateStep);
+    EXPECT_GT(test::MaxAbs(D), 0.0);
+    EXPECT_LT(test::MaxAbs(parts.D - D), kRateTolerance * test::MaxAbs(D)) << "order " << order;
+    EXPECT_EQ(test::MaxAbs(parts.M), 0.0);
+    EXPECT_EQ(test::MaxAbs(test::RateDifferences(element, c.ctx, true, kRateStep)), 0.0);
+  }
+}
+
 Case DynamicCase(const ElementState& state, test::Random* random) {
   Case c;
   c.ctx.mode = AnalysisMode::kDynamic;

@@ -52,7 +52,7 @@ Dense AssembleDense(const Model& model, const StepContext& ctx) {
     Eigen::VectorXd r = Eigen::VectorXd::Zero(m), mag = Eigen::VectorXd::Zero(m);
     Eigen::MatrixXd J = Eigen::MatrixXd::Zero(m, m);
     e->AddResidual(ctx, r, mag);
-    e->AddTangent(ctx, J);
+    AddSchemeTangent(*e, ctx, J);
     const std::vector<int>& u = e->unknowns();
     for (int i = 0; i < m; ++i) {
       d.residual[u[i]] += r[i];

@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <random>
+#include <vector>
 
 #include <Eigen/Core>
 
@@ -62,7 +63,7 @@ double MaxAbs(const Eigen::MatrixBase<Derived>& m) {
   return m.size() == 0 ? 0.0 : m.cwiseAbs().maxCoeff();
 }
 
-// An element's local residual (AddResidual) and tangent (AddTangent) for a context, from zero.
+// An element's local residual (AddResidual) and whole tangent (AddSchemeTangent) for a context, from zero.
 inline Eigen::VectorXd LocalResidual(const Element& e, const StepContext& ctx) {
   Eigen::VectorXd r = Eigen::VectorXd::Zero(e.num_local()), magnitude = Eigen::VectorXd::Zero(e.num_local());
   e.AddResidual(ctx, r, magnitude);
@@ -71,8 +72,50 @@ inline Eigen::VectorXd LocalResidual(const Element& e, const StepContext& ctx) {
 
 inline Eigen::MatrixXd LocalTangent(const Element& e, const StepContext& ctx) {
   Eigen::MatrixXd J = Eigen::MatrixXd::Zero(e.num_local(), e.num_local());
-  e.AddTangent(ctx, J);
+  AddSchemeTangent(e, ctx, J);
   return J;
+}
+
+// Central differences of an element's residual with respect to the end rates (v_f, w_f, qdot_f), or with
+// `accelerations` the end accelerations (vdot_f, wdot_f), of each local unknown, all else held: the reference
+// for Element::AddRateParts. Multiplier columns and variable accelerations are left zero (no element reads them).
+inline Eigen::MatrixXd RateDifferences(const Element& e, StepContext ctx, bool accelerations, double step) {
+  std::vector<NodeStep> nodes = ctx.nodes != nullptr ? *ctx.nodes : std::vector<NodeStep>{};
+  std::vector<VariableStep> variables = ctx.variables != nullptr ? *ctx.variables : std::vector<VariableStep>{};
+  ctx.nodes = &nodes;
+  ctx.variables = &variables;
+  const int node_unknowns = 6 * static_cast<int>(nodes.size());
+  Eigen::MatrixXd differences = Eigen::MatrixXd::Zero(e.num_local(), e.num_local());
+  for (int j = 0; j < e.num_local(); ++j) {
+    const int u = e.unknowns()[j];
+    double* rate = nullptr;
+    if (u < node_unknowns) {
+      NodeStep& s = nodes[u / 6];
+      Vec3& moved = u % 6 < 3 ? (accelerations ? s.vdot_f : s.v_f) : (accelerations ? s.wdot_f : s.w_f);
+      rate = &moved[u % 3];
+    } else if (u - node_unknowns < static_cast<int>(variables.size()) && !accelerations) {
+      rate = &variables[u - node_unknowns].qdot_f;
+    }
+    if (rate == nullptr) continue;
+    const double held = *rate;
+    *rate = held + step;
+    const Eigen::VectorXd plus = LocalResidual(e, ctx);
+    *rate = held - step;
+    differences.col(j) = (plus - LocalResidual(e, ctx)) / (2.0 * step);
+    *rate = held;
+  }
+  return differences;
+}
+
+// An element's rate parts (AddRateParts), from zero.
+struct RateParts {
+  Eigen::MatrixXd D, M;
+};
+inline RateParts LocalRateParts(const Element& e, const StepContext& ctx) {
+  RateParts parts{Eigen::MatrixXd::Zero(e.num_local(), e.num_local()),
+                  Eigen::MatrixXd::Zero(e.num_local(), e.num_local())};
+  if (e.HasRateParts(ctx.mode)) e.AddRateParts(ctx, parts.D, parts.M);
+  return parts;
 }
 
 }  // namespace test

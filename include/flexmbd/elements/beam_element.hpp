@@ -37,6 +37,10 @@ class BeamElement : public Element {
   void AddTangent(const StepContext& ctx, Eigen::Ref<Eigen::MatrixXd> J) const override;
   void AddResidualAndTangent(const StepContext& ctx, Eigen::Ref<Eigen::VectorXd> r,
                              Eigen::Ref<Eigen::VectorXd> magnitude, Eigen::Ref<Eigen::MatrixXd>* J) const override;
+  /// Structural damping at the end point (generalized-alpha, eigen-analysis) reads the end rates (B7).
+  bool HasRateParts(AnalysisMode mode) const override;
+  void AddRateParts(const StepContext& ctx, Eigen::Ref<Eigen::MatrixXd> D,
+                    Eigen::Ref<Eigen::MatrixXd> M) const override;
   void AddEnergy(const State& state, const Vec3& gravity, EnergyTally* tally) const override;
   /// Energy dissipated over the step by structural damping (B7) and by the scheme on the strains (B13).
   void AddStepWork(const StepContext& ctx, StepWork* work) const override;
@@ -65,6 +69,8 @@ class BeamElement : public Element {
   // The element's generalised forces for the context, added to forces, and their derivative with respect to
   // the element's unknowns, added to K when K is not null.
   void Evaluate(const StepContext& ctx, Field::Vector* forces, Field::Matrix* K) const;
+  // The end configuration of the element's nodes and their end rates (v, w) in local order.
+  void EndNodesAndRates(const StepContext& ctx, Field::Nodes* end, Field::Vector* rates) const;
   // Statics and the end point: the gradient at the end configuration, plus damping at the end point.
   void EvaluateAtEnd(const StepContext& ctx, Field::Vector* forces, Field::Matrix* K) const;
   // The dynamic step: the discrete gradient (B5) and the step's damping forces (B7), (B13).

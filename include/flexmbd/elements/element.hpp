@@ -2,7 +2,9 @@
 /// @file
 /// The one element interface (DESIGN.md): bodies, joints, effects and loads all declare the unknowns they
 /// couple, add their residual and their tangent. The same code serves static and dynamic analyses; the
-/// StepContext says which.
+/// StepContext says which. The tangent comes in parts (DESIGN.md): the stiffness part at held end rates, and the
+/// derivatives with respect to end rates and accelerations, which each scheme combines with its own
+/// coefficients (AddSchemeRateTerms) and eigen-analysis takes as they are (damping and mass matrices).
 ///
 /// Unknowns of a step (docs/theory.md, "Unknowns"): per node the increment (dx in W, theta in the node frame at
 /// the start of the step, R_f = R_i Exp(theta)); per joint variable its increment dq; the multipliers lambda.
@@ -44,10 +46,12 @@ struct NodeStep {
   Mat3 S;              ///< SecantOperator(theta)
   Mat3 T;              ///< RightJacobian(theta)
   Vec3 v_i, v_f, w_i, w_f;
-  double dvf_ddx = 0;  ///< d v_f / d dx (scalar times identity)
-  double dwf_dtheta = 0;
   Vec3 vdot_f = Vec3::Zero(), wdot_f = Vec3::Zero();  ///< end accelerations (kEndPoint only)
-  double dacc = 0;     ///< d vdot_f / d dx = d wdot_f / d theta (kEndPoint only)
+  /// The scheme's coefficients, which combine an element's rate parts into its tangent (AddSchemeRateTerms);
+  /// elements do not read them.
+  double dvf_ddx = 0;     ///< d v_f / d dx (scalar times identity)
+  double dwf_dtheta = 0;  ///< d w_f / d theta
+  double dacc = 0;        ///< d vdot_f / d dx = d wdot_f / d theta (kEndPoint only)
 };
 
 /// Builds the configuration part of a NodeStep from the start state and the increment (dx, theta). In the
@@ -68,7 +72,8 @@ struct VariableStep {
   double q_i = 0, q_f = 0, qdot_i = 0;
   double alpha = 0;      ///< dissipation coefficient of the energy-decaying scheme for springs on q (>= 0)
   double dq_lagged = 0;  ///< the previous step's increment scaled to this step, (h / h_prev) dq_prev
-  double qdot_f = 0, dqdotf_dq = 0;  ///< end rate and its derivative (kEndPoint only)
+  double qdot_f = 0;     ///< end rate (kEndPoint only)
+  double dqdotf_dq = 0;  ///< the scheme's d qdot_f / d dq (kEndPoint only; AddSchemeRateTerms)
 };
 
 /// What an element may read during one evaluation.
@@ -106,6 +111,9 @@ struct StepWork {
   double numerical = 0;   ///< by the integrator's dissipation in elastic elements (>= 0) [J]
 };
 
+/// Most local unknowns an element with rate parts may have: a cubic beam's 4 nodes.
+constexpr int kMaxRatePartUnknowns = 24;
+
 /// Base of every element. Local unknowns are a list of global indices fixed at model build.
 class Element {
  public:
@@ -120,8 +128,20 @@ class Element {
   virtual void AddResidual(const StepContext& ctx, Eigen::Ref<Eigen::VectorXd> r,
                            Eigen::Ref<Eigen::VectorXd> magnitude) const = 0;
 
-  /// Adds the local tangent dr/d(unknowns) (num_local x num_local).
+  /// Adds the stiffness part of the local tangent (num_local x num_local): dr/d(unknowns) with the end rates and
+  /// accelerations of the nodes and joint variables held. Elements whose residual reads those rates give their
+  /// derivatives apart (AddRateParts); the scheme combines the parts with its own coefficients (AddSchemeTangent).
   virtual void AddTangent(const StepContext& ctx, Eigen::Ref<Eigen::MatrixXd> J) const = 0;
+
+  /// True when the residual in this mode reads end rates or accelerations (NodeStep v_f, w_f, vdot_f, wdot_f;
+  /// VariableStep qdot_f), so that AddRateParts adds something.
+  virtual bool HasRateParts(AnalysisMode /*mode*/) const { return false; }
+
+  /// Adds the rate parts of the local tangent: D = dr/d(end rates) and M = dr/d(end accelerations), both
+  /// num_local x num_local, columns in local order (node translation rates v_f, body-frame rotation rates w_f,
+  /// joint variable rates qdot_f; multiplier columns stay zero). Only called when HasRateParts(ctx.mode).
+  virtual void AddRateParts(const StepContext& /*ctx*/, Eigen::Ref<Eigen::MatrixXd> /*D*/,
+                            Eigen::Ref<Eigen::MatrixXd> /*M*/) const {}
 
   /// Both at once, for elements that share work between them; J may be null (residual only). The default
   /// calls AddResidual and AddTangent.
@@ -158,5 +178,14 @@ class Element {
  private:
   int index_ = -1;
 };
+
+/// Adds to J the rate parts of an element combined with the scheme's coefficients of ctx, column by column:
+/// D diag(d rate / d increment) + M diag(d acceleration / d increment), the coefficients being NodeStep::dvf_ddx,
+/// dwf_dtheta and dacc of the column's node and VariableStep::dqdotf_dq of its variable. With the stiffness part
+/// (Element::AddTangent) this makes the tangent of the scheme's equations. No heap allocation.
+void AddSchemeRateTerms(const Element& element, const StepContext& ctx, Eigen::Ref<Eigen::MatrixXd> J);
+
+/// The element's whole tangent for ctx added to J: AddTangent and AddSchemeRateTerms.
+void AddSchemeTangent(const Element& element, const StepContext& ctx, Eigen::Ref<Eigen::MatrixXd> J);
 
 }  // namespace flexmbd

@@ -18,6 +18,9 @@ class RigidBody : public Element {
   void AddResidual(const StepContext& ctx, Eigen::Ref<Eigen::VectorXd> r,
                    Eigen::Ref<Eigen::VectorXd> magnitude) const override;
   void AddTangent(const StepContext& ctx, Eigen::Ref<Eigen::MatrixXd> J) const override;
+  bool HasRateParts(AnalysisMode mode) const override;
+  void AddRateParts(const StepContext& ctx, Eigen::Ref<Eigen::MatrixXd> D,
+                    Eigen::Ref<Eigen::MatrixXd> M) const override;
   void AddEnergy(const State& state, const Vec3& gravity, EnergyTally* tally) const override;
 
   int node() const { return node_; }

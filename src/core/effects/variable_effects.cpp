@@ -51,7 +51,13 @@ void VariableDamper::AddResidual(const StepContext& ctx, Eigen::Ref<Eigen::Vecto
 
 void VariableDamper::AddTangent(const StepContext& ctx, Eigen::Ref<Eigen::MatrixXd> J) const {
   if (ctx.mode == AnalysisMode::kDynamic) J(0, 0) += coefficient_ / ctx.h;
-  if (ctx.mode == AnalysisMode::kEndPoint) J(0, 0) += coefficient_ * (*ctx.variables)[variable_].dqdotf_dq;
+}
+
+bool VariableDamper::HasRateParts(AnalysisMode mode) const { return mode == AnalysisMode::kEndPoint; }
+
+void VariableDamper::AddRateParts(const StepContext&, Eigen::Ref<Eigen::MatrixXd> D,
+                                  Eigen::Ref<Eigen::MatrixXd>) const {
+  D(0, 0) += coefficient_;
 }
 
 void VariableDamper::AddStepWork(const StepContext& ctx, StepWork* work) const {

@@ -10,6 +10,7 @@ namespace flexmbd {
 namespace {
 
 using Field = BeamStrainField;
+static_assert(Field::kMaxDofs <= kMaxRatePartUnknowns, "a beam's rate parts fit AddSchemeRateTerms' blocks");
 
 // The chain rule from one configuration's perturbations to the step's increments: node k's perturbation is
 // (translation_rate dx_k, rotation_k theta_k). Column blocks of M are multiplied in place.
@@ -84,20 +85,25 @@ void BeamElement::Evaluate(const StepContext& ctx, Field::Vector* forces, Field:
   }
 }
 
-void BeamElement::EvaluateAtEnd(const StepContext& ctx, Field::Vector* forces, Field::Matrix* K) const {
+void BeamElement::EndNodesAndRates(const StepContext& ctx, Field::Nodes* end, Field::Vector* rates) const {
   const int n = shape_.num_nodes();
-  Field::Nodes end;
-  Field::Vector rates(6 * n);
+  rates->resize(6 * n);
   for (int k = 0; k < n; ++k) {
     const NodeStep& s = (*ctx.nodes)[nodes_[k]];
-    end.x[k] = s.x_f;
-    end.R[k] = s.R_f;
-    rates.segment<3>(6 * k) = s.v_f;
-    rates.segment<3>(6 * k + 3) = s.w_f;
+    end->x[k] = s.x_f;
+    end->R[k] = s.R_f;
+    rates->segment<3>(6 * k) = s.v_f;
+    rates->segment<3>(6 * k + 3) = s.w_f;
   }
+}
+
+void BeamElement::EvaluateAtEnd(const StepContext& ctx, Field::Vector* forces, Field::Matrix* K) const {
+  Field::Nodes end;
+  Field::Vector rates;
+  EndNodesAndRates(ctx, &end, &rates);
   const Field field(shape_, end, K != nullptr ? Field::Order::kSecond : Field::Order::kFirst);
   // Static analysis has no rates; at the end point the strain rate is B (v, w) (B7).
-  const bool damped = ctx.mode == AnalysisMode::kEndPoint && damping_ > 0.0;
+  const bool damped = HasRateParts(ctx.mode);
   Field::PointVectors stress;
   std::array<Field::Jacobian, BeamShape::kMaxPoints> B;
   for (int g = 0; g < field.num_points(); ++g) {
@@ -112,16 +118,27 @@ void BeamElement::EvaluateAtEnd(const StepContext& ctx, Field::Vector* forces, F
   if (K == nullptr) return;
   field.AddTangent(stress, &weighted_stiffness_, K);
   if (!damped) return;
-  // d/dp [B (v, w)]: the rates move with the unknowns by dvf_ddx and dwf_dtheta, and B with the configuration.
+  // d/dp [B (v, w)] at held rates: B moves with the configuration; the part through the rates is AddRateParts'.
   const std::array<Field::Jacobian, BeamShape::kMaxPoints> rate_derivatives = field.StrainJacobianDerivatives(rates);
   for (int g = 0; g < field.num_points(); ++g) {
-    Field::Jacobian rate_derivative = rate_derivatives[g];
-    for (int k = 0; k < n; ++k) {
-      const NodeStep& s = (*ctx.nodes)[nodes_[k]];
-      rate_derivative.middleCols<3>(6 * k) += s.dvf_ddx * B[g].middleCols<3>(6 * k);
-      rate_derivative.middleCols<3>(6 * k + 3) += s.dwf_dtheta * B[g].middleCols<3>(6 * k + 3);
-    }
-    K->noalias() += B[g].transpose() * (damping_ * weighted_stiffness_[g]) * rate_derivative;
+    K->noalias() += B[g].transpose() * (damping_ * weighted_stiffness_[g]) * rate_derivatives[g];
+  }
+}
+
+bool BeamElement::HasRateParts(AnalysisMode mode) const {
+  return mode == AnalysisMode::kEndPoint && damping_ > 0.0;
+}
+
+void BeamElement::AddRateParts(const StepContext& ctx, Eigen::Ref<Eigen::MatrixXd> D,
+                               Eigen::Ref<Eigen::MatrixXd>) const {
+  // The damping forces B^T mu C B (v, w) of (B7), differentiated with respect to the end rates.
+  Field::Nodes end;
+  Field::Vector rates;
+  EndNodesAndRates(ctx, &end, &rates);
+  const Field field(shape_, end, Field::Order::kFirst);
+  for (int g = 0; g < field.num_points(); ++g) {
+    const Field::Jacobian B = field.StrainJacobian(g);
+    D.noalias() += B.transpose() * (damping_ * weighted_stiffness_[g]) * B;
   }
 }
 

@@ -1,5 +1,7 @@
 #include "flexmbd/elements/element.hpp"
 
+#include "flexmbd/common/error.hpp"
+
 namespace flexmbd {
 
 NodeStep MakeNodeStep(const NodeState& start, const Vec6& increment, AnalysisMode mode) {
@@ -50,6 +52,36 @@ NodeStep PerturbNodeStep(const NodeStep& node, const Vec6& d, AnalysisMode mode)
     increment.tail<3>() += node.theta;
   }
   return MakeNodeStep(start, increment, mode);
+}
+
+void AddSchemeRateTerms(const Element& element, const StepContext& ctx, Eigen::Ref<Eigen::MatrixXd> J) {
+  if (!element.HasRateParts(ctx.mode)) return;
+  using Block = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, kMaxRatePartUnknowns, kMaxRatePartUnknowns>;
+  const int n = element.num_local();
+  FLEXMBD_DEMAND(n <= kMaxRatePartUnknowns);
+  Block D = Block::Zero(n, n), M = Block::Zero(n, n);
+  element.AddRateParts(ctx, D, M);
+  const int node_unknowns = 6 * static_cast<int>(ctx.nodes->size());
+  const int num_variables = ctx.variables != nullptr ? static_cast<int>(ctx.variables->size()) : 0;
+  const int variable_unknowns = node_unknowns + num_variables;
+  for (int j = 0; j < n; ++j) {
+    const int u = element.unknowns()[j];
+    double rate = 0.0, acceleration = 0.0;
+    if (u < node_unknowns) {
+      const NodeStep& s = (*ctx.nodes)[u / 6];
+      rate = u % 6 < 3 ? s.dvf_ddx : s.dwf_dtheta;
+      acceleration = s.dacc;
+    } else if (u < variable_unknowns) {
+      rate = (*ctx.variables)[u - node_unknowns].dqdotf_dq;
+    }
+    if (rate != 0.0) J.col(j) += rate * D.col(j);
+    if (acceleration != 0.0) J.col(j) += acceleration * M.col(j);
+  }
+}
+
+void AddSchemeTangent(const Element& element, const StepContext& ctx, Eigen::Ref<Eigen::MatrixXd> J) {
+  element.AddTangent(ctx, J);
+  AddSchemeRateTerms(element, ctx, J);
 }
 
 }  // namespace flexmbd

@@ -36,18 +36,25 @@ void RigidBody::AddResidual(const StepContext& ctx, Eigen::Ref<Eigen::VectorXd> 
 }
 
 void RigidBody::AddTangent(const StepContext& ctx, Eigen::Ref<Eigen::MatrixXd> J) const {
-  if (ctx.mode == AnalysisMode::kStatic) return;
+  if (ctx.mode != AnalysisMode::kDynamic) return;
+  // d/dtheta [Exp(theta) J w_f] at held w_f = -Exp(theta) Skew(J w_f) T(theta).
+  const NodeStep& n = (*ctx.nodes)[node_];
+  J.bottomRightCorner<3, 3>() -= Exp(n.theta) * Skew(inertia_ * n.w_f) * n.T / ctx.h;
+}
+
+bool RigidBody::HasRateParts(AnalysisMode mode) const { return mode != AnalysisMode::kStatic; }
+
+void RigidBody::AddRateParts(const StepContext& ctx, Eigen::Ref<Eigen::MatrixXd> D,
+                             Eigen::Ref<Eigen::MatrixXd> M) const {
   const NodeStep& n = (*ctx.nodes)[node_];
   if (ctx.mode == AnalysisMode::kEndPoint) {
-    J.topLeftCorner<3, 3>().diagonal().array() += mass_ * n.dacc;
-    J.bottomRightCorner<3, 3>() +=
-        n.dacc * inertia_ + n.dwf_dtheta * (Skew(n.w_f) * inertia_ - Skew(inertia_ * n.w_f));
+    M.topLeftCorner<3, 3>().diagonal().array() += mass_;
+    M.bottomRightCorner<3, 3>() += inertia_;
+    D.bottomRightCorner<3, 3>() += Skew(n.w_f) * inertia_ - Skew(inertia_ * n.w_f);
     return;
   }
-  J.topLeftCorner<3, 3>().diagonal().array() += mass_ * n.dvf_ddx / ctx.h;
-  // d/dtheta [Exp(theta) J w_f] = Exp(theta) (J dw_f/dtheta - Skew(J w_f) T(theta)).
-  const Mat3 E = Exp(n.theta);
-  J.bottomRightCorner<3, 3>() += E * (n.dwf_dtheta * inertia_ - Skew(inertia_ * n.w_f) * n.T) / ctx.h;
+  D.topLeftCorner<3, 3>().diagonal().array() += mass_ / ctx.h;
+  D.bottomRightCorner<3, 3>() += Exp(n.theta) * inertia_ / ctx.h;
 }
 
 void RigidBody::AddEnergy(const State& state, const Vec3& gravity, EnergyTally* tally) const {

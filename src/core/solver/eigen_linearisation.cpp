@@ -1,10 +1,9 @@
-// Linearisation about a state (docs/theory.md, eqs. (E1)-(E3)): K, D, M and B from the elements' end-point
-// tangents, the rotation-rate correction of rotating nodes, and consistent accelerations and multipliers.
+// Linearisation about a state (docs/theory.md, eqs. (E1)-(E3)): K, D, M and B from the parts of the elements'
+// end-point tangents, the rotation-rate correction of rotating nodes, and consistent accelerations and multipliers.
 
 #include <Eigen/Dense>
 #include <Eigen/SparseCore>
 #include <algorithm>
-#include <cmath>
 
 #include "eigen_internal.hpp"
 #include "flexmbd/common/error.hpp"
@@ -32,8 +31,7 @@ constexpr double kSaddleResidual = 1.0e-10;
 // End-point evaluations at one state: node and variable rates and accelerations from the state, no increment.
 class Probe {
  public:
-  Probe(const Model& model, const State& state)
-      : model_(model), builder_(model), num_node_unknowns_(6 * model.num_nodes()) {
+  Probe(const Model& model, const State& state) : builder_(model) {
     Eigen::VectorXd unknowns = Eigen::VectorXd::Zero(model.num_unknowns());
     unknowns.tail(model.num_multipliers()) = state.lambda;
     ctx_ = &builder_.EndPoint(state, unknowns, state.t, 1.0);
@@ -44,30 +42,20 @@ class Probe {
       s.w_i = s.w_f = n.w;
       s.vdot_f = n.a_prev;
       s.wdot_f = n.alpha_prev;
-      s.dvf_ddx = s.dwf_dtheta = s.dacc = 0.0;
     }
-    for (int k = 0; k < model.num_variables(); ++k) {
-      builder_.variables()[k].qdot_f = state.qdot[k];
-      builder_.variables()[k].dqdotf_dq = 0.0;
-    }
+    for (int k = 0; k < model.num_variables(); ++k) builder_.variables()[k].qdot_f = state.qdot[k];
+    builder_.set_geometric_stiffness(true);
   }
 
-  // Local tangent with the given d(velocity)/d(increment) and d(acceleration)/d(increment) on the element's own
-  // unknowns: K + velocity_rate D + acceleration_rate M (+ what the element adds for geometric stiffness).
-  Eigen::MatrixXd Tangent(const Element& e, double velocity_rate, double acceleration_rate, bool geometric) {
-    for (int u : e.unknowns()) {
-      if (u < num_node_unknowns_) {
-        NodeStep& s = builder_.nodes()[u / 6];
-        s.dvf_ddx = s.dwf_dtheta = velocity_rate;
-        s.dacc = acceleration_rate;
-      } else if (model_.is_force_row(u)) {
-        builder_.variables()[u - num_node_unknowns_].dqdotf_dq = velocity_rate;
-      }
-    }
-    builder_.set_geometric_stiffness(geometric);
-    Eigen::MatrixXd J = Eigen::MatrixXd::Zero(e.num_local(), e.num_local());
-    e.AddTangent(*ctx_, J);
-    return J;
+  // The element's tangent parts (Element::AddTangent, AddRateParts): K with the geometric stiffness of
+  // constraint forces and loads, D = dr/d(rates) and M = dr/d(accelerations).
+  void Parts(const Element& e, Eigen::MatrixXd* K, Eigen::MatrixXd* D, Eigen::MatrixXd* M) const {
+    const int n = e.num_local();
+    K->setZero(n, n);
+    D->setZero(n, n);
+    M->setZero(n, n);
+    e.AddTangent(*ctx_, *K);
+    if (e.HasRateParts(ctx_->mode)) e.AddRateParts(*ctx_, *D, *M);
   }
 
   Eigen::VectorXd Residual(const Element& e) const {
@@ -77,22 +65,9 @@ class Probe {
   }
 
  private:
-  const Model& model_;
   StepContextBuilder builder_;
-  const int num_node_unknowns_;
-  StepContext* ctx_ = nullptr;
+  const StepContext* ctx_ = nullptr;
 };
-
-// The rate matrix (D or M) of an element: (J(s) - K0) / s with s a power of two near |K0| / |rate matrix|, so
-// that the subtraction does not lose the rate terms to the round-off of large stiffness terms.
-Eigen::MatrixXd RateMatrix(Probe* probe, const Element& e, const Eigen::MatrixXd& K0, bool velocity) {
-  auto tangent = [&](double s) { return velocity ? probe->Tangent(e, s, 0, false) : probe->Tangent(e, 0, s, false); };
-  const Eigen::MatrixXd first = tangent(1.0) - K0;
-  const double rate = first.cwiseAbs().maxCoeff(), stiffness = K0.cwiseAbs().maxCoeff();
-  if (rate == 0.0 || stiffness <= rate) return first;
-  const double s = std::exp2(std::ceil(std::log2(stiffness / rate)));
-  return (tangent(s) - K0) / s;
-}
 
 // Element-assembled matrices and residual at one state.
 struct Assembled {
@@ -108,16 +83,14 @@ Assembled Assemble(const Model& model, const State& state) {
   Triplets k, d, mass, b, gt;
   Assembled out;
   out.residual = Eigen::VectorXd::Zero(model.num_unknowns());
+  Eigen::MatrixXd K, D, M;
   for (const auto& element : model.elements()) {
     const Element& e = *element;
     const std::vector<int>& u = e.unknowns();
     const int n = e.num_local();
     const Eigen::VectorXd r = probe.Residual(e);
     for (int i = 0; i < n; ++i) out.residual[u[i]] += r[i];
-    const Eigen::MatrixXd K0 = probe.Tangent(e, 0, 0, false);
-    const Eigen::MatrixXd D = RateMatrix(&probe, e, K0, true), M = RateMatrix(&probe, e, K0, false);
-    // The stiffness with the geometric stiffness of constraint forces and loads (analytic in every element).
-    const Eigen::MatrixXd K = probe.Tangent(e, 0, 0, true);
+    probe.Parts(e, &K, &D, &M);
     for (int i = 0; i < n; ++i) {
       for (int j = 0; j < n; ++j) {
         const bool force_row = model.is_force_row(u[i]), kinematic_column = model.is_force_row(u[j]);

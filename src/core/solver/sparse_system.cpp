@@ -91,6 +91,7 @@ void SparseSystem::Assemble(const StepContext& ctx, bool with_tangent) {
     Eigen::Ref<Eigen::MatrixXd> J = local_J_.topLeftCorner(m, m);
     if (with_tangent) J.setZero();
     element.AddResidualAndTangent(ctx, r, mag, with_tangent ? &J : nullptr);
+    if (with_tangent) AddSchemeRateTerms(element, ctx, J);
     const std::vector<int>& u = element.unknowns();
     for (int i = 0; i < m; ++i) {
       residual_[u[i]] += r[i];
