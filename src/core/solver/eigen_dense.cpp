@@ -4,6 +4,7 @@
 
 #include <Eigen/Dense>
 #include <Eigen/Eigenvalues>
+#include <Eigen/SVD>
 #include <algorithm>
 #include <cmath>
 #include <iterator>
@@ -23,6 +24,10 @@ constexpr double kSymmetryTolerance = 1.0e-7;
 // good to ~eps / sqrt(k) = 2e-14, down to roots of k w (in frequency; symmetric: k^2 w^2 in omega^2) and to
 // eps k w / |s| below, e.g. 2e-9 at 1e-11 w, the lowest frequencies of stiff finite-element models.
 constexpr double kShift = 1.0e-4;
+// A direction engages neither stiffness nor damping when its singular value of [Kt; w Dt] is below this
+// fraction of the largest: round-off is ~eps sqrt(r) (1e-15 at r = 2000); the lowest elastic modes of stiff
+// finite-element models stay above 1e-12 (the flexible antenna's: 9e-12), as in IsRigidRoot's kCancellation.
+constexpr double kRigidCancellation = 1.0e-14;
 
 // Roots of the symmetric problem Kt v = omega^2 v, from (Kt + a I)^{-1} if a > 0, else directly.
 std::vector<RawMode> SymmetricRoots(const Eigen::MatrixXd& Kt, const Eigen::MatrixXd& T, double a) {
@@ -43,30 +48,6 @@ std::vector<RawMode> SymmetricRoots(const Eigen::MatrixXd& Kt, const Eigen::Matr
   return out;
 }
 
-// Roots of the first-order form y' = A y, y = (q, q'/w), in time scaled by w (both blocks O(1)), from
-// (A + k I)^{-1}, whose eigenvalues are 1 / (s/w + k), if k > 0, else directly.
-std::vector<RawMode> FirstOrderRoots(const Eigen::MatrixXd& Kt, const Eigen::MatrixXd& Dt, const Eigen::MatrixXd& T,
-                                     double w, double k) {
-  const int r = static_cast<int>(Kt.rows());
-  Eigen::MatrixXd A = Eigen::MatrixXd::Zero(2 * r, 2 * r);
-  A.topRightCorner(r, r).setIdentity();
-  A.bottomLeftCorner(r, r) = -Kt / (w * w);
-  A.bottomRightCorner(r, r) = -Dt / w;
-  if (k > 0) {
-    A.diagonal().array() += k;
-    A = Eigen::PartialPivLU<Eigen::MatrixXd>(A).inverse();
-  }
-  const Eigen::EigenSolver<Eigen::MatrixXd> eig(A, true);
-  std::vector<RawMode> out;
-  for (int i = 0; i < 2 * r; ++i) {
-    RawMode mode;
-    mode.s = k > 0 ? w * (1.0 / eig.eigenvalues()[i] - k) : w * eig.eigenvalues()[i];
-    mode.x = T.cast<std::complex<double>>() * eig.eigenvectors().col(i).head(r);
-    out.push_back(std::move(mode));
-  }
-  return out;
-}
-
 void SortByMagnitude(std::vector<RawMode>* roots) {
   std::sort(roots->begin(), roots->end(),
             [](const RawMode& a, const RawMode& b) { return std::abs(a.s) < std::abs(b.s); });
@@ -82,6 +63,76 @@ std::vector<RawMode> Merge(std::vector<RawMode> low, std::vector<RawMode> high, 
   out.insert(out.end(), std::make_move_iterator(high.begin() + n), std::make_move_iterator(high.end()));
   return out;
 }
+// Roots of the first-order form y' = A y, y = (q, q'/w), in time scaled by w (both blocks O(1)), from
+// (A + k I)^{-1}, whose eigenvalues are 1 / (s/w + k), if k > 0, else directly. Shapes in the coordinates of
+// Kt and Dt.
+std::vector<RawMode> FirstOrderRoots(const Eigen::MatrixXd& Kt, const Eigen::MatrixXd& Dt, double w, double k) {
+  const int r = static_cast<int>(Kt.rows());
+  Eigen::MatrixXd A = Eigen::MatrixXd::Zero(2 * r, 2 * r);
+  A.topRightCorner(r, r).setIdentity();
+  A.bottomLeftCorner(r, r) = -Kt / (w * w);
+  A.bottomRightCorner(r, r) = -Dt / w;
+  if (k > 0) {
+    A.diagonal().array() += k;
+    A = Eigen::PartialPivLU<Eigen::MatrixXd>(A).inverse();
+  }
+  const Eigen::EigenSolver<Eigen::MatrixXd> eig(A, true);
+  std::vector<RawMode> out;
+  for (int i = 0; i < 2 * r; ++i) {
+    RawMode mode;
+    mode.s = k > 0 ? w * (1.0 / eig.eigenvalues()[i] - k) : w * eig.eigenvalues()[i];
+    mode.x = eig.eigenvectors().col(i).head(r);
+    out.push_back(std::move(mode));
+  }
+  return out;
+}
+
+// The rigid-body motions of the mass-normalised problem: an orthonormal basis N of the directions that neither
+// stiffness nor damping engages (Kt N = Dt N = 0 to round-off), and Q of the rest (theory (E5)).
+struct RigidSplit {
+  Eigen::MatrixXd N, Q;
+};
+
+RigidSplit SplitRigidMotions(const Eigen::MatrixXd& Kt, const Eigen::MatrixXd& Dt, double w) {
+  const int r = static_cast<int>(Kt.rows());
+  Eigen::MatrixXd stacked(2 * r, r);
+  stacked << Kt, w * Dt;
+  const Eigen::BDCSVD<Eigen::MatrixXd> svd(stacked, Eigen::ComputeThinV);
+  const Eigen::VectorXd& sigma = svd.singularValues();
+  int engaged = 0;
+  while (engaged < r && sigma[engaged] > kRigidCancellation * sigma[0]) ++engaged;
+  return {svd.matrixV().rightCols(r - engaged), svd.matrixV().leftCols(engaged)};
+}
+
+// The roots of the first-order problem without its rigid-body motions: those of the problem restricted to Q,
+// whose shapes y = Q b + N a take a = -N^T (s Dt + Kt) Q b / s^2 from the rows along N; then a double root at
+// zero per rigid motion. Restricted to Q, no defective root at zero is left near the shift, so every root comes
+// from the shifted inverse below the crossover and from the direct problem above it.
+std::vector<RawMode> FirstOrderRootsWithoutRigidMotions(const Eigen::MatrixXd& Kt, const Eigen::MatrixXd& Dt,
+                                                        const Eigen::MatrixXd& T, double w, double crossover) {
+  const RigidSplit split = SplitRigidMotions(Kt, Dt, w);
+  const Eigen::MatrixXd& Q = split.Q;
+  const Eigen::MatrixXd& N = split.N;
+  std::vector<RawMode> roots;
+  if (Q.cols() > 0) {
+    const Eigen::MatrixXd Kq = Q.transpose() * Kt * Q, Dq = Q.transpose() * Dt * Q;
+    roots = Merge(FirstOrderRoots(Kq, Dq, w, kShift), FirstOrderRoots(Kq, Dq, w, 0.0), crossover);
+  }
+  const Eigen::MatrixXcd Kc = Kt.cast<std::complex<double>>(), Dc = Dt.cast<std::complex<double>>();
+  const Eigen::MatrixXcd Qc = Q.cast<std::complex<double>>(), Nc = N.cast<std::complex<double>>();
+  for (RawMode& mode : roots) {
+    const Eigen::VectorXcd q = Qc * mode.x;
+    const Eigen::VectorXcd a = -(Nc.adjoint() * ((mode.s * Dc + Kc) * q)) / (mode.s * mode.s);
+    mode.x = T.cast<std::complex<double>>() * (q + Nc * a);
+  }
+  for (int i = 0; i < N.cols(); ++i) {
+    const RawMode rigid{0.0, (T * N.col(i)).cast<std::complex<double>>()};
+    roots.push_back(rigid);
+    roots.push_back(rigid);
+  }
+  return roots;
+}
+
 }  // namespace
 
 EigenResult SolveDense(const Model& model, const LinearisedSystem& system, const EigenOptions& options) {
@@ -103,8 +154,12 @@ EigenResult SolveDense(const Model& model, const LinearisedSystem& system, const
   const double asymmetry = (Kt - Kt.transpose()).cwiseAbs().maxCoeff();
   const bool symmetric = d_max == 0.0 && asymmetry <= kSymmetryTolerance * k_max;
   result.symmetric = symmetric;
-  // Frequency scale of the model (its highest frequencies).
-  double scale = std::max(std::sqrt(k_max), d_max);
+  // Frequency scale of the model: its highest frequencies (without stiffness, its fastest decay). The
+  // first-order form is scaled by it and the rigid-body tolerance is relative to it. A fast decay mu w^2 of
+  // overdamped stiff modes is no frequency: scaled by that (6e9 rad/s against 3e6 for the beam of
+  // BeamDamping.HingedBeamAtDefaultEigenSettingsKeepsItsLowestModesExact), the lowest roots lost 4% on the
+  // flexible antenna and fell below the rigid-body tolerance.
+  double scale = k_max > 0.0 ? std::sqrt(k_max) : d_max;
   if (!(scale > 0)) scale = 1.0;
   const double crossover = std::sqrt(kShift) * scale;
   std::vector<RawMode> raw;
@@ -112,23 +167,7 @@ EigenResult SolveDense(const Model& model, const LinearisedSystem& system, const
     const double a = (kShift * scale) * (kShift * scale);
     raw = Merge(SymmetricRoots(Kt, T, a), SymmetricRoots(Kt, T, 0.0), crossover);
   } else {
-    raw = FirstOrderRoots(Kt, Dt, T, scale, kShift);
-    // A rigid-body motion is a defective double root at 0 whose Jordan block, that close to the shift,
-    // amplifies round-off by 1 / kShift^2 in the other roots: then the others all come from the direct
-    // problem (dropping as many of its smallest roots as were rigid), whatever their size.
-    std::vector<RawMode> rigid, elastic;
-    for (RawMode& mode : raw)
-      (IsRigidRoot(system, mode, scale, 0.0, options) ? rigid : elastic).push_back(std::move(mode));
-    std::vector<RawMode> direct = FirstOrderRoots(Kt, Dt, T, scale, 0.0);
-    if (rigid.empty()) {
-      raw = Merge(std::move(elastic), std::move(direct), crossover);
-    } else {
-      SortByMagnitude(&direct);
-      raw = std::move(rigid);
-      raw.insert(raw.end(),
-                 std::make_move_iterator(direct.begin() + static_cast<long>(std::min(raw.size(), direct.size()))),
-                 std::make_move_iterator(direct.end()));
-    }
+    raw = FirstOrderRootsWithoutRigidMotions(Kt, Dt, T, scale, crossover);
   }
   ClassifyModes(system, raw, symmetric, scale, 0.0, options, &result);
   return result;
