@@ -14,6 +14,9 @@ PACKAGES=(
   # messages of the node's topics: /tf, ~markers, /clock
   ros-tf2-msgs libtf2-msgs-dev ros-visualization-msgs libvisualization-msgs-dev
   ros-rosgraph-msgs libros-rosgraph-msgs-dev
+  # the same messages for Python clients, and the command-line tools (rostopic, rosservice, rosrun)
+  python3-std-msgs python3-sensor-msgs python3-geometry-msgs python3-std-srvs python3-tf2-msgs
+  python3-visualization-msgs python3-rosgraph-msgs python3-genpy python3-rostopic python3-rosservice rosbash
   # core and io libraries
   liburdfdom-dev libeigen3-dev libsuitesparse-dev libyaml-cpp-dev
   # tests and benchmarks
