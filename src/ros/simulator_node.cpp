@@ -190,6 +190,17 @@ std::optional<RunControl::Reply> SimulatorNode::Execute(RunControl::Command comm
 bool SimulatorNode::SubscribersReady() {
   subscribers_ready_ =
       subscribers_ready_ || !publisher_ || publisher_->MinSampleSubscribers() >= case_.settings.wait_for_subscribers;
+  if (!subscribers_ready_ && !waiting_reported_) {
+    // Said once: a start that waits for a recorder or client which never subscribes would otherwise hang mute.
+    std::string topics;
+    for (const std::string& name : publisher_->SampleTopicsBelow(case_.settings.wait_for_subscribers)) {
+      topics += (topics.empty() ? "" : ", ") + name;
+    }
+    ROS_INFO("flexmbd: waiting for %d subscriber(s) on each sample topic (~wait_for_subscribers) before the "
+             "first sample; still missing on: %s",
+             case_.settings.wait_for_subscribers, topics.c_str());
+    waiting_reported_ = true;
+  }
   return subscribers_ready_;
 }
 

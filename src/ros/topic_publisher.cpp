@@ -3,6 +3,7 @@
 #include <rosgraph_msgs/Clock.h>
 
 #include <algorithm>
+#include <limits>
 
 namespace flexmbd {
 namespace ros {
@@ -94,13 +95,26 @@ bool TopicPublisher::HasSubscribers() const {
   return false;
 }
 
-int TopicPublisher::MinSampleSubscribers() const {
-  uint32_t fewest = std::min({joint_states_.NumSubscribers(), energy_.NumSubscribers(), reactions_.NumSubscribers(),
-                              solver_.NumSubscribers()});
+std::vector<const QueuedTopic*> TopicPublisher::SampleTopics() const {
+  std::vector<const QueuedTopic*> topics = {&joint_states_, &energy_, &reactions_, &solver_};
   for (const QueuedTopic* optional : {&contacts_, &friction_, &beam_loads_}) {
-    if (*optional) fewest = std::min(fewest, optional->NumSubscribers());
+    if (*optional) topics.push_back(optional);
   }
+  return topics;
+}
+
+int TopicPublisher::MinSampleSubscribers() const {
+  uint32_t fewest = std::numeric_limits<uint32_t>::max();
+  for (const QueuedTopic* topic : SampleTopics()) fewest = std::min(fewest, topic->NumSubscribers());
   return static_cast<int>(fewest);
+}
+
+std::vector<std::string> TopicPublisher::SampleTopicsBelow(int count) const {
+  std::vector<std::string> names;
+  for (const QueuedTopic* topic : SampleTopics()) {
+    if (static_cast<int>(topic->NumSubscribers()) < count) names.push_back(topic->Name());
+  }
+  return names;
 }
 
 }  // namespace ros

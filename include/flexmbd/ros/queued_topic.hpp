@@ -45,6 +45,8 @@ class QueuedTopic {
 
   explicit operator bool() const { return static_cast<bool>(publication_); }
   uint32_t NumSubscribers() const { return publisher_.getNumSubscribers(); }
+  /// The resolved topic name.
+  std::string Name() const { return publisher_.getTopic(); }
 
  private:
   explicit QueuedTopic(::ros::Publisher publisher);

@@ -83,6 +83,7 @@ class SimulatorNode {
 
   // commands
   bool subscribers_ready_ = false;  ///< ~wait_for_subscribers was met once
+  bool waiting_reported_ = false;   ///< the wait for subscribers was logged, with the topics it waits on
   bool paused_ = false;
   bool step_in_progress_ = false;  ///< a ~step waits for its sample to be sent
   bool anchor_pace_ = true;        ///< re-anchor the pace at the next sample (start, resume, reset)

@@ -7,6 +7,8 @@
 #include <ros/ros.h>
 
 #include <functional>
+#include <string>
+#include <vector>
 
 #include "flexmbd/ros/message_sink.hpp"
 #include "flexmbd/ros/queued_topic.hpp"
@@ -38,10 +40,18 @@ class TopicPublisher : public MessageSink {
   /// ~friction, ~beam_loads where advertised).
   int MinSampleSubscribers() const;
 
+  /// The sample topics with fewer than `count` subscribers, by resolved name: what a start that waits for
+  /// subscribers is waiting for.
+  std::vector<std::string> SampleTopicsBelow(int count) const;
+
   /// True if any topic has a subscriber.
   bool HasSubscribers() const;
 
  private:
+  // The topics every sample goes to: joint_states, ~energy, ~reactions, ~solver and those advertised of
+  // ~contacts, ~friction, ~beam_loads.
+  std::vector<const QueuedTopic*> SampleTopics() const;
+
   QueuedTopic joint_states_, energy_, reactions_, solver_, contacts_, friction_, beam_loads_, tf_, clock_;
   ::ros::Publisher markers_;  ///< latched, published once
   int unsent_samples_ = 0;    ///< samples queued since the sender was last woken
