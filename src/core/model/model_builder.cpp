@@ -6,6 +6,7 @@
 #include "flexmbd/common/error.hpp"
 #include "flexmbd/elements/applied_load.hpp"
 #include "flexmbd/model/beam_layout.hpp"
+#include "flexmbd/model/eigen_size.hpp"
 #include "flexmbd/model/model.hpp"
 #include "flexmbd/model/output_size.hpp"
 #include "flexmbd/solver/energy_decaying_integrator.hpp"
@@ -320,6 +321,7 @@ Model BuildModel(const ModelSpec& spec) {
     }
   }
   CheckOutputSize(model);
+  CheckEigenSize(model);
   return model;
 }
 
