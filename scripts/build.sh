@@ -32,7 +32,17 @@ fi
 
 echo "build: workspace ${FLEXMBD_WS} (src/flexmbd -> ${FLEXMBD_REPO_ROOT})"
 cd "${FLEXMBD_WS}"
-if ! catkin_make -DCMAKE_BUILD_TYPE=Release -DPYTHON_EXECUTABLE=/usr/bin/python3 -j2 "$@" </dev/null; then
+# catkin fixes the environment of the tests (build/catkin_generated/setup_cached.sh) when CMake first runs,
+# with only the devel directories that exist then: the Python messages, generated later, would stay off the
+# tests' PYTHONPATH. The directory is made first, and a workspace configured without it is configured again.
+python_devel="${FLEXMBD_WS}/devel/lib/python3/dist-packages"
+cached_setup="${FLEXMBD_WS}/build/catkin_generated/setup_cached.sh"
+force_cmake=()
+if [[ -f "${cached_setup}" ]] && ! grep -q "${python_devel}" "${cached_setup}"; then
+  force_cmake=(--force-cmake)
+fi
+mkdir -p "${python_devel}" || die "cannot create ${python_devel}"
+if ! catkin_make "${force_cmake[@]}" -DCMAKE_BUILD_TYPE=Release -DPYTHON_EXECUTABLE=/usr/bin/python3 -j2 "$@" </dev/null; then
   die "catkin_make $* failed in ${FLEXMBD_WS} (see the compiler output above)"
 fi
 echo "build: done (${FLEXMBD_WS}/devel)"
