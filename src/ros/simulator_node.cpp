@@ -8,6 +8,7 @@
 #include <utility>
 
 #include "flexmbd/common/error.hpp"
+#include "flexmbd/io/message_text.hpp"
 #include "flexmbd/ros/stop_signal.hpp"
 
 namespace flexmbd {
@@ -192,10 +193,7 @@ bool SimulatorNode::SubscribersReady() {
       subscribers_ready_ || !publisher_ || publisher_->MinSampleSubscribers() >= case_.settings.wait_for_subscribers;
   if (!subscribers_ready_ && !waiting_reported_) {
     // Said once: a start that waits for a recorder or client which never subscribes would otherwise hang mute.
-    std::string topics;
-    for (const std::string& name : publisher_->SampleTopicsBelow(case_.settings.wait_for_subscribers)) {
-      topics += (topics.empty() ? "" : ", ") + name;
-    }
+    const std::string topics = io::JoinNames(publisher_->SampleTopicsBelow(case_.settings.wait_for_subscribers));
     ROS_INFO("flexmbd: waiting for %d subscriber(s) on each sample topic (~wait_for_subscribers) before the "
              "first sample; still missing on: %s",
              case_.settings.wait_for_subscribers, topics.c_str());

@@ -14,10 +14,10 @@ void CheckEigenSize(const Model& model) {
   const int kinematic = model.num_unknowns() - model.num_multipliers();
   if (kinematic <= kMaxDenseEigenUnknowns) return;
   std::ostringstream msg;
-  msg << std::setprecision(2) << (model.source().empty() ? "" : model.source() + ": ") << "solver.eigen.method: dense for " << kinematic
+  msg << std::setprecision(2) << (model.source().empty() ? "" : model.source() + ": ")
+      << "solver.eigen.method: dense for " << kinematic
       << " kinematic unknowns (node and joint-variable unknowns), more than " << kMaxDenseEigenUnknowns
-      << ": its dense first-order form alone would take "
-      << 8.0 * (2.0 * kinematic) * (2.0 * kinematic) / 1.0e9
+      << ": its dense first-order form alone would take " << 8.0 * (2.0 * kinematic) * (2.0 * kinematic) / 1.0e9
       << " GB; expected method: sparse (the lowest modes by shift-invert) or auto";
   throw ConfigError(msg.str());
 }

@@ -63,6 +63,7 @@ std::vector<RawMode> Merge(std::vector<RawMode> low, std::vector<RawMode> high, 
   out.insert(out.end(), std::make_move_iterator(high.begin() + n), std::make_move_iterator(high.end()));
   return out;
 }
+
 // Roots of the first-order form y' = A y, y = (q, q'/w), in time scaled by w (both blocks O(1)), from
 // (A + k I)^{-1}, whose eigenvalues are 1 / (s/w + k), if k > 0, else directly. Shapes in the coordinates of
 // Kt and Dt.
@@ -118,12 +119,15 @@ std::vector<RawMode> FirstOrderRootsWithoutRigidMotions(const Eigen::MatrixXd& K
     const Eigen::MatrixXd Kq = Q.transpose() * Kt * Q, Dq = Q.transpose() * Dt * Q;
     roots = Merge(FirstOrderRoots(Kq, Dq, w, kShift), FirstOrderRoots(Kq, Dq, w, 0.0), crossover);
   }
-  const Eigen::MatrixXcd Kc = Kt.cast<std::complex<double>>(), Dc = Dt.cast<std::complex<double>>();
-  const Eigen::MatrixXcd Qc = Q.cast<std::complex<double>>(), Nc = N.cast<std::complex<double>>();
+  // The blocks of Kt and Dt that couple the rigid motions to the rest give a; each shape is then mapped to the
+  // unknowns once.
+  using Complex = std::complex<double>;
+  const Eigen::MatrixXcd NKQ = (N.transpose() * Kt * Q).cast<Complex>(), NDQ = (N.transpose() * Dt * Q).cast<Complex>();
+  const Eigen::MatrixXcd Qc = Q.cast<Complex>(), Nc = N.cast<Complex>(), Tc = T.cast<Complex>();
   for (RawMode& mode : roots) {
-    const Eigen::VectorXcd q = Qc * mode.x;
-    const Eigen::VectorXcd a = -(Nc.adjoint() * ((mode.s * Dc + Kc) * q)) / (mode.s * mode.s);
-    mode.x = T.cast<std::complex<double>>() * (q + Nc * a);
+    const Eigen::VectorXcd& b = mode.x;
+    const Eigen::VectorXcd a = -(mode.s * (NDQ * b) + NKQ * b) / (mode.s * mode.s);
+    mode.x = Tc * (Qc * b + Nc * a);
   }
   for (int i = 0; i < N.cols(); ++i) {
     const RawMode rigid{0.0, (T * N.col(i)).cast<std::complex<double>>()};
