@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <string>
+#include <vector>
 
 #include "flexmbd/io/config_loader.hpp"
 #include "friction_bound.hpp"
@@ -113,20 +114,18 @@ TEST(RigidStop, ForearmFallsOntoRigidStopsWithAndWithoutFriction) {
   }
 }
 
-// The shoulder of a double pendulum driven down by 60 deg and held, the elbow with friction between rigid
-// stops at +-2 deg (test/data/yaml/driven_chain_rigid_stops.yaml): impacts and stick-slip at the end of the
-// drive's ramp, where its acceleration jumps, failed such chains with "step size fell below dt_min".
-TEST(RigidStop, DrivenChainWithFrictionAndRigidStopsUnderGravity) {
+ModelSpec DrivenChain(const std::string& yaml) {
   const std::string dir = std::string(FLEXMBD_SOURCE_DIR);
-  const ModelSpec spec = LoadModelSpec(dir + "/config/double_pendulum/double_pendulum.urdf",
-                                       dir + "/test/data/yaml/driven_chain_rigid_stops.yaml");
+  return LoadModelSpec(dir + "/config/double_pendulum/double_pendulum.urdf", dir + "/test/data/yaml/" + yaml);
+}
+
+// What every driven chain with rigid elbow stops must show: it reaches its end, the elbow stays between its
+// stops, friction within its static bound, and the energy books close (T6).
+void ExpectDrivenChainRunsToItsEnd(const ModelSpec& spec, const test::Trace& run) {
   const Model model = BuildModel(spec);
-  test::Trace run;
-  ASSERT_NO_THROW(run = test::RunTrace(spec));
   const OutputSample& first = run.samples.front();
   const OutputSample& last = run.samples.back();
-  EXPECT_DOUBLE_EQ(last.t, 10.0);
-  EXPECT_NEAR(last.position[0], kPi / 3.0, 1e-9);  // the drive holds the shoulder at 60 deg (exact constraint)
+  EXPECT_DOUBLE_EQ(last.t, spec.solver.t_end);
   double beyond = 0, bound = 0;
   for (const OutputSample& s : run.samples) {
     beyond = std::max(beyond, std::abs(s.position[1]) - kStop);
@@ -134,10 +133,62 @@ TEST(RigidStop, DrivenChainWithFrictionAndRigidStopsUnderGravity) {
   }
   EXPECT_LT(beyond, 0.02 * kStop);  // as on the forearm (C2a')
   EXPECT_LE(bound, 1.0 + 1e-9);     // (F3)
-  // Books with the drive's work, to the Newton tolerance times the energy through them (~60 J).
+  // To the Newton tolerance times the energy through the books (60-100 J; measured 3e-7 to 1e-6 J).
+  const double throughput = first.total() + last.dissipated + last.numerical_dissipation + std::abs(last.external_work);
   EXPECT_NEAR(last.total() + last.dissipated + last.numerical_dissipation - last.external_work, first.total(),
-              60.0 * spec.solver.tol);
-  EXPECT_LT(last.kinetic, 1e-12);  // friction and the stops bring the elbow to rest after the drive stops
+              spec.solver.tol * throughput);
+}
+
+// The shoulder of a double pendulum driven down by 60 deg and held, the elbow with friction between rigid
+// stops at +-2 deg (test/data/yaml/driven_chain_rigid_stops.yaml): impacts and stick-slip at the end of the
+// drive's ramp, where its acceleration jumps, failed such chains with "step size fell below dt_min".
+TEST(RigidStop, DrivenChainWithFrictionAndRigidStopsUnderGravity) {
+  const ModelSpec spec = DrivenChain("driven_chain_rigid_stops.yaml");
+  test::Trace run;
+  ASSERT_NO_THROW(run = test::RunTrace(spec));
+  ExpectDrivenChainRunsToItsEnd(spec, run);
+  EXPECT_NEAR(run.samples.back().position[0], kPi / 3.0, 1e-9);  // the drive holds the shoulder at 60 deg
+  EXPECT_LT(run.samples.back().kinetic, 1e-12);  // friction and the stops bring the elbow to rest after the drive
+}
+
+// Contacts of both stops and sticking intervals of the friction in a run.
+struct EventCounts {
+  int contacts = 0, sticks = 0;
+};
+
+EventCounts CountEvents(const ModelSpec& spec, const test::Trace& run) {
+  const Model model = BuildModel(spec);
+  std::vector<bool> is_stop(model.modal_effects().size(), false);
+  for (const JointStop* stop : model.stop_effects()) is_stop[stop->slot()] = true;
+  EventCounts counts;
+  for (const EffectEvent& e : run.events) {
+    if (is_stop[e.effect] && e.to == JointStop::kContact) ++counts.contacts;
+    if (!is_stop[e.effect] && e.to == FrictionEffect::kSticking) ++counts.sticks;
+  }
+  return counts;
+}
+
+// The same chain with the shoulder swinging 30 +- 20 deg at 1.5 Hz, so that the elbow never settles
+// (driven_chain_oscillating.yaml): it failed at t = 0.168 s. A slip reversing just after an impact was redone
+// ever shorter: the impact had left the node velocities inconsistent with the joints by an alternating part of
+// 0.24 rad/s at the elbow, which a short step turns into an impulse, and the slip still reversed at any step
+// (docs/theory.md, "Velocity projection after jumps"). With and without friction, 20 s of impacts.
+TEST(RigidStop, OscillatingDrivenChainWithFrictionAndRigidStops) {
+  const ModelSpec spec = DrivenChain("driven_chain_oscillating.yaml");
+  test::Trace run;
+  ASSERT_NO_THROW(run = test::RunTrace(spec));
+  ExpectDrivenChainRunsToItsEnd(spec, run);
+  const EventCounts counts = CountEvents(spec, run);
+  EXPECT_GT(counts.contacts, 200);  // measured 468: the elbow strikes its stops through the whole run
+  EXPECT_GT(counts.sticks, 200);    // measured 428
+}
+
+TEST(RigidStop, OscillatingDrivenChainWithRigidStops) {
+  const ModelSpec spec = DrivenChain("driven_chain_oscillating_frictionless.yaml");
+  test::Trace run;
+  ASSERT_NO_THROW(run = test::RunTrace(spec));
+  ExpectDrivenChainRunsToItsEnd(spec, run);
+  EXPECT_GT(CountEvents(spec, run).contacts, 200);  // measured 445
 }
 
 }  // namespace

@@ -39,6 +39,8 @@ class FrictionEffect : public ModalEffect {
   void AddTangent(const StepContext& ctx, Eigen::Ref<Eigen::MatrixXd> J) const override;
   void AddStepWork(const StepContext& ctx, StepWork* work) const override;
   int ReviseMode(const StepContext& ctx) const override;
+  /// Sliding the way the joint moves (a joint at rest stays stuck: its rate is then consistent already).
+  int ReleasedMode(const State& state) const override { return InitialMode(state.qdot[variable_]); }
   StepLimit Limit(const StepContext& ctx, const State& end) const override;
   void Commit(const StepContext& ctx, const State& end, EffectState* effect) const override;
 

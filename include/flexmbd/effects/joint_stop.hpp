@@ -33,6 +33,8 @@ class JointStop : public ModalEffect {
   /// The output record of the stop at a state.
   virtual StopSample Sample(const State& state) const = 0;
 
+  /// Open if in contact (a contact may always separate); an open or retracted stop keeps its mode.
+  int ReleasedMode(const State& state) const override;
   /// Approach rule: the next step may cross at most a little beyond the predicted contact.
   StepLimit Limit(const StepContext& ctx, const State& end) const override;
   /// Counts contacts begun and applies the retraction rule; derived classes add their memory.

@@ -32,6 +32,10 @@ class ModalEffect : public Element {
   /// ((*ctx.effects)[slot()].mode) when the step is consistent with it.
   virtual int ReviseMode(const StepContext& ctx) const = 0;
 
+  /// The mode in which this effect imposes no constraint on the motion of `state`: the one the velocity
+  /// projection (VelocityProjection) solves with, so that it removes only what the joints' constraints forbid.
+  virtual int ReleasedMode(const State& state) const = 0;
+
   /// Step-size requests from the converged step ctx that led to `end` (rates of `end` known).
   virtual StepLimit Limit(const StepContext& /*ctx*/, const State& /*end*/) const { return {}; }
 

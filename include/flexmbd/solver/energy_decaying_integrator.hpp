@@ -18,6 +18,7 @@
 #include "flexmbd/solver/dissipation_judging.hpp"
 #include "flexmbd/solver/step_context_builder.hpp"
 #include "flexmbd/solver/time_integrator.hpp"
+#include "flexmbd/solver/velocity_projection.hpp"
 
 namespace flexmbd {
 
@@ -46,8 +47,6 @@ class EnergyDecayingIntegrator : public TimeIntegrator {
   // any was.
   bool DropEnergyGainingDissipation(const State& start, double h, Coefficients* c) const;
   Eigen::VectorXd Predict(const State& start, double h) const;
-  // The kinematic unknowns of a step that coasts at the start velocities: h v, h w, h qdot.
-  Eigen::VectorXd CoastingIncrements(const State& start, double h) const;
   // Asks every effect with modes whether the converged step contradicts its trial mode; true if any did.
   bool ReviseModes();
   // The effects' step-size requests and their state at the end of the accepted step.
@@ -60,6 +59,7 @@ class EnergyDecayingIntegrator : public TimeIntegrator {
   const Model& model_;
   SparseSystem* system_;
   StepContextBuilder builder_;
+  VelocityProjection projection_;  ///< applied after steps whose modes jumped
   double alpha_inf_;
   std::vector<Mat3> node_inertia_;  ///< rotational inertia of each node's body, weights the dissipation check
   std::vector<EffectState> modes_;  ///< trial modes of the step being solved

@@ -57,4 +57,7 @@ void RecordStepHistory(const State& start, State* end);
 /// Round-off floor of Newton increments for a start state (its coordinates and joint variables).
 double NoiseFloor(const Model& model, const State& start);
 
+/// The kinematic unknowns of a step that coasts at the start velocities: h v, h w, h qdot.
+Eigen::VectorXd CoastingIncrements(const Model& model, const State& start, double h);
+
 }  // namespace flexmbd

@@ -35,6 +35,11 @@ JointStop::JointStop(const StopSpec& spec, int variable, int slot)
       limit_(spec.limit),
       retraction_(spec.retraction) {}
 
+int JointStop::ReleasedMode(const State& state) const {
+  const int mode = state.effects[slot()].mode;
+  return mode == kContact ? kOpen : mode;
+}
+
 StepLimit JointStop::Limit(const StepContext& ctx, const State&) const {
   StepLimit limit;
   const VariableStep& q = (*ctx.variables)[variable_];

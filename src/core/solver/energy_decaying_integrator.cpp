@@ -47,6 +47,7 @@ EnergyDecayingIntegrator::EnergyDecayingIntegrator(const Model& model, SparseSys
     : model_(model),
       system_(system),
       builder_(model),
+      projection_(model, system),
       alpha_inf_(model.solver().integrator == SolverSpec::Integrator::kEnergyDecaying
                      ? DissipationFromRhoInf(model.solver().rho_inf)
                      : 0.0),
@@ -132,16 +133,6 @@ Eigen::VectorXd EnergyDecayingIntegrator::Predict(const State& start, double h) 
   return x;
 }
 
-Eigen::VectorXd EnergyDecayingIntegrator::CoastingIncrements(const State& start, double h) const {
-  Eigen::VectorXd x(model_.num_unknowns() - model_.num_multipliers());
-  for (int k = 0; k < model_.num_nodes(); ++k) {
-    x.segment<3>(model_.node_unknown(k)) = h * start.nodes[k].v;
-    x.segment<3>(model_.node_unknown(k) + 3) = h * start.nodes[k].w;
-  }
-  for (int k = 0; k < model_.num_variables(); ++k) x[model_.variable_unknown(k)] = h * start.qdot[k];
-  return x;
-}
-
 bool EnergyDecayingIntegrator::ReviseModes() {
   bool revised = false;
   for (const ModalEffect* effect : model_.modal_effects()) {
@@ -164,7 +155,7 @@ StepResult EnergyDecayingIntegrator::Step(const State& start, double h, State* e
   // Newton judges its increments against what the dynamics add to the coasting motion h v_i over the step: a
   // velocity error of tol h |a| per step, an error per unit time whatever the step (docs/theory.md, "Newton
   // iteration").
-  const Eigen::VectorXd coasting = CoastingIncrements(start, h);
+  const Eigen::VectorXd coasting = CoastingIncrements(model_, start, h);
   int mode_revisions = 0;
   // A step redone for its dissipation or modes costs the iterations of every solve: they are all counted.
   int iterations = 0, fresh_tangents = 0;
@@ -226,6 +217,12 @@ StepResult EnergyDecayingIntegrator::Step(const State& start, double h, State* e
   if (choice_matters) judging_.Record(early, iterations);
   Commit(start, unknowns, h, coefficients.nodes, end);
   CommitEffects(start, end, &result.limit);
+  if (ModesJumped(start, *end)) {
+    // The accelerations of a step whose modes changed with a jump (an impact, a stick-slip transition) say
+    // nothing about the next: the local error estimate and the scheme's dissipation restart their history.
+    end->history_steps = 0;
+    projection_.Apply(end);
+  }
   result.error = EstimateLocalError(model_, *end);
   const bool too_large = model_.solver().adaptive && result.error.error > 1.0;
   result.status = too_large ? StepStatus::kRejectedError : StepStatus::kAccepted;
@@ -247,9 +244,6 @@ void EnergyDecayingIntegrator::CommitEffects(const State& start, State* end, Ste
   end->effects = modes_;
   for (const ModalEffect* effect : model_.modal_effects()) effect->Commit(ctx, *end, &end->effects[effect->slot()]);
   if (!SameModes(modes_, end->effects)) system_->set_factorisation_key(std::numeric_limits<double>::quiet_NaN());
-  // The accelerations of a step whose modes changed with a jump (an impact, a stick-slip transition) say nothing
-  // about the next: the local error estimate and the scheme's dissipation restart their history.
-  if (ModesJumped(start, *end)) end->history_steps = 0;
 }
 
 void EnergyDecayingIntegrator::Commit(const State& start, const Eigen::VectorXd& unknowns, double h,

@@ -109,4 +109,14 @@ double NoiseFloor(const Model& model, const State& start) {
   return RoundOffFloor(magnitude);
 }
 
+Eigen::VectorXd CoastingIncrements(const Model& model, const State& start, double h) {
+  Eigen::VectorXd x(model.num_unknowns() - model.num_multipliers());
+  for (int k = 0; k < model.num_nodes(); ++k) {
+    x.segment<3>(model.node_unknown(k)) = h * start.nodes[k].v;
+    x.segment<3>(model.node_unknown(k) + 3) = h * start.nodes[k].w;
+  }
+  for (int k = 0; k < model.num_variables(); ++k) x[model.variable_unknown(k)] = h * start.qdot[k];
+  return x;
+}
+
 }  // namespace flexmbd

@@ -1,0 +1,92 @@
+#include "flexmbd/solver/velocity_projection.hpp"
+
+#include <limits>
+
+#include "flexmbd/model/model.hpp"
+#include "flexmbd/solver/joint_rates.hpp"
+#include "flexmbd/solver/newton.hpp"
+#include "flexmbd/solver/sparse_system.hpp"
+#include "flexmbd/solver/time_integrator.hpp"
+
+namespace flexmbd {
+namespace {
+// The limiting steps are this fraction of the last step and twice it: small enough that the forces' share of
+// their mean velocities (h a / 2) is extrapolated away to O(h^2), large enough that the positions they move stay
+// far above the constraint tolerance.
+constexpr double kLimitingStepFraction = 1.0e-4;
+
+double KineticEnergy(const Model& model, const State& state) {
+  EnergyTally energy;
+  for (const auto& element : model.elements()) element->AddEnergy(state, model.solver().gravity, &energy);
+  return energy.kinetic;
+}
+}  // namespace
+
+VelocityProjection::VelocityProjection(const Model& model, SparseSystem* system)
+    : model_(model), system_(system), builder_(model) {}
+
+bool VelocityProjection::SolveLimitingStep(const State& state, double h, MeanMotion* mean) {
+  const int n_kinematic = model_.num_unknowns() - model_.num_multipliers();
+  const Eigen::VectorXd coasting = CoastingIncrements(model_, state, h);
+  Eigen::VectorXd unknowns = Eigen::VectorXd::Zero(model_.num_unknowns());
+  unknowns.head(n_kinematic) = coasting;
+  const std::vector<NodeSchemeCoefficients> trapezoidal(model_.num_nodes());
+  system_->set_factorisation_key(std::numeric_limits<double>::quiet_NaN());
+  const NewtonReport report = SolveNewton(
+      model_, system_, model_.solver().tol, model_.solver().max_iterations, NoiseFloor(model_, state),
+      [&](int, bool) -> const StepContext& { return builder_.Dynamic(state, unknowns, h, trapezoidal); },
+      [&](const Eigen::VectorXd& increment) {
+        unknowns += increment;
+        return (unknowns.head(n_kinematic) - coasting).cwiseAbs().maxCoeff() + h * kMotionFloor;
+      });
+  system_->set_factorisation_key(std::numeric_limits<double>::quiet_NaN());
+  if (!report.converged) return false;
+  const StepContext& ctx = builder_.Dynamic(state, unknowns, h, trapezoidal);
+  mean->v.resize(model_.num_nodes());
+  mean->w.resize(model_.num_nodes());
+  for (int k = 0; k < model_.num_nodes(); ++k) {
+    const NodeStep& s = (*ctx.nodes)[k];
+    mean->v[k] = 0.5 * (s.v_i + s.v_f);
+    mean->w[k] = 0.5 * (s.w_i + s.w_f);
+  }
+  mean->work = StepWork();
+  for (const auto& element : model_.elements()) element->AddStepWork(ctx, &mean->work);
+  mean->effect_dissipation.assign(model_.modal_effects().size(), 0.0);
+  for (const ModalEffect* effect : model_.modal_effects()) {
+    StepWork work;
+    effect->AddStepWork(ctx, &work);
+    mean->effect_dissipation[effect->slot()] = work.dissipated;
+  }
+  return true;
+}
+
+bool VelocityProjection::Apply(State* state) {
+  std::vector<EffectState> released = state->effects;
+  for (const ModalEffect* effect : model_.modal_effects()) released[effect->slot()].mode = effect->ReleasedMode(*state);
+  builder_.set_effect_modes(&released);
+  const double h = kLimitingStepFraction * state->h_prev;
+  MeanMotion single, twice;
+  if (!SolveLimitingStep(*state, h, &single) || !SolveLimitingStep(*state, 2.0 * h, &twice)) return false;
+  // Richardson extrapolation to h = 0 of the mean velocities and of the constraint impulses' work.
+  const double kinetic_before = KineticEnergy(model_, *state);
+  for (int k = 0; k < model_.num_nodes(); ++k) {
+    state->nodes[k].v = 2.0 * single.v[k] - twice.v[k];
+    state->nodes[k].w = 2.0 * single.w[k] - twice.w[k];
+  }
+  state->qdot = JointRates(model_, *state);
+  // The limiting step reverses the inconsistent part e of the velocities, and its mean keeps half of that
+  // step's work (the drives' impulses, friction); the kinetic energy of e, e^T M e / 2 >= 0, is what the
+  // projection dissipates.
+  auto kept = [](double single_step, double double_step) { return 0.5 * (2.0 * single_step - double_step); };
+  const double external = kept(single.work.external, twice.work.external);
+  const double dissipated = kept(single.work.dissipated, twice.work.dissipated);
+  for (size_t k = 0; k < state->effects.size(); ++k) {
+    state->effects[k].work += kept(single.effect_dissipation[k], twice.effect_dissipation[k]);
+  }
+  state->external_work += external;
+  state->dissipated_physical += dissipated;
+  state->dissipated_numerical += kinetic_before - KineticEnergy(model_, *state) + external - dissipated;
+  return true;
+}
+
+}  // namespace flexmbd
