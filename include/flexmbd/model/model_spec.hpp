@@ -93,7 +93,7 @@ struct FrictionSpec {
   double mu_s = 0.0, mu_k = 0.0;  ///< static and kinetic coefficients, mu_s >= mu_k >= 0
   double radius = 1.0;            ///< race radius rho [m] (1 on a prismatic variable)
   double preload = 0.0;           ///< normal force added to the joint's radial reaction [N]
-  double v0 = 0.0;                ///< sticking threshold on the slip velocity [m/s]; 0: 1% of the largest seen
+  double v0 = 0.0;                ///< sticking threshold on the slip velocity [m/s]; 0: from error_tol
   double torque = 0.0;            ///< kConstantTorque: the friction bound [N m or N]
 };
 
