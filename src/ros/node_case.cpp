@@ -4,7 +4,6 @@
 #include "flexmbd/io/config_loader.hpp"
 #include "flexmbd/ros/param_tree.hpp"
 #include "flexmbd/io/text_file.hpp"
-#include "flexmbd/ros/world_frame.hpp"
 
 namespace flexmbd {
 namespace ros {
@@ -52,8 +51,8 @@ NodeCase LoadNodeCase(const ::ros::NodeHandle& node, const ::ros::NodeHandle& pr
   if (settings.bag) spec.output.bag = *settings.bag;
   RecordingFiles files{spec.output.bag, settings.bag_compression, spec.output.csv};
   Model model = BuildModel(spec);
-  std::string world_frame = WorldFrameName(urdf.xml, model);
-  return NodeCase{std::move(settings), std::move(model), std::move(world_frame), std::move(files)};
+  FrameTree frames = UrdfFrameTree(urdf.xml, model);
+  return NodeCase{std::move(settings), std::move(model), std::move(frames), std::move(files)};
 }
 
 }  // namespace ros

@@ -41,12 +41,14 @@ SimulatorNode::SimulatorNode(::ros::NodeHandle node, ::ros::NodeHandle private_n
       private_node_(std::move(private_node)),
       case_(LoadNodeCase(node_, private_node_)),
       pacer_(case_.settings.real_time_factor),
-      outputs_(std::make_unique<SampleFanOut>(case_.model, case_.files, ResolveTopicNames(node_, private_node_))) {
+      outputs_(std::make_unique<SampleFanOut>(case_.model, case_.files, ResolveTopicNames(node_, private_node_),
+                                              ToStaticTransforms(case_.frames.fixed))) {
   if (case_.settings.publish) {
     bool use_sim_time = false;
     ::ros::param::get("/use_sim_time", use_sim_time);
-    auto publisher = std::make_unique<TopicPublisher>(node_, private_node_, case_.model, use_sim_time,
-                                                      [this] { control_.Notify(); });
+    auto publisher =
+        std::make_unique<TopicPublisher>(node_, private_node_, case_.model, ToStaticTransforms(case_.frames.fixed),
+                                         use_sim_time, [this] { control_.Notify(); });
     publisher_ = publisher.get();
     outputs_->AddLiveSink(std::move(publisher));
   }
@@ -128,7 +130,7 @@ void SimulatorNode::StartRun() {
   computed_to_end_ = false;
   reported_end_ = false;
   anchor_pace_ = true;
-  converter_ = std::make_unique<SampleConverter>(case_.model, case_.world_frame);
+  converter_ = std::make_unique<SampleConverter>(case_.model, case_.frames.moving);
   simulation_ = std::make_unique<Simulation>(case_.model);
   const SolverSpec& solver = case_.model.solver();
   if (solver.analysis == SolverSpec::Analysis::kStatic) {

@@ -37,11 +37,13 @@ TopicNames ResolveTopicNames(const ::ros::NodeHandle& node, const ::ros::NodeHan
                     private_node.resolveName(kFrictionTopic),
                     private_node.resolveName(kBeamLoadsTopic),
                     node.resolveName(kTfTopic),
+                    node.resolveName(kTfStaticTopic),
                     private_node.resolveName(kMarkersTopic)};
 }
 
 TopicPublisher::TopicPublisher(::ros::NodeHandle& node, ::ros::NodeHandle& private_node, const Model& model,
-                               bool publish_clock, const std::function<void()>& on_connect)
+                               const tf2_msgs::TFMessage& static_transforms, bool publish_clock,
+                               const std::function<void()>& on_connect)
     : joint_states_(AdvertiseSamples<sensor_msgs::JointState>(node, kJointStatesTopic, on_connect)),
       energy_(AdvertiseSamples<Energy>(private_node, kEnergyTopic, on_connect)),
       reactions_(AdvertiseSamples<JointReactions>(private_node, kReactionsTopic, on_connect)),
@@ -59,6 +61,10 @@ TopicPublisher::TopicPublisher(::ros::NodeHandle& node, ::ros::NodeHandle& priva
   }
   if (publish_clock) clock_ = QueuedTopic::Advertise<rosgraph_msgs::Clock>(node, kClockTopic, kClockQueueSize);
   markers_.publish(ToBodyMarkers(model));
+  if (!static_transforms.transforms.empty()) {
+    tf_static_ = node.advertise<tf2_msgs::TFMessage>(kTfStaticTopic, 1, /*latch=*/true);
+    tf_static_.publish(static_transforms);
+  }
 }
 
 void TopicPublisher::Write(const SampleMessages& messages) {

@@ -5,7 +5,6 @@
 
 #include <cstdint>
 #include <optional>
-#include <string>
 #include <vector>
 
 #include "flexmbd/ros/message_conversions.hpp"
@@ -35,8 +34,8 @@ struct SampleMessages {
 
 class SampleConverter {
  public:
-  /// @param model must outlive the converter. @param world_frame parent frame of the transforms.
-  SampleConverter(const Model& model, std::string world_frame);
+  /// @param model must outlive the converter. @param frames the frames sent on /tf (FrameTree::moving).
+  SampleConverter(const Model& model, std::vector<TransformFrame> frames);
 
   /// Fills `messages` with those of `sample`, taken while the simulation is at `state` (state.t >=
   /// sample.t); `messages` may hold an earlier sample's, whose storage it reuses. Their header.stamp is the
@@ -46,7 +45,6 @@ class SampleConverter {
 
  private:
   const Model& model_;
-  std::string world_frame_;
   std::vector<TransformFrame> frames_;
   uint32_t next_seq_ = 0;
   std::optional<double> last_transform_time_;  ///< state time of the last transforms sent [s]
