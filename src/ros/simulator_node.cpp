@@ -51,6 +51,7 @@ SimulatorNode::SimulatorNode(::ros::NodeHandle node, ::ros::NodeHandle private_n
                                          use_sim_time, [this] { control_.Notify(); });
     publisher_ = publisher.get();
     outputs_->AddLiveSink(std::move(publisher));
+    if (use_sim_time) clock_ticks_.emplace(case_.settings.clock_rate_hz);
   }
   writer_ = std::make_unique<AsyncSampleWriter>(outputs_.get(),
                                                 case_.settings.real_time_factor > 0.0 ? 1 : kUnpacedWakeBatch);
@@ -83,11 +84,11 @@ int SimulatorNode::Run() {
   try {
     StartRun();
     while (::ros::ok() && !StopRequested()) {
-      if (computed_to_end_ && pending_.empty()) ReportEnd();  // first, so that no command sees open files
+      if (computed_to_end_ && !OutputPending()) ReportEnd();  // first, so that no command sees open files
       ServeCommand();
       if (paused_ && !step_in_progress_) {
         Wait(Clock::now() + kPollPeriod);
-      } else if (!pending_.empty()) {
+      } else if (OutputPending()) {
         SendNext();
       } else if (!computed_to_end_) {
         AdvanceOneChunk();
@@ -97,7 +98,7 @@ int SimulatorNode::Run() {
         break;
       }
     }
-    if (computed_to_end_ && pending_.empty()) LetSubscribersDrain();
+    if (computed_to_end_ && !OutputPending()) LetSubscribersDrain();
   } catch (const SolverError& error) {
     ROS_FATAL_STREAM("flexmbd: run failed: " << error.what());
     ROS_INFO_STREAM("flexmbd: " << simulation_->statistics().Summary(simulation_->model()));
@@ -132,6 +133,7 @@ void SimulatorNode::StartRun() {
   anchor_pace_ = true;
   converter_ = std::make_unique<SampleConverter>(case_.model, case_.frames.moving);
   simulation_ = std::make_unique<Simulation>(case_.model);
+  if (clock_ticks_) clock_ticks_->Restart(simulation_->state().t);
   const SolverSpec& solver = case_.model.solver();
   if (solver.analysis == SolverSpec::Analysis::kStatic) {
     simulation_->Run(collect_);
@@ -147,6 +149,7 @@ void SimulatorNode::Collect(const OutputSample& sample) {
   record->sample = sample;  // into the recycled record's storage
   converter_->Convert(sample, simulation_->state(), &record->messages);
   pending_.push_back(std::move(record));
+  if (clock_ticks_) clock_ticks_->Reached(sample.t);
 }
 
 void SimulatorNode::AdvanceOneChunk() {
@@ -158,6 +161,7 @@ void SimulatorNode::AdvanceOneChunk() {
   const double chunk = state.h_prev > 0.0 ? state.h_prev : solver.dt;
   const double until = std::min(state.t + chunk, solver.t_end);
   simulation_->AdvanceTo(until, solver.t_end, collect_);
+  if (clock_ticks_) clock_ticks_->Reached(simulation_->state().t);
   computed_to_end_ = until >= solver.t_end;
 }
 
@@ -204,12 +208,17 @@ bool SimulatorNode::SubscribersReady() {
   return subscribers_ready_;
 }
 
+bool SimulatorNode::OutputPending() const { return !pending_.empty() || (clock_ticks_ && !clock_ticks_->empty()); }
+
 void SimulatorNode::SendNext() {
   if (!SubscribersReady()) {
     Wait(Clock::now() + kPollPeriod);
     return;
   }
-  const double t = pending_.front()->sample.t;
+  // a tick at a sample's time goes first: /clock reaches t as the sample stamped t goes out
+  const bool tick_next = clock_ticks_ && !clock_ticks_->empty() &&
+                         (pending_.empty() || clock_ticks_->front() <= pending_.front()->sample.t);
+  const double t = tick_next ? clock_ticks_->front() : pending_.front()->sample.t;
   const Clock::time_point now = Clock::now();
   if (anchor_pace_) {
     pacer_.Anchor(t, now);
@@ -218,6 +227,11 @@ void SimulatorNode::SendNext() {
   const Clock::time_point due = step_in_progress_ ? now : pacer_.Due(t);
   if (now < due) {
     Wait(due);
+    return;
+  }
+  if (tick_next) {
+    publisher_->PublishClock(t);
+    clock_ticks_->pop();
     return;
   }
   writer_->Submit(std::move(pending_.front()));

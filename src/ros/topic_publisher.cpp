@@ -59,7 +59,7 @@ TopicPublisher::TopicPublisher(::ros::NodeHandle& node, ::ros::NodeHandle& priva
   if (!model.beam_stations().empty()) {
     beam_loads_ = AdvertiseSamples<BeamLoadsArray>(private_node, kBeamLoadsTopic, on_connect);
   }
-  if (publish_clock) clock_ = QueuedTopic::Advertise<rosgraph_msgs::Clock>(node, kClockTopic, kClockQueueSize);
+  if (publish_clock) clock_ = node.advertise<rosgraph_msgs::Clock>(kClockTopic, kClockQueueSize);
   markers_.publish(ToBodyMarkers(model));
   if (!static_transforms.transforms.empty()) {
     tf_static_ = node.advertise<tf2_msgs::TFMessage>(kTfStaticTopic, 1, /*latch=*/true);
@@ -70,11 +70,6 @@ TopicPublisher::TopicPublisher(::ros::NodeHandle& node, ::ros::NodeHandle& priva
 void TopicPublisher::Write(const SampleMessages& messages) {
   if (!::ros::ok()) return;
   bool queued = false;
-  if (clock_) {
-    rosgraph_msgs::Clock clock;
-    clock.clock = messages.joint_state.header.stamp;
-    queued |= clock_.Queue(clock);
-  }
   if (messages.has_transforms) queued |= tf_.Queue(messages.transforms);
   queued |= joint_states_.Queue(messages.joint_state);
   queued |= energy_.Queue(messages.energy);
@@ -86,6 +81,12 @@ void TopicPublisher::Write(const SampleMessages& messages) {
   if (queued && ++unsent_samples_ >= kSamplesPerWake) EndBatch();
 }
 
+void TopicPublisher::PublishClock(double t) {
+  rosgraph_msgs::Clock clock;
+  clock.clock = ToStamp(t);
+  clock_.publish(clock);
+}
+
 void TopicPublisher::EndBatch() {
   if (unsent_samples_ == 0) return;
   unsent_samples_ = 0;
@@ -93,9 +94,9 @@ void TopicPublisher::EndBatch() {
 }
 
 bool TopicPublisher::HasSubscribers() const {
-  if (markers_.getNumSubscribers() > 0) return true;
+  if (markers_.getNumSubscribers() > 0 || clock_.getNumSubscribers() > 0) return true;
   for (const QueuedTopic* topic :
-       {&joint_states_, &energy_, &reactions_, &solver_, &contacts_, &friction_, &beam_loads_, &tf_, &clock_}) {
+       {&joint_states_, &energy_, &reactions_, &solver_, &contacts_, &friction_, &beam_loads_, &tf_}) {
     if (topic->NumSubscribers() > 0) return true;
   }
   return false;

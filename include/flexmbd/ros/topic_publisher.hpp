@@ -32,8 +32,14 @@ class TopicPublisher : public MessageSink {
                  const tf2_msgs::TFMessage& static_transforms, bool publish_clock,
                  const std::function<void()>& on_connect);
 
-  /// Publishes while ROS is up (after a shutdown it does nothing); the clock follows the sample time.
+  /// Publishes while ROS is up (after a shutdown it does nothing).
   void Write(const SampleMessages& messages) override;
+
+  /// Whether /clock is advertised.
+  bool publishes_clock() const { return static_cast<bool>(clock_); }
+
+  /// Publishes simulated time `t` [s] on /clock at once (from the run loop: ClockTicks paces it).
+  void PublishClock(double t);
 
   /// Wakes roscpp's sender for the samples written since it was last woken.
   void EndBatch() override;
@@ -54,7 +60,8 @@ class TopicPublisher : public MessageSink {
   // ~contacts, ~friction, ~beam_loads.
   std::vector<const QueuedTopic*> SampleTopics() const;
 
-  QueuedTopic joint_states_, energy_, reactions_, solver_, contacts_, friction_, beam_loads_, tf_, clock_;
+  QueuedTopic joint_states_, energy_, reactions_, solver_, contacts_, friction_, beam_loads_, tf_;
+  ::ros::Publisher clock_;       ///< none without /use_sim_time
   ::ros::Publisher markers_;     ///< latched, published once
   ::ros::Publisher tf_static_;   ///< latched, published once; none without static transforms
   int unsent_samples_ = 0;    ///< samples queued since the sender was last woken
