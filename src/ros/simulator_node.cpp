@@ -53,6 +53,7 @@ SimulatorNode::SimulatorNode(::ros::NodeHandle node, ::ros::NodeHandle private_n
     outputs_->AddLiveSink(std::move(publisher));
     if (use_sim_time) clock_ticks_.emplace(case_.settings.clock_rate_hz);
   }
+  paused_ = case_.settings.paused;
   writer_ = std::make_unique<AsyncSampleWriter>(outputs_.get(),
                                                 case_.settings.real_time_factor > 0.0 ? 1 : kUnpacedWakeBatch);
   const std::pair<const char*, RunControl::Command> services[] = {{"pause", RunControl::Command::kPause},
