@@ -132,7 +132,7 @@ void SimulatorNode::StartRun() {
   computed_to_end_ = false;
   reported_end_ = false;
   anchor_pace_ = true;
-  converter_ = std::make_unique<SampleConverter>(case_.model, case_.frames.moving);
+  converter_ = std::make_unique<SampleConverter>(case_.model, case_.frames);
   simulation_ = std::make_unique<Simulation>(case_.model);
   if (clock_ticks_) clock_ticks_->Restart(simulation_->state().t);
   const SolverSpec& solver = case_.model.solver();

@@ -132,9 +132,9 @@ int main(int argc, char** argv) {
     tf2_msgs::TFMessage static_transforms;
     if (!files.bag.empty()) {
       const std::string urdf_xml = flexmbd::ReadTextFile(args.urdf, "URDF file");
-      flexmbd::ros::FrameTree frames = flexmbd::ros::UrdfFrameTree(urdf_xml, model);
+      const flexmbd::ros::FrameTree frames = flexmbd::ros::UrdfFrameTree(urdf_xml, model);
       static_transforms = flexmbd::ros::ToStaticTransforms(frames.fixed);
-      converter.emplace(model, std::move(frames.moving));
+      converter.emplace(model, frames);
     }
     flexmbd::ros::SampleFanOut outputs(model, files, flexmbd::ros::DefaultTopicNames(), std::move(static_transforms));
     flexmbd::Simulation simulation(model);

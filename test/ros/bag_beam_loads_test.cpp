@@ -22,7 +22,7 @@ TEST(BagBeamLoads, HoldsTheBeamLoadsOfEverySample) {
   spec.solver.t_end = 3.0e-3;
   spec.output.beam_stations["arm"] = {0.25, 1.0};
   const Model model = BuildModel(spec);
-  SampleConverter converter(model, test::MovingFramesOf(test::kBeamArmUrdf, model));
+  SampleConverter converter(model, test::FramesOf(test::kBeamArmUrdf, model));
   Simulation simulation(model);
   std::vector<SampleMessages> written;
   {

@@ -27,7 +27,7 @@ std::vector<Message> ReadTopic(const std::string& path, const std::string& topic
 // Records the first second of the double pendulum and returns what was written.
 std::vector<SampleMessages> RecordDoublePendulum(const std::string& path, BagCompression compression) {
   const Model model = test::DoublePendulum();
-  SampleConverter converter(model, test::MovingFramesOf(test::kDoublePendulumUrdf, model));
+  SampleConverter converter(model, test::FramesOf(test::kDoublePendulumUrdf, model));
   Simulation simulation(model);
   std::vector<SampleMessages> written;
   BagSink bag(path, compression, DefaultTopicNames(), ToBodyMarkers(model), tf2_msgs::TFMessage());
