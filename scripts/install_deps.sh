@@ -17,6 +17,8 @@ PACKAGES=(
   # the same messages for Python clients, and the command-line tools (rostopic, rosservice, rosrun)
   python3-std-msgs python3-sensor-msgs python3-geometry-msgs python3-std-srvs python3-tf2-msgs
   python3-visualization-msgs python3-rosgraph-msgs python3-genpy python3-rostopic python3-rosservice rosbash
+  # tf2_ros lookups of the node's frames (test/integration/python/tf_tree.py, and users' clients)
+  python3-tf2-ros
   # core and io libraries
   liburdfdom-dev libeigen3-dev libsuitesparse-dev libyaml-cpp-dev
   # tests and benchmarks

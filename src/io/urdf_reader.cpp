@@ -4,13 +4,13 @@
 #include <urdf_parser/urdf_parser.h>
 
 #include <Eigen/Eigenvalues>
-#include <Eigen/Geometry>
 #include <cmath>
 #include <memory>
 
 #include "flexmbd/common/error.hpp"
 #include "flexmbd/io/joint_axes.hpp"
 #include "flexmbd/io/message_text.hpp"
+#include "flexmbd/io/urdf_pose.hpp"
 #include "flexmbd/io/urdf_tree.hpp"
 #include "flexmbd/joints/joint_kinematics.hpp"
 
@@ -58,10 +58,6 @@ urdf::ModelInterfaceSharedPtr ParseUrdf(const std::string& urdf_xml, const std::
   }
   return model;
 }
-
-Vec3 ToVec3(const urdf::Vector3& v) { return Vec3(v.x, v.y, v.z); }
-
-Mat3 ToMat3(const urdf::Rotation& r) { return Eigen::Quaterniond(r.w, r.x, r.y, r.z).normalized().toRotationMatrix(); }
 
 // Where a link's frame sits: on a body (empty name: the ground), at pose X_body_link.
 struct LinkFrame {

@@ -5,9 +5,14 @@
 namespace flexmbd {
 namespace io {
 
+const std::vector<std::string>& YamlSectionNames() {
+  static const std::vector<std::string> names{"beams", "joints", "solver", "output", "loads"};
+  return names;
+}
+
 void ApplyYamlOverlay(const YAML::Node& params, const std::string& params_name, UrdfModel* model) {
   const Field root(params, params_name);
-  CheckKeys(root, {"beams", "joints", "solver", "output", "loads"});
+  CheckKeys(root, YamlSectionNames());
   ReadBeams(root.Child("beams"), model);
   ReadJoints(root.Child("joints"), model);
   ReadSolver(root.Child("solver"), &model->spec.solver);

@@ -2,6 +2,8 @@
 
 #include <rosbag/exceptions.h>
 
+#include <boost/make_shared.hpp>
+
 #include <cerrno>
 #include <cstring>
 #include <mutex>
@@ -44,7 +46,7 @@ void BagSink::Checked(const char* action, Operation operation) {
 }
 
 BagSink::BagSink(const std::string& path, BagCompression compression, const TopicNames& topics,
-                 const visualization_msgs::MarkerArray& markers)
+                 const visualization_msgs::MarkerArray& markers, const tf2_msgs::TFMessage& static_transforms)
     : path_(path), bag_(std::make_unique<rosbag::Bag>()), topics_(topics) {
   errno = 0;
   try {
@@ -59,6 +61,15 @@ BagSink::BagSink(const std::string& path, BagCompression compression, const Topi
   bag_->setCompression(compression == BagCompression::kLz4 ? rosbag::compression::LZ4
                                                            : rosbag::compression::Uncompressed);
   Checked("writing", [&] { bag_->write(topics_.markers, ::ros::TIME_MIN, markers); });
+  if (!static_transforms.transforms.empty()) {
+    // a connection header given to rosbag replaces the one it makes: it names the type itself
+    const auto latched = boost::make_shared<::ros::M_string>(::ros::M_string{
+        {"type", ::ros::message_traits::DataType<tf2_msgs::TFMessage>::value()},
+        {"md5sum", ::ros::message_traits::MD5Sum<tf2_msgs::TFMessage>::value()},
+        {"message_definition", ::ros::message_traits::Definition<tf2_msgs::TFMessage>::value()},
+        {"latching", "1"}});
+    Checked("writing", [&] { bag_->write(topics_.tf_static, ::ros::TIME_MIN, static_transforms, latched); });
+  }
 }
 
 BagSink::~BagSink() {

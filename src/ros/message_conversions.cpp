@@ -27,6 +27,27 @@ geometry_msgs::Point ToPoint(const Vec3& v) {
   return out;
 }
 
+struct Pose {
+  Mat3 R;
+  Vec3 p;  ///< [m]
+};
+
+// The world pose of a frame placed on a node of `state` (or on the ground).
+Pose WorldPose(const FramePlacement& at, const State& state) {
+  if (at.node < 0) return Pose{at.R_NF, at.p_NF_N};
+  const NodeState& node = state.nodes[at.node];
+  return Pose{node.R * at.R_NF, node.x + node.R * at.p_NF_N};
+}
+
+void SetTransform(const Mat3& R, const Vec3& p, geometry_msgs::Transform* out) {
+  SetVector3(p, &out->translation);
+  const Eigen::Quaterniond q(R);
+  out->rotation.x = q.x();
+  out->rotation.y = q.y();
+  out->rotation.z = q.z();
+  out->rotation.w = q.w();
+}
+
 void SetVector(const Eigen::VectorXd& v, std::vector<double>* out) { out->assign(v.data(), v.data() + v.size()); }
 
 visualization_msgs::Marker FrameMarker(const std::string& frame, const std::string& ns, int id, int type) {
@@ -139,24 +160,30 @@ void FillBeamLoads(const std::vector<BeamStationInfo>& stations, const OutputSam
                    });
 }
 
-void FillTransforms(const std::vector<TransformFrame>& frames, const State& state, const std::string& world_frame,
-                    tf2_msgs::TFMessage* msg) {
+void FillTransforms(const std::vector<TransformFrame>& frames, const State& state, tf2_msgs::TFMessage* msg) {
   const ::ros::Time stamp = ToStamp(state.t);
   msg->transforms.resize(frames.size());
   for (size_t k = 0; k < frames.size(); ++k) {
-    const NodeState& node = state.nodes[frames[k].node];
-    const Vec3 p_WF = node.x + node.R * frames[k].p_NF_N;
-    const Eigen::Quaterniond q_WF(node.R);
+    const Pose X_WF = WorldPose(frames[k].placement, state);
+    const Pose X_WP = WorldPose(frames[k].parent_placement, state);
     geometry_msgs::TransformStamped& transform = msg->transforms[k];
     transform.header.stamp = stamp;
-    transform.header.frame_id = world_frame;
+    transform.header.frame_id = frames[k].parent;
     transform.child_frame_id = frames[k].name;
-    SetVector3(p_WF, &transform.transform.translation);
-    transform.transform.rotation.x = q_WF.x();
-    transform.transform.rotation.y = q_WF.y();
-    transform.transform.rotation.z = q_WF.z();
-    transform.transform.rotation.w = q_WF.w();
+    SetTransform(X_WP.R.transpose() * X_WF.R, X_WP.R.transpose() * (X_WF.p - X_WP.p), &transform.transform);
   }
+}
+
+tf2_msgs::TFMessage ToStaticTransforms(const std::vector<StaticFrame>& frames) {
+  tf2_msgs::TFMessage msg;
+  msg.transforms.resize(frames.size());
+  for (size_t k = 0; k < frames.size(); ++k) {
+    geometry_msgs::TransformStamped& transform = msg.transforms[k];
+    transform.header.frame_id = frames[k].parent;
+    transform.child_frame_id = frames[k].name;
+    SetTransform(frames[k].R_PF, frames[k].p_PF, &transform.transform);
+  }
+  return msg;
 }
 
 visualization_msgs::MarkerArray ToBodyMarkers(const Model& model) {

@@ -1,10 +1,13 @@
 #include "flexmbd/ros/node_case.hpp"
 
+#include <algorithm>
+
 #include "flexmbd/common/error.hpp"
 #include "flexmbd/io/config_loader.hpp"
+#include "flexmbd/io/message_text.hpp"
+#include "flexmbd/io/yaml_overlay.hpp"
 #include "flexmbd/ros/param_tree.hpp"
 #include "flexmbd/io/text_file.hpp"
-#include "flexmbd/ros/world_frame.hpp"
 
 namespace flexmbd {
 namespace ros {
@@ -29,10 +32,30 @@ UrdfSource ReadUrdf(const ::ros::NodeHandle& node, const NodeSettings& settings)
   return UrdfSource{xml, key};
 }
 
+// A private parameter that is neither a node setting nor a YAML section is refused here, not by the loader,
+// whose message would list the sections only: it is as likely a misspelt setting (~realtime_factor).
+void CheckPrivateNames(const YAML::Node& params, const std::string& private_namespace) {
+  if (!params.IsMap()) return;
+  const std::vector<std::string>& sections = io::YamlSectionNames();
+  for (const auto& entry : params) {
+    const std::string name = entry.first.Scalar();
+    if (std::find(sections.begin(), sections.end(), name) != sections.end()) continue;
+    std::vector<std::string> known = NodeSettingNames();
+    known.insert(known.end(), sections.begin(), sections.end());
+    const std::string closest = io::ClosestName(name, known);
+    throw ConfigError(private_namespace + "/" + io::QuoteForMessage(name) + ": unknown parameter; " +
+                      (closest.empty() ? "" : "did you mean '" + closest + "'? ") +
+                      "expected a node setting (" + io::JoinNames(NodeSettingNames()) + ") or a section of the case (" +
+                      io::JoinNames(sections) + ", docs/config.md)");
+  }
+}
+
 YAML::Node ReadExtensionParameters(const ::ros::NodeHandle& private_node) {
   XmlRpc::XmlRpcValue tree;
   if (!private_node.getParam(private_node.getNamespace(), tree)) return YAML::Node();
-  return ToYamlWithout(tree, private_node.getNamespace(), NodeSettingNames());
+  YAML::Node params = ToYamlWithout(tree, private_node.getNamespace(), NodeSettingNames());
+  CheckPrivateNames(params, private_node.getNamespace());
+  return params;
 }
 
 }  // namespace
@@ -52,8 +75,8 @@ NodeCase LoadNodeCase(const ::ros::NodeHandle& node, const ::ros::NodeHandle& pr
   if (settings.bag) spec.output.bag = *settings.bag;
   RecordingFiles files{spec.output.bag, settings.bag_compression, spec.output.csv};
   Model model = BuildModel(spec);
-  std::string world_frame = WorldFrameName(urdf.xml, model);
-  return NodeCase{std::move(settings), std::move(model), std::move(world_frame), std::move(files)};
+  FrameTree frames = UrdfFrameTree(urdf.xml, model);
+  return NodeCase{std::move(settings), std::move(model), std::move(frames), std::move(files)};
 }
 
 }  // namespace ros

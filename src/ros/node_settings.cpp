@@ -4,6 +4,7 @@
 #include <sstream>
 
 #include "flexmbd/common/error.hpp"
+#include "flexmbd/ros/clock_ticks.hpp"
 
 namespace flexmbd {
 namespace ros {
@@ -76,8 +77,9 @@ class SettingReader {
 }  // namespace
 
 const std::vector<std::string>& NodeSettingNames() {
-  static const std::vector<std::string> names{"urdf_file", "real_time_factor", "bag",        "bag_compression",
-                                              "publish",   "rate_hz",          "keep_alive", "wait_for_subscribers"};
+  static const std::vector<std::string> names{
+      "urdf_file",  "real_time_factor",     "bag",          "bag_compression", "publish", "rate_hz",
+      "keep_alive", "wait_for_subscribers", "clock_rate_hz",    "paused"};
   return names;
 }
 
@@ -98,8 +100,15 @@ NodeSettings ReadNodeSettings(const ::ros::NodeHandle& private_node) {
   settings.publish = read.Flag("publish", "true or false").value_or(settings.publish);
   settings.rate_hz = read.NonNegative("rate_hz", "a sample rate >= 0 [Hz] (0 = every accepted step)");
   settings.keep_alive = read.Flag("keep_alive", "true or false").value_or(settings.keep_alive);
+  settings.paused = read.Flag("paused", "true or false").value_or(settings.paused);
   settings.wait_for_subscribers =
       read.Count("wait_for_subscribers", "a number of subscribers >= 0").value_or(settings.wait_for_subscribers);
+  const std::string clock_expected = "a rate in [0, " + std::to_string(static_cast<int>(kMaxClockRateHz)) +
+                                     "] [Hz] of simulated time (0 = at every step and sample)";
+  if (const std::optional<double> clock_rate = read.NonNegative("clock_rate_hz", clock_expected)) {
+    if (*clock_rate > kMaxClockRateHz) read.Fail("clock_rate_hz", Value(*clock_rate), "is too high", clock_expected);
+    settings.clock_rate_hz = *clock_rate;
+  }
   return settings;
 }
 

@@ -3,8 +3,8 @@
 namespace flexmbd {
 namespace ros {
 
-SampleConverter::SampleConverter(const Model& model, std::string world_frame)
-    : model_(model), world_frame_(std::move(world_frame)), frames_(TransformFrames(model)) {}
+SampleConverter::SampleConverter(const Model& model, const FrameTree& frames)
+    : model_(model), frames_(frames.moving), world_frame_(frames.world_frame) {}
 
 void SampleConverter::Convert(const OutputSample& sample, const State& state, SampleMessages* messages) {
   FillJointState(model_, sample, &messages->joint_state);
@@ -23,9 +23,10 @@ void SampleConverter::Convert(const OutputSample& sample, const State& state, Sa
     header->seq = seq;
     header->stamp = stamp;
   }
+  messages->reactions.header.frame_id = world_frame_;  // the frame of the forces (msg/JointReactions.msg)
   messages->has_transforms = !last_transform_time_ || state.t > *last_transform_time_;
   if (messages->has_transforms) {
-    FillTransforms(frames_, state, world_frame_, &messages->transforms);
+    FillTransforms(frames_, state, &messages->transforms);
     last_transform_time_ = state.t;
   }
 }

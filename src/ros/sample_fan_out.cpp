@@ -5,8 +5,12 @@
 namespace flexmbd {
 namespace ros {
 
-SampleFanOut::SampleFanOut(const Model& model, RecordingFiles files, TopicNames topics)
-    : model_(model), files_(std::move(files)), topics_(std::move(topics)) {
+SampleFanOut::SampleFanOut(const Model& model, RecordingFiles files, TopicNames topics,
+                           tf2_msgs::TFMessage static_transforms)
+    : model_(model),
+      files_(std::move(files)),
+      topics_(std::move(topics)),
+      static_transforms_(std::move(static_transforms)) {
   OpenRecordings();
 }
 
@@ -39,7 +43,8 @@ void SampleFanOut::Close() {
 
 void SampleFanOut::OpenRecordings() {
   if (!files_.bag.empty()) {
-    bag_ = std::make_unique<BagSink>(files_.bag, files_.bag_compression, topics_, ToBodyMarkers(model_));
+    bag_ = std::make_unique<BagSink>(files_.bag, files_.bag_compression, topics_, ToBodyMarkers(model_),
+                                     static_transforms_);
   }
   if (!files_.csv.empty()) csv_ = std::make_unique<CsvSink>(model_, files_.csv);
 }

@@ -41,15 +41,19 @@ SimulatorNode::SimulatorNode(::ros::NodeHandle node, ::ros::NodeHandle private_n
       private_node_(std::move(private_node)),
       case_(LoadNodeCase(node_, private_node_)),
       pacer_(case_.settings.real_time_factor),
-      outputs_(std::make_unique<SampleFanOut>(case_.model, case_.files, ResolveTopicNames(node_, private_node_))) {
+      outputs_(std::make_unique<SampleFanOut>(case_.model, case_.files, ResolveTopicNames(node_, private_node_),
+                                              ToStaticTransforms(case_.frames.fixed))) {
   if (case_.settings.publish) {
     bool use_sim_time = false;
     ::ros::param::get("/use_sim_time", use_sim_time);
-    auto publisher = std::make_unique<TopicPublisher>(node_, private_node_, case_.model, use_sim_time,
-                                                      [this] { control_.Notify(); });
+    auto publisher =
+        std::make_unique<TopicPublisher>(node_, private_node_, case_.model, ToStaticTransforms(case_.frames.fixed),
+                                         use_sim_time, [this] { control_.Notify(); });
     publisher_ = publisher.get();
     outputs_->AddLiveSink(std::move(publisher));
+    if (use_sim_time) clock_ticks_.emplace(case_.settings.clock_rate_hz);
   }
+  paused_ = case_.settings.paused;
   writer_ = std::make_unique<AsyncSampleWriter>(outputs_.get(),
                                                 case_.settings.real_time_factor > 0.0 ? 1 : kUnpacedWakeBatch);
   const std::pair<const char*, RunControl::Command> services[] = {{"pause", RunControl::Command::kPause},
@@ -81,11 +85,11 @@ int SimulatorNode::Run() {
   try {
     StartRun();
     while (::ros::ok() && !StopRequested()) {
-      if (computed_to_end_ && pending_.empty()) ReportEnd();  // first, so that no command sees open files
+      if (computed_to_end_ && !OutputPending()) ReportEnd();  // first, so that no command sees open files
       ServeCommand();
       if (paused_ && !step_in_progress_) {
         Wait(Clock::now() + kPollPeriod);
-      } else if (!pending_.empty()) {
+      } else if (OutputPending()) {
         SendNext();
       } else if (!computed_to_end_) {
         AdvanceOneChunk();
@@ -95,7 +99,7 @@ int SimulatorNode::Run() {
         break;
       }
     }
-    if (computed_to_end_ && pending_.empty()) LetSubscribersDrain();
+    if (computed_to_end_ && !OutputPending()) LetSubscribersDrain();
   } catch (const SolverError& error) {
     ROS_FATAL_STREAM("flexmbd: run failed: " << error.what());
     ROS_INFO_STREAM("flexmbd: " << simulation_->statistics().Summary(simulation_->model()));
@@ -128,8 +132,9 @@ void SimulatorNode::StartRun() {
   computed_to_end_ = false;
   reported_end_ = false;
   anchor_pace_ = true;
-  converter_ = std::make_unique<SampleConverter>(case_.model, case_.world_frame);
+  converter_ = std::make_unique<SampleConverter>(case_.model, case_.frames);
   simulation_ = std::make_unique<Simulation>(case_.model);
+  if (clock_ticks_) clock_ticks_->Restart(simulation_->state().t);
   const SolverSpec& solver = case_.model.solver();
   if (solver.analysis == SolverSpec::Analysis::kStatic) {
     simulation_->Run(collect_);
@@ -145,6 +150,7 @@ void SimulatorNode::Collect(const OutputSample& sample) {
   record->sample = sample;  // into the recycled record's storage
   converter_->Convert(sample, simulation_->state(), &record->messages);
   pending_.push_back(std::move(record));
+  if (clock_ticks_) clock_ticks_->Reached(sample.t);
 }
 
 void SimulatorNode::AdvanceOneChunk() {
@@ -156,6 +162,7 @@ void SimulatorNode::AdvanceOneChunk() {
   const double chunk = state.h_prev > 0.0 ? state.h_prev : solver.dt;
   const double until = std::min(state.t + chunk, solver.t_end);
   simulation_->AdvanceTo(until, solver.t_end, collect_);
+  if (clock_ticks_) clock_ticks_->Reached(simulation_->state().t);
   computed_to_end_ = until >= solver.t_end;
 }
 
@@ -202,12 +209,17 @@ bool SimulatorNode::SubscribersReady() {
   return subscribers_ready_;
 }
 
+bool SimulatorNode::OutputPending() const { return !pending_.empty() || (clock_ticks_ && !clock_ticks_->empty()); }
+
 void SimulatorNode::SendNext() {
   if (!SubscribersReady()) {
     Wait(Clock::now() + kPollPeriod);
     return;
   }
-  const double t = pending_.front()->sample.t;
+  // a tick at a sample's time goes first: /clock reaches t as the sample stamped t goes out
+  const bool tick_next = clock_ticks_ && !clock_ticks_->empty() &&
+                         (pending_.empty() || clock_ticks_->front() <= pending_.front()->sample.t);
+  const double t = tick_next ? clock_ticks_->front() : pending_.front()->sample.t;
   const Clock::time_point now = Clock::now();
   if (anchor_pace_) {
     pacer_.Anchor(t, now);
@@ -216,6 +228,11 @@ void SimulatorNode::SendNext() {
   const Clock::time_point due = step_in_progress_ ? now : pacer_.Due(t);
   if (now < due) {
     Wait(due);
+    return;
+  }
+  if (tick_next) {
+    publisher_->PublishClock(t);
+    clock_ticks_->pop();
     return;
   }
   writer_->Submit(std::move(pending_.front()));

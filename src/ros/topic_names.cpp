@@ -13,6 +13,7 @@ TopicNames DefaultTopicNames() {
                     private_prefix + kFrictionTopic,
                     private_prefix + kBeamLoadsTopic,
                     kTfTopic,
+                    kTfStaticTopic,
                     private_prefix + kMarkersTopic};
 }
 

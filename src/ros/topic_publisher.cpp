@@ -37,11 +37,13 @@ TopicNames ResolveTopicNames(const ::ros::NodeHandle& node, const ::ros::NodeHan
                     private_node.resolveName(kFrictionTopic),
                     private_node.resolveName(kBeamLoadsTopic),
                     node.resolveName(kTfTopic),
+                    node.resolveName(kTfStaticTopic),
                     private_node.resolveName(kMarkersTopic)};
 }
 
 TopicPublisher::TopicPublisher(::ros::NodeHandle& node, ::ros::NodeHandle& private_node, const Model& model,
-                               bool publish_clock, const std::function<void()>& on_connect)
+                               const tf2_msgs::TFMessage& static_transforms, bool publish_clock,
+                               const std::function<void()>& on_connect)
     : joint_states_(AdvertiseSamples<sensor_msgs::JointState>(node, kJointStatesTopic, on_connect)),
       energy_(AdvertiseSamples<Energy>(private_node, kEnergyTopic, on_connect)),
       reactions_(AdvertiseSamples<JointReactions>(private_node, kReactionsTopic, on_connect)),
@@ -57,18 +59,17 @@ TopicPublisher::TopicPublisher(::ros::NodeHandle& node, ::ros::NodeHandle& priva
   if (!model.beam_stations().empty()) {
     beam_loads_ = AdvertiseSamples<BeamLoadsArray>(private_node, kBeamLoadsTopic, on_connect);
   }
-  if (publish_clock) clock_ = QueuedTopic::Advertise<rosgraph_msgs::Clock>(node, kClockTopic, kClockQueueSize);
+  if (publish_clock) clock_ = node.advertise<rosgraph_msgs::Clock>(kClockTopic, kClockQueueSize);
   markers_.publish(ToBodyMarkers(model));
+  if (!static_transforms.transforms.empty()) {
+    tf_static_ = node.advertise<tf2_msgs::TFMessage>(kTfStaticTopic, 1, /*latch=*/true);
+    tf_static_.publish(static_transforms);
+  }
 }
 
 void TopicPublisher::Write(const SampleMessages& messages) {
   if (!::ros::ok()) return;
   bool queued = false;
-  if (clock_) {
-    rosgraph_msgs::Clock clock;
-    clock.clock = messages.joint_state.header.stamp;
-    queued |= clock_.Queue(clock);
-  }
   if (messages.has_transforms) queued |= tf_.Queue(messages.transforms);
   queued |= joint_states_.Queue(messages.joint_state);
   queued |= energy_.Queue(messages.energy);
@@ -80,6 +81,12 @@ void TopicPublisher::Write(const SampleMessages& messages) {
   if (queued && ++unsent_samples_ >= kSamplesPerWake) EndBatch();
 }
 
+void TopicPublisher::PublishClock(double t) {
+  rosgraph_msgs::Clock clock;
+  clock.clock = ToStamp(t);
+  clock_.publish(clock);
+}
+
 void TopicPublisher::EndBatch() {
   if (unsent_samples_ == 0) return;
   unsent_samples_ = 0;
@@ -87,9 +94,9 @@ void TopicPublisher::EndBatch() {
 }
 
 bool TopicPublisher::HasSubscribers() const {
-  if (markers_.getNumSubscribers() > 0) return true;
+  if (markers_.getNumSubscribers() > 0 || clock_.getNumSubscribers() > 0) return true;
   for (const QueuedTopic* topic :
-       {&joint_states_, &energy_, &reactions_, &solver_, &contacts_, &friction_, &beam_loads_, &tf_, &clock_}) {
+       {&joint_states_, &energy_, &reactions_, &solver_, &contacts_, &friction_, &beam_loads_, &tf_}) {
     if (topic->NumSubscribers() > 0) return true;
   }
   return false;

@@ -16,7 +16,7 @@
 #include "flexmbd/io/config_loader.hpp"
 #include "flexmbd/ros/sample_fan_out.hpp"
 #include "flexmbd/io/text_file.hpp"
-#include "flexmbd/ros/world_frame.hpp"
+#include "flexmbd/ros/transform_frames.hpp"
 #include "flexmbd/solver/eigen_analysis.hpp"
 #include "flexmbd/solver/simulation.hpp"
 #include "flexmbd/solver/sparse_system.hpp"
@@ -128,12 +128,15 @@ int main(int argc, char** argv) {
     }
     const flexmbd::ros::RecordingFiles files{model.output().bag, flexmbd::ros::BagCompression::kNone,
                                              model.output().csv};
-    flexmbd::ros::SampleFanOut outputs(model, files, flexmbd::ros::DefaultTopicNames());
     std::optional<flexmbd::ros::SampleConverter> converter;  // only a bag needs messages
+    tf2_msgs::TFMessage static_transforms;
     if (!files.bag.empty()) {
       const std::string urdf_xml = flexmbd::ReadTextFile(args.urdf, "URDF file");
-      converter.emplace(model, flexmbd::ros::WorldFrameName(urdf_xml, model));
+      const flexmbd::ros::FrameTree frames = flexmbd::ros::UrdfFrameTree(urdf_xml, model);
+      static_transforms = flexmbd::ros::ToStaticTransforms(frames.fixed);
+      converter.emplace(model, frames);
     }
+    flexmbd::ros::SampleFanOut outputs(model, files, flexmbd::ros::DefaultTopicNames(), std::move(static_transforms));
     flexmbd::Simulation simulation(model);
     flexmbd::OutputSample last;
     flexmbd::ros::SampleMessages messages;  // refilled for every sample, reusing its storage

@@ -25,6 +25,13 @@ TEST(DoublePendulumLaunch, PublishesTheEnergy) {
   EXPECT_GE(message->kinetic, 0.0);
 }
 
+TEST(DoublePendulumLaunch, ReactionsNameTheWorldFrame) {
+  // Reference: msg/JointReactions.msg: forces in the world frame, the URDF's ground root link "world".
+  const auto message = ::ros::topic::waitForMessage<JointReactions>("/flexmbd/reactions", kTimeout);
+  ASSERT_TRUE(message);
+  EXPECT_EQ(message->header.frame_id, "world");
+}
+
 TEST(DoublePendulumLaunch, PublishesTheLinkFramesInTheUrdfRoot) {
   const auto message = ::ros::topic::waitForMessage<tf2_msgs::TFMessage>("/tf", kTimeout);
   ASSERT_TRUE(message);

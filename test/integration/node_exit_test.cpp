@@ -48,6 +48,19 @@ TEST(NodeExit, BadNodeSettingExitsWithTwoNamingTheSetting) {
       << node.Output();
 }
 
+TEST(NodeExit, MisspeltNodeSettingExitsWithTwoListingTheSettings) {
+  // Reference: src/ros/node_case.cpp: a private name that is no setting and no YAML section is named with the
+  // nearest setting and both lists (the loader's message listed only the sections).
+  NodeProcess node("flexmbd_misspelt_setting", {"_realtime_factor:=2.0"});
+  EXPECT_EQ(node.WaitForExit(kTimeout), std::optional<int>(kBadInputExit));
+  EXPECT_TRUE(Contains(node.Output(),
+                       "/flexmbd_misspelt_setting/realtime_factor: unknown parameter; did you mean "
+                       "'real_time_factor'? expected a node setting (urdf_file, real_time_factor, bag, "
+                       "bag_compression, publish, rate_hz, keep_alive, wait_for_subscribers, clock_rate_hz, paused) "
+                       "or a section of the case (beams, joints, solver, output, loads, docs/config.md)"))
+      << node.Output();
+}
+
 TEST(NodeExit, MissingUrdfFileExitsWithTwoNamingTheFile) {
   NodeProcess node("flexmbd_missing_urdf", {"_urdf_file:=/nonexistent/arm.urdf"});
   EXPECT_EQ(node.WaitForExit(kTimeout), std::optional<int>(kBadInputExit));

@@ -109,19 +109,21 @@ TEST_F(NodeTopics, BagHoldsTheSamplesPublishedOnTopics) {
 }
 
 TEST_F(NodeTopics, LinkFramesStayOnTheirJoints) {
-  // Reference: the URDF: link1's frame is the shoulder, fixed at (0, 0, 2) m; link2's frame is the elbow,
-  // 1 m from the shoulder in the x-z plane (both hinges turn about y).
+  // Reference: the URDF: link1's frame is the shoulder, fixed at (0, 0, 2) m in world; link2's frame is the
+  // elbow, fixed at (1, 0, 0) m in link1 (both hinges turn about y).
   ASSERT_FALSE(record_->topics.transforms.empty());
   for (const tf2_msgs::TFMessage& message : record_->topics.transforms) {
     ASSERT_EQ(message.transforms.size(), 2u);
     const geometry_msgs::Vector3& shoulder = message.transforms[0].transform.translation;
     const geometry_msgs::Vector3& elbow = message.transforms[1].transform.translation;
     EXPECT_EQ(message.transforms[0].header.frame_id, "world");
+    EXPECT_EQ(message.transforms[1].header.frame_id, "link1");
     EXPECT_NEAR(shoulder.x, 0.0, kJointPlacementTolerance);
     EXPECT_NEAR(shoulder.y, 0.0, kJointPlacementTolerance);
     EXPECT_NEAR(shoulder.z, 2.0, kJointPlacementTolerance);
+    EXPECT_NEAR(elbow.x, 1.0, kJointPlacementTolerance);
     EXPECT_NEAR(elbow.y, 0.0, kJointPlacementTolerance);
-    EXPECT_NEAR(std::hypot(elbow.x - shoulder.x, elbow.z - shoulder.z), 1.0, kJointPlacementTolerance);
+    EXPECT_NEAR(elbow.z, 0.0, kJointPlacementTolerance);
   }
 }
 

@@ -37,7 +37,7 @@ class SeqSink : public MessageSink {
 // A fan-out without recording files, writing to a SeqSink.
 SampleFanOut FanOutTo(const Model& model, std::vector<uint32_t>* written, long fail_at = -1,
                       std::vector<size_t>* batch_ends = nullptr) {
-  SampleFanOut outputs(model, RecordingFiles{}, DefaultTopicNames());
+  SampleFanOut outputs(model, RecordingFiles{}, DefaultTopicNames(), tf2_msgs::TFMessage());
   outputs.AddLiveSink(std::make_unique<SeqSink>(written, batch_ends, fail_at));
   return outputs;
 }

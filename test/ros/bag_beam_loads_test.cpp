@@ -16,17 +16,17 @@ TEST(BagBeamLoads, HoldsTheBeamLoadsOfEverySample) {
   // Reference: the messages the converter made of a run of the beam arm (test/data) with two stations, sampled
   // at every step of its first 3 ms; float64 fields and the bag's serialisation are exact.
   const std::string path = testing::TempDir() + "bag_beam_loads.bag";
-  ModelSpec spec = LoadModelSpec(test::SourcePath("test/data/urdf/beam_arm.urdf"),
+  ModelSpec spec = LoadModelSpec(test::SourcePath(test::kBeamArmUrdf),
                                  test::SourcePath("test/data/yaml/beam_arm.yaml"));
   spec.output.rate_hz = 0.0;
   spec.solver.t_end = 3.0e-3;
   spec.output.beam_stations["arm"] = {0.25, 1.0};
   const Model model = BuildModel(spec);
-  SampleConverter converter(model, "world");
+  SampleConverter converter(model, test::FramesOf(test::kBeamArmUrdf, model));
   Simulation simulation(model);
   std::vector<SampleMessages> written;
   {
-    BagSink bag(path, BagCompression::kNone, DefaultTopicNames(), ToBodyMarkers(model));
+    BagSink bag(path, BagCompression::kNone, DefaultTopicNames(), ToBodyMarkers(model), tf2_msgs::TFMessage());
     simulation.Run([&](const OutputSample& sample) {
       written.emplace_back();
       converter.Convert(sample, simulation.state(), &written.back());

@@ -27,10 +27,10 @@ std::vector<Message> ReadTopic(const std::string& path, const std::string& topic
 // Records the first second of the double pendulum and returns what was written.
 std::vector<SampleMessages> RecordDoublePendulum(const std::string& path, BagCompression compression) {
   const Model model = test::DoublePendulum();
-  SampleConverter converter(model, "world");
+  SampleConverter converter(model, test::FramesOf(test::kDoublePendulumUrdf, model));
   Simulation simulation(model);
   std::vector<SampleMessages> written;
-  BagSink bag(path, compression, DefaultTopicNames(), ToBodyMarkers(model));
+  BagSink bag(path, compression, DefaultTopicNames(), ToBodyMarkers(model), tf2_msgs::TFMessage());
   const Simulation::SampleSink convert = [&](const OutputSample& sample) {
     written.emplace_back();
     converter.Convert(sample, simulation.state(), &written.back());
@@ -73,6 +73,24 @@ TEST(BagSink, HoldsEverySampleExactly) {
   EXPECT_TRUE(ReadTopic<BeamLoadsArray>(path, DefaultTopicNames().beam_loads).empty());
 }
 
+TEST(BagSink, RecordsTheStaticTransformsOnceAsLatched) {
+  // Reference: the antenna's URDF: its massless bus is fixed to the world; rosbag play latches a topic whose
+  // connection header says latching=1, as rosbag record writes it for a latched publisher.
+  const std::string path = testing::TempDir() + "bag_sink_static.bag";
+  const Model model = BuildModel(LoadModelSpec(test::SourcePath("config/antenna/antenna.urdf"),
+                                               test::SourcePath("config/antenna/antenna_dampers.yaml")));
+  const tf2_msgs::TFMessage fixed = ToStaticTransforms(test::FramesOf("config/antenna/antenna.urdf", model).fixed);
+  BagSink(path, BagCompression::kNone, DefaultTopicNames(), ToBodyMarkers(model), fixed).Close();
+  ASSERT_EQ(fixed.transforms.size(), 1u);
+  EXPECT_EQ(fixed.transforms[0].child_frame_id, "bus");
+  EXPECT_EQ(ReadTopic<tf2_msgs::TFMessage>(path, DefaultTopicNames().tf_static),
+            std::vector<tf2_msgs::TFMessage>{fixed});
+  rosbag::Bag bag(path, rosbag::bagmode::Read);
+  for (const rosbag::MessageInstance& instance : rosbag::View(bag, rosbag::TopicQuery(DefaultTopicNames().tf_static))) {
+    EXPECT_EQ(instance.getConnectionHeader()->at("latching"), "1");
+  }
+}
+
 TEST(BagSink, RecordsContactsAndFrictionOfEverySample) {
   // Reference: hand-made stop and friction records (the loader has no backlash or friction yet), written
   // through the conversion the converter uses and read back exactly.
@@ -82,7 +100,7 @@ TEST(BagSink, RecordsContactsAndFrictionOfEverySample) {
   const std::vector<FrictionInfo> frictions{{"elbow", 1}};
   std::vector<SampleMessages> written(3);
   {
-    BagSink bag(path, BagCompression::kNone, DefaultTopicNames(), ToBodyMarkers(model));
+    BagSink bag(path, BagCompression::kNone, DefaultTopicNames(), ToBodyMarkers(model), tf2_msgs::TFMessage());
     for (size_t k = 0; k < written.size(); ++k) {
       OutputSample sample;
       sample.t = 0.1 * static_cast<double>(k);
@@ -127,7 +145,7 @@ template <typename Error>
 std::string OpenErrorOf(const std::string& path) {
   const Model model = test::DoublePendulum();
   try {
-    BagSink bag(path, BagCompression::kNone, DefaultTopicNames(), ToBodyMarkers(model));
+    BagSink bag(path, BagCompression::kNone, DefaultTopicNames(), ToBodyMarkers(model), tf2_msgs::TFMessage());
   } catch (const Error& error) {
     return error.what();
   }
@@ -157,7 +175,7 @@ TEST(BagSink, DiskFullMidRunIsAnOutputErrorCountingTheSamplesRecorded) {
   long recorded = 0;
   {
     const test::FileSizeLimit cap(100000);
-    BagSink bag(path, BagCompression::kNone, DefaultTopicNames(), ToBodyMarkers(model));
+    BagSink bag(path, BagCompression::kNone, DefaultTopicNames(), ToBodyMarkers(model), tf2_msgs::TFMessage());
     try {
       for (; recorded < 100000; ++recorded) bag.Write(samples[recorded % samples.size()]);
     } catch (const OutputError& error) {

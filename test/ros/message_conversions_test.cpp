@@ -78,23 +78,24 @@ TEST(MessageConversions, ReactionsAndSolverStepCopyTheSample) {
   EXPECT_EQ(step.iterations, 4);
 }
 
-TEST(MessageConversions, LinkTransformsPlaceTheLinkFramesAtTheirJoints) {
-  // Reference: link1's frame is at the shoulder (0, 0, 2) with the shoulder at 0 deg (identity); link2's
-  // frame is at the elbow, 1 m along link1's x axis, turned by the elbow's -30 deg about y.
+TEST(MessageConversions, LinkTransformsGoFromTheUrdfParentLink) {
+  // Reference: the URDF: link1's frame is at the shoulder (0, 0, 2) in world with the shoulder at 0 deg
+  // (identity); link2's frame is at the elbow, (1, 0, 0) in link1, turned by the elbow's -30 deg about y.
   const Model model = test::DoublePendulum();
   tf2_msgs::TFMessage msg;
-  FillTransforms(TransformFrames(model), model.initial_state(), "world", &msg);
+  FillTransforms(test::MovingFramesOf(test::kDoublePendulumUrdf, model), model.initial_state(), &msg);
   ASSERT_EQ(msg.transforms.size(), 2u);
   const geometry_msgs::TransformStamped& link1 = msg.transforms[0];
   const geometry_msgs::TransformStamped& link2 = msg.transforms[1];
   EXPECT_EQ(link1.header.frame_id, "world");
   EXPECT_EQ(link1.child_frame_id, "link1");
+  EXPECT_EQ(link2.header.frame_id, "link1");
   EXPECT_EQ(link2.child_frame_id, "link2");
   EXPECT_NEAR(link1.transform.translation.z, 2.0, kRoundOff);
   EXPECT_NEAR(link1.transform.rotation.w, 1.0, kRoundOff);
   EXPECT_NEAR(link2.transform.translation.x, 1.0, kRoundOff);
   EXPECT_NEAR(link2.transform.translation.y, 0.0, kRoundOff);
-  EXPECT_NEAR(link2.transform.translation.z, 2.0, kRoundOff);
+  EXPECT_NEAR(link2.transform.translation.z, 0.0, kRoundOff);
   const Eigen::Quaterniond expected(Eigen::AngleAxisd(-M_PI / 6.0, Eigen::Vector3d::UnitY()));
   const geometry_msgs::Quaternion& q = link2.transform.rotation;
   EXPECT_NEAR(std::abs(expected.dot(Eigen::Quaterniond(q.w, q.x, q.y, q.z))), 1.0, kRoundOff);
@@ -197,39 +198,46 @@ TEST(MessageConversions, FrictionNamesEveryJointAndCopiesItsRecord) {
   EXPECT_EQ(hinge.work, 4.0);
 }
 
-TEST(MessageConversions, BeamNodeFramesSitOnTheCentreLine) {
-  // Reference: test/data beam_arm: the beam's root at (0, 0, 1) m along the world x axis (rpy 0), 2 cubic
-  // elements: node k at x = k / 6 m with the link's axes; the tip body's link frame at the hinge (1, 0, 1).
+TEST(MessageConversions, BeamNodeFramesSitOnTheCentreLineUnderTheBeamLink) {
+  // Reference: test/data beam_arm: the beam link 'arm' clamped at (0, 0, 1) m in world (rpy 0), 2 cubic
+  // elements: node k at x = k / 6 m in the beam link's frame, with its axes; the tip body's link frame at the
+  // hinge, (1, 0, 0) in arm.
   const Model model = test::BeamArm();
-  const std::vector<TransformFrame> frames = TransformFrames(model);
   tf2_msgs::TFMessage msg;
-  FillTransforms(frames, model.initial_state(), "world", &msg);
-  ASSERT_EQ(msg.transforms.size(), 8u);
-  EXPECT_EQ(msg.transforms[0].child_frame_id, "tip");
-  EXPECT_NEAR(msg.transforms[0].transform.translation.x, 1.0, kRoundOff);
+  FillTransforms(test::MovingFramesOf(test::kBeamArmUrdf, model), model.initial_state(), &msg);
+  ASSERT_EQ(msg.transforms.size(), 9u);
+  EXPECT_EQ(msg.transforms[0].header.frame_id, "world");
+  EXPECT_EQ(msg.transforms[0].child_frame_id, "arm");
+  EXPECT_NEAR(msg.transforms[0].transform.translation.z, 1.0, kRoundOff);
   for (size_t k = 0; k < 7; ++k) {
     const geometry_msgs::TransformStamped& node = msg.transforms[1 + k];
     EXPECT_EQ(node.child_frame_id, "arm/node_" + std::to_string(k));
-    EXPECT_EQ(node.header.frame_id, "world");
+    EXPECT_EQ(node.header.frame_id, "arm");
     EXPECT_NEAR(node.transform.translation.x, k / 6.0, kRoundOff) << node.child_frame_id;
     EXPECT_NEAR(node.transform.translation.y, 0.0, kRoundOff) << node.child_frame_id;
-    EXPECT_NEAR(node.transform.translation.z, 1.0, kRoundOff) << node.child_frame_id;
+    EXPECT_NEAR(node.transform.translation.z, 0.0, kRoundOff) << node.child_frame_id;
     EXPECT_NEAR(std::abs(node.transform.rotation.w), 1.0, kRoundOff) << node.child_frame_id;
   }
+  EXPECT_EQ(msg.transforms[8].header.frame_id, "arm");
+  EXPECT_EQ(msg.transforms[8].child_frame_id, "tip");
+  EXPECT_NEAR(msg.transforms[8].transform.translation.x, 1.0, kRoundOff);
+  EXPECT_NEAR(msg.transforms[8].transform.translation.z, 0.0, kRoundOff);
 }
 
 TEST(MessageConversions, BeamNodeFramesFollowTheDeformedNodes) {
-  // A node moved and turned in the state moves its frame: the frame is the node's pose itself.
+  // A node moved and turned in the state moves its frame relative to the beam link (the root node's frame,
+  // left at (0, 0, 1) m with the world axes): the frame is the node's pose itself, less the root's.
   const Model model = test::BeamArm();
   State state = model.initial_state();
   const int tip_node = model.beams()[0].nodes.back();
   state.nodes[tip_node].x = Vec3(0.9, 0.3, 1.1);
   state.nodes[tip_node].R = Eigen::AngleAxisd(0.4, Vec3::UnitZ()).toRotationMatrix();
   tf2_msgs::TFMessage msg;
-  FillTransforms(TransformFrames(model), state, "world", &msg);
-  const geometry_msgs::TransformStamped& tip = msg.transforms.back();
+  FillTransforms(test::MovingFramesOf(test::kBeamArmUrdf, model), state, &msg);
+  const geometry_msgs::TransformStamped& tip = msg.transforms[7];
   EXPECT_EQ(tip.child_frame_id, "arm/node_6");
   EXPECT_NEAR(tip.transform.translation.y, 0.3, kRoundOff);
+  EXPECT_NEAR(tip.transform.translation.z, 0.1, kRoundOff);
   EXPECT_NEAR(tip.transform.rotation.z, std::sin(0.2), kRoundOff);
 }
 

@@ -20,7 +20,7 @@ constexpr double kStampResolution = 1.0e-9;
 TEST(SampleConverter, SendsTransformsOncePerStateAtTheStateTime) {
   // Two samples interpolated inside one step share its end state: the second carries no transforms.
   const Model model = test::DoublePendulum();
-  SampleConverter converter(model, "world");
+  SampleConverter converter(model, test::FramesOf(test::kDoublePendulumUrdf, model));
   State state = model.initial_state();
   OutputSample sample;
   sample.position = sample.velocity = sample.effort = Eigen::VectorXd::Zero(model.num_variables());
@@ -33,6 +33,7 @@ TEST(SampleConverter, SendsTransformsOncePerStateAtTheStateTime) {
   ASSERT_TRUE(messages.has_transforms);
   EXPECT_NEAR(messages.transforms.transforms[0].header.stamp.toSec(), 0.02, kStampResolution);
   EXPECT_NEAR(messages.joint_state.header.stamp.toSec(), 0.01, kStampResolution);
+  EXPECT_EQ(messages.reactions.header.frame_id, "world");  // the URDF's ground root link
 
   sample.t = 0.015;
   converter.Convert(sample, state, &messages);  // refilled: the flag of the previous sample must not stay
@@ -49,7 +50,7 @@ TEST(SampleConverter, TransformStampsBracketEverySampleOfARun) {
   // or before it and one at the end of its step (at most dt_max later), so tf interpolates the link frames at
   // every sample time over no more than one step.
   const Model model = test::DoublePendulum();
-  SampleConverter converter(model, "world");
+  SampleConverter converter(model, test::FramesOf(test::kDoublePendulumUrdf, model));
   Simulation simulation(model);
   std::vector<double> sample_times, transform_times;
   simulation.Run([&](const OutputSample& sample) {
@@ -74,13 +75,13 @@ TEST(SampleConverter, HeadersCarryTheSampleIndexAndTime) {
   // sample topic (docs/ros.md).
   // the beam arm with one station, sampled at every step of its first 3 ms (a few steps: the beam is slow to
   // step)
-  ModelSpec spec = LoadModelSpec(test::SourcePath("test/data/urdf/beam_arm.urdf"),
+  ModelSpec spec = LoadModelSpec(test::SourcePath(test::kBeamArmUrdf),
                                  test::SourcePath("test/data/yaml/beam_arm.yaml"));
   spec.output.rate_hz = 0.0;
   spec.output.beam_stations["arm"] = {0.5};
   spec.solver.t_end = 3.0e-3;
   const Model model = BuildModel(spec);
-  SampleConverter converter(model, "world");
+  SampleConverter converter(model, test::FramesOf(test::kBeamArmUrdf, model));
   Simulation simulation(model);
   std::vector<SampleMessages> converted;
   std::vector<double> times;
@@ -102,9 +103,9 @@ TEST(SampleConverter, HeadersCarryTheSampleIndexAndTime) {
   EXPECT_GT(times.back(), 0.0);
   ASSERT_EQ(converted.back().beam_loads.stations.size(), 1u);
   EXPECT_EQ(converted.back().beam_loads.stations[0].beam, "arm");
-  // the beam's 7 node frames and the tip's link frame, every step
+  // the beam's link frame, its 7 node frames and the tip's link frame, every step
   ASSERT_TRUE(converted.back().has_transforms);
-  EXPECT_EQ(converted.back().transforms.transforms.size(), 8u);
+  EXPECT_EQ(converted.back().transforms.transforms.size(), 9u);
 }
 
 }  // namespace

@@ -5,11 +5,15 @@
 #include <yaml-cpp/yaml.h>
 
 #include <string>
+#include <vector>
 
 #include "flexmbd/io/urdf_reader.hpp"
 
 namespace flexmbd {
 namespace io {
+
+/// The top-level keys of the extension parameters: beams, joints, solver, output, loads.
+const std::vector<std::string>& YamlSectionNames();
 
 /// Overwrites what `params` gives (joints, solver, output, loads) in `model->spec`; everything else keeps
 /// its URDF value or the ModelSpec default. An empty (null) document changes nothing.

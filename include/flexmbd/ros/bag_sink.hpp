@@ -2,8 +2,8 @@
 /// @file
 /// Records every sample to a bag through the rosbag C++ API (no master needed). Layout (docs/ros.md): the
 /// sample topics of TopicNames, each message recorded at its header stamp (~contacts, ~friction and
-/// ~beam_loads only for a model that has stops, frictional joints or beam stations), plus the markers once at
-/// the start.
+/// ~beam_loads only for a model that has stops, frictional joints or beam stations), plus the markers and the
+/// static transforms (if any) once at the start.
 ///
 /// Every write is checked: a failed one (disk full, file size limit) throws OutputError. The bag cannot be
 /// closed then (closing writes its index, which fails as well), so it is left unindexed: `rosbag reindex`
@@ -32,10 +32,11 @@ std::optional<BagCompression> ParseBagCompression(const std::string& text);
 
 class BagSink : public MessageSink {
  public:
-  /// Creates (or truncates) the bag at `path` and records `markers`. Throws ConfigError naming the path if
-  /// it cannot be opened, OutputError if it cannot be written.
+  /// Creates (or truncates) the bag at `path` and records `markers`, and `static_transforms` unless empty,
+  /// as latched (so that `rosbag play` latches them). Throws ConfigError naming the path if it cannot be
+  /// opened, OutputError if it cannot be written.
   BagSink(const std::string& path, BagCompression compression, const TopicNames& topics,
-          const visualization_msgs::MarkerArray& markers);
+          const visualization_msgs::MarkerArray& markers, const tf2_msgs::TFMessage& static_transforms);
   /// Closes the bag as Close() does; a failure then goes unreported (call Close() to learn of it).
   ~BagSink() override;
 

@@ -52,14 +52,17 @@ void FillJointFriction(const std::vector<FrictionInfo>& frictions, const OutputS
 /// order and size).
 void FillBeamLoads(const std::vector<BeamStationInfo>& stations, const OutputSample& sample, BeamLoadsArray* msg);
 
-/// One transform per frame of `frames` (TransformFrames), placed by its node in `state`, in `world_frame`,
-/// stamped with the state's time.
-void FillTransforms(const std::vector<TransformFrame>& frames, const State& state, const std::string& world_frame,
-                    tf2_msgs::TFMessage* msg);
+/// One transform per frame of `frames` (FrameTree::moving) from its parent frame to it, both placed by their
+/// nodes in `state`, stamped with the state's time.
+void FillTransforms(const std::vector<TransformFrame>& frames, const State& state, tf2_msgs::TFMessage* msg);
+
+/// One transform per fixed frame (FrameTree::fixed) from its parent link, stamped 0: for /tf_static, where
+/// a transform holds at every time.
+tf2_msgs::TFMessage ToStaticTransforms(const std::vector<StaticFrame>& frames);
 
 /// Markers for rviz, each locked to a tf frame (so they follow /tf and are published once): per body a
 /// sphere at the centre of mass and lines from it to the body's joints, in its link frame; per beam node a
-/// sphere at the node, in its node frame (TransformFrames), so the string of spheres traces the deformed
+/// sphere at the node, in its node frame (BeamNodeFrameName), so the string of spheres traces the deformed
 /// centre line.
 visualization_msgs::MarkerArray ToBodyMarkers(const Model& model);
 

@@ -10,6 +10,7 @@
 #include "flexmbd/model/model.hpp"
 #include "flexmbd/ros/node_settings.hpp"
 #include "flexmbd/ros/sample_fan_out.hpp"
+#include "flexmbd/ros/transform_frames.hpp"
 
 namespace flexmbd {
 namespace ros {
@@ -17,7 +18,7 @@ namespace ros {
 struct NodeCase {
   NodeSettings settings;
   Model model;              ///< output.rate_hz replaced by ~rate_hz when given
-  std::string world_frame;  ///< parent frame of the link transforms
+  FrameTree frames;         ///< the tf tree of the URDF
   RecordingFiles files;     ///< ~bag (or output.bag) and output.csv
 };
 

@@ -23,6 +23,8 @@ struct NodeSettings {
   std::optional<double> rate_hz;  ///< ~rate_hz: overrides output.rate_hz [Hz]; 0 = every accepted step
   bool keep_alive = false;        ///< ~keep_alive: stay up (services answer) when the run ends
   int wait_for_subscribers = 0;   ///< ~wait_for_subscribers: start once every sample topic has this many
+  bool paused = false;            ///< ~paused: start paused (~step, ~resume go on)
+  double clock_rate_hz = 0.0;     ///< ~clock_rate_hz: /clock ticks per simulated second; 0 = every step
 };
 
 /// Names of the settings above, relative to the private namespace.

@@ -35,8 +35,9 @@ struct SampleMessages {
 
 class SampleConverter {
  public:
-  /// @param model must outlive the converter. @param world_frame parent frame of the transforms.
-  SampleConverter(const Model& model, std::string world_frame);
+  /// @param model must outlive the converter. @param frames its tf tree: the moving frames go on /tf, and
+  /// the reactions' header names the world frame.
+  SampleConverter(const Model& model, const FrameTree& frames);
 
   /// Fills `messages` with those of `sample`, taken while the simulation is at `state` (state.t >=
   /// sample.t); `messages` may hold an earlier sample's, whose storage it reuses. Their header.stamp is the
@@ -46,8 +47,8 @@ class SampleConverter {
 
  private:
   const Model& model_;
-  std::string world_frame_;
   std::vector<TransformFrame> frames_;
+  std::string world_frame_;
   uint32_t next_seq_ = 0;
   std::optional<double> last_transform_time_;  ///< state time of the last transforms sent [s]
 };

@@ -23,10 +23,11 @@ struct RecordingFiles {
 
 class SampleFanOut {
  public:
-  /// Opens the recording files (the node and the runner share this, so they write the same bag and CSV).
-  /// `model` must outlive the fan-out. Throws ConfigError naming a path that cannot be opened, OutputError
-  /// if a file cannot be written.
-  SampleFanOut(const Model& model, RecordingFiles files, TopicNames topics);
+  /// Opens the recording files (the node and the runner share this, so they write the same bag and CSV);
+  /// the bag starts with `static_transforms` (ToStaticTransforms). `model` must outlive the fan-out. Throws
+  /// ConfigError naming a path that cannot be opened, OutputError if a file cannot be written.
+  SampleFanOut(const Model& model, RecordingFiles files, TopicNames topics,
+               tf2_msgs::TFMessage static_transforms);
 
   /// Adds a sink that lives across runs (the topics).
   void AddLiveSink(std::unique_ptr<MessageSink> sink);
@@ -58,6 +59,7 @@ class SampleFanOut {
   const Model& model_;
   RecordingFiles files_;
   TopicNames topics_;
+  tf2_msgs::TFMessage static_transforms_;
   std::vector<std::unique_ptr<MessageSink>> live_sinks_;
   std::unique_ptr<BagSink> bag_;
   std::unique_ptr<CsvSink> csv_;

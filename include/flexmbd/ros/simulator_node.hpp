@@ -23,6 +23,7 @@
 
 #include "flexmbd/common/exit_status.hpp"
 #include "flexmbd/ros/async_sample_writer.hpp"
+#include "flexmbd/ros/clock_ticks.hpp"
 #include "flexmbd/ros/node_case.hpp"
 #include "flexmbd/ros/pacer.hpp"
 #include "flexmbd/ros/run_control.hpp"
@@ -52,6 +53,9 @@ class SimulatorNode {
   void ServeCommand();
   std::optional<RunControl::Reply> Execute(RunControl::Command command);
   bool SubscribersReady();
+  /// Samples or clock ticks computed and not yet sent.
+  bool OutputPending() const;
+  /// Sends the earlier of the next sample and the next clock tick once it is due.
   void SendNext();
   void FlushPending();
   void ReportEnd();
@@ -75,6 +79,7 @@ class SimulatorNode {
   const Simulation::SampleSink collect_ = [this](const OutputSample& sample) { Collect(sample); };
   std::deque<AsyncSampleWriter::RecordPtr> pending_;  ///< computed, not yet sent: the solver may run ahead
                                                       ///< of the pace and of a pause
+  std::optional<ClockTicks> clock_ticks_;  ///< reached, not yet sent; none without /clock
   std::optional<double> last_sent_t_;  ///< time of the last sample released to the writer [s]
   long samples_sent_ = 0;
   Clock::time_point first_sent_wall_;  ///< when the run's first sample was sent

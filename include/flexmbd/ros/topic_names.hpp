@@ -7,10 +7,11 @@
 namespace flexmbd {
 namespace ros {
 
-// Topic names as the node advertises them: joint_states in the node's namespace, /tf and /clock global,
-// the others in the node's private namespace.
+// Topic names as the node advertises them: joint_states in the node's namespace, /tf, /tf_static and /clock
+// global, the others in the node's private namespace.
 constexpr char kJointStatesTopic[] = "joint_states";
 constexpr char kTfTopic[] = "/tf";
+constexpr char kTfStaticTopic[] = "/tf_static";
 constexpr char kClockTopic[] = "/clock";
 constexpr char kEnergyTopic[] = "energy";
 constexpr char kReactionsTopic[] = "reactions";
@@ -30,6 +31,7 @@ struct TopicNames {
   std::string friction;      ///< flexmbd/JointFrictionArray (models with frictional joints)
   std::string beam_loads;    ///< flexmbd/BeamLoadsArray (models with beam stations)
   std::string tf;            ///< tf2_msgs/TFMessage
+  std::string tf_static;     ///< tf2_msgs/TFMessage, latched (models with fixed massless links)
   std::string markers;       ///< visualization_msgs/MarkerArray
 };
 

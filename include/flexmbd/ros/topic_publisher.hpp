@@ -25,13 +25,21 @@ class TopicPublisher : public MessageSink {
   /// Advertises `joint_states` and `/tf` in `node`'s namespace, `~energy`, `~reactions`, `~solver`,
   /// `~contacts` if `model` has stops, `~friction` if it has frictional joints, `~beam_loads` if it has beam
   /// stations (output.beam_stations), and the latched `~markers`
-  /// (ToBodyMarkers, published once, here) in `private_node`'s, and `/clock` if `publish_clock`.
-  /// `on_connect` is called (from a spinner thread) whenever a subscriber connects to a sample topic.
-  TopicPublisher(::ros::NodeHandle& node, ::ros::NodeHandle& private_node, const Model& model, bool publish_clock,
+  /// (ToBodyMarkers, published once, here) in `private_node`'s, the latched `/tf_static` (published once,
+  /// here) unless `static_transforms` is empty, and `/clock` if `publish_clock`. `on_connect` is called
+  /// (from a spinner thread) whenever a subscriber connects to a sample topic.
+  TopicPublisher(::ros::NodeHandle& node, ::ros::NodeHandle& private_node, const Model& model,
+                 const tf2_msgs::TFMessage& static_transforms, bool publish_clock,
                  const std::function<void()>& on_connect);
 
-  /// Publishes while ROS is up (after a shutdown it does nothing); the clock follows the sample time.
+  /// Publishes while ROS is up (after a shutdown it does nothing).
   void Write(const SampleMessages& messages) override;
+
+  /// Whether /clock is advertised.
+  bool publishes_clock() const { return static_cast<bool>(clock_); }
+
+  /// Publishes simulated time `t` [s] on /clock at once (from the run loop: ClockTicks paces it).
+  void PublishClock(double t);
 
   /// Wakes roscpp's sender for the samples written since it was last woken.
   void EndBatch() override;
@@ -52,8 +60,10 @@ class TopicPublisher : public MessageSink {
   // ~contacts, ~friction, ~beam_loads.
   std::vector<const QueuedTopic*> SampleTopics() const;
 
-  QueuedTopic joint_states_, energy_, reactions_, solver_, contacts_, friction_, beam_loads_, tf_, clock_;
-  ::ros::Publisher markers_;  ///< latched, published once
+  QueuedTopic joint_states_, energy_, reactions_, solver_, contacts_, friction_, beam_loads_, tf_;
+  ::ros::Publisher clock_;       ///< none without /use_sim_time
+  ::ros::Publisher markers_;     ///< latched, published once
+  ::ros::Publisher tf_static_;   ///< latched, published once; none without static transforms
   int unsent_samples_ = 0;    ///< samples queued since the sender was last woken
 };
 

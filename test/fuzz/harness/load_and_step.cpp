@@ -8,7 +8,7 @@
 #include "flexmbd/io/yaml_document.hpp"
 #include "flexmbd/ros/node_settings.hpp"
 #include "flexmbd/ros/param_tree.hpp"
-#include "flexmbd/ros/world_frame.hpp"
+#include "flexmbd/ros/transform_frames.hpp"
 #include "flexmbd/solver/eigen_analysis.hpp"
 #include "flexmbd/solver/simulation.hpp"
 #include "param_tree_from_yaml.hpp"
@@ -30,7 +30,7 @@ ModelSpec Load(const FuzzInput& input) {
 
 void Run(const FuzzInput& input) {
   const Model model = BuildModel(Load(input));
-  if (input.channel == Channel::kParamTree) ros::WorldFrameName(input.urdf, model);
+  if (input.channel == Channel::kParamTree) ros::UrdfFrameTree(input.urdf, model);
   const auto no_output = [](const OutputSample&) {};
   switch (model.solver().analysis) {
     case SolverSpec::Analysis::kEigen: {
