@@ -41,7 +41,7 @@ struct OutputSample {
   double t = 0;                  ///< [s]
   Eigen::VectorXd position;      ///< joint variables [rad or m] (num_variables)
   Eigen::VectorXd velocity;      ///< their rates [rad/s or m/s]
-  Eigen::VectorXd effort;        ///< force transmitted along each variable by its spring, damper and drive [N m or N]
+  Eigen::VectorXd effort;        ///< generalised force along each variable, stops and friction included [N m or N]
   std::vector<Vec3> reaction_force_W;   ///< per joint: force on the child from the parent, in W [N]
   std::vector<Vec3> reaction_moment;    ///< per joint: rotational multipliers (moment on the child) [N m]
   std::vector<StopSample> stops;         ///< per stop, in Model::stops() order
