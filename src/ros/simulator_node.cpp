@@ -40,15 +40,15 @@ SimulatorNode::SimulatorNode(::ros::NodeHandle node, ::ros::NodeHandle private_n
     : node_(std::move(node)),
       private_node_(std::move(private_node)),
       case_(LoadNodeCase(node_, private_node_)),
-      pacer_(case_.settings.real_time_factor),
-      outputs_(std::make_unique<SampleFanOut>(case_.model, case_.files, ResolveTopicNames(node_, private_node_),
-                                              ToStaticTransforms(case_.frames.fixed))) {
+      pacer_(case_.settings.real_time_factor) {
+  const tf2_msgs::TFMessage static_transforms = ToStaticTransforms(case_.frames.fixed);
+  outputs_ = std::make_unique<SampleFanOut>(case_.model, case_.files, ResolveTopicNames(node_, private_node_),
+                                            static_transforms);
   if (case_.settings.publish) {
     bool use_sim_time = false;
     ::ros::param::get("/use_sim_time", use_sim_time);
-    auto publisher =
-        std::make_unique<TopicPublisher>(node_, private_node_, case_.model, ToStaticTransforms(case_.frames.fixed),
-                                         use_sim_time, [this] { control_.Notify(); });
+    auto publisher = std::make_unique<TopicPublisher>(node_, private_node_, case_.model, static_transforms,
+                                                      use_sim_time, [this] { control_.Notify(); });
     publisher_ = publisher.get();
     outputs_->AddLiveSink(std::move(publisher));
     if (use_sim_time) clock_ticks_.emplace(case_.settings.clock_rate_hz);

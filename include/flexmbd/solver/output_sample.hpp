@@ -57,6 +57,9 @@ struct OutputSample {
   double total() const { return kinetic + potential; }
 };
 
+/// Kinetic and potential energy of the model's elements at `state`.
+EnergyTally StateEnergy(const Model& model, const State& state);
+
 /// The sample at a state; efforts and reactions come from the multipliers evaluated in `ctx`.
 OutputSample MakeSample(const Model& model, const State& state, const StepContext& ctx, double dt, int iterations);
 

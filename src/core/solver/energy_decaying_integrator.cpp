@@ -217,16 +217,16 @@ StepResult EnergyDecayingIntegrator::Step(const State& start, double h, State* e
   if (choice_matters) judging_.Record(early, iterations);
   Commit(start, unknowns, h, coefficients.nodes, end);
   CommitEffects(start, end, &result.limit);
-  if (ModesJumped(start, *end)) {
-    // The accelerations of a step whose modes changed with a jump (an impact, a stick-slip transition) say
-    // nothing about the next: the local error estimate and the scheme's dissipation restart their history.
-    end->history_steps = 0;
-    projection_.Apply(end);
-  }
+  // The accelerations of a step whose modes changed with a jump (an impact, a stick-slip transition) say nothing
+  // about the next: the local error estimate and the scheme's dissipation restart their history.
+  const bool jumped = ModesJumped(start, *end);
+  if (jumped) end->history_steps = 0;
   result.error = EstimateLocalError(model_, *end);
   const bool too_large = model_.solver().adaptive && result.error.error > 1.0;
   result.status = too_large ? StepStatus::kRejectedError : StepStatus::kAccepted;
   if (result.limit.retry < h) result.status = StepStatus::kRejectedEvent;
+  // Only a step that stands is worth its projection (two solves).
+  if (jumped && result.status == StepStatus::kAccepted) projection_.Apply(end);
   return result;
 }
 

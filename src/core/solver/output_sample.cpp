@@ -16,6 +16,12 @@ BeamStationSample SampleStation(const Model& model, const State& state, const Be
 }
 }  // namespace
 
+EnergyTally StateEnergy(const Model& model, const State& state) {
+  EnergyTally energy;
+  for (const auto& element : model.elements()) element->AddEnergy(state, model.solver().gravity, &energy);
+  return energy;
+}
+
 OutputSample MakeSample(const Model& model, const State& state, const StepContext& ctx, double dt, int iterations) {
   OutputSample s;
   s.t = state.t;
@@ -30,8 +36,7 @@ OutputSample MakeSample(const Model& model, const State& state, const StepContex
   }
   for (const JointStop* stop : model.stop_effects()) s.stops.push_back(stop->Sample(state));
   for (const FrictionEffect* friction : model.friction_effects()) s.friction.push_back(friction->Sample(state));
-  EnergyTally energy;
-  for (const auto& element : model.elements()) element->AddEnergy(state, model.solver().gravity, &energy);
+  const EnergyTally energy = StateEnergy(model, state);
   s.kinetic = energy.kinetic;
   s.potential = energy.potential;
   s.external_work = state.external_work;

@@ -5,6 +5,7 @@
 #include "flexmbd/model/model.hpp"
 #include "flexmbd/solver/joint_rates.hpp"
 #include "flexmbd/solver/newton.hpp"
+#include "flexmbd/solver/output_sample.hpp"
 #include "flexmbd/solver/sparse_system.hpp"
 #include "flexmbd/solver/time_integrator.hpp"
 
@@ -14,12 +15,6 @@ namespace {
 // their mean velocities (h a / 2) is extrapolated away to O(h^2), large enough that the positions they move stay
 // far above the constraint tolerance.
 constexpr double kLimitingStepFraction = 1.0e-4;
-
-double KineticEnergy(const Model& model, const State& state) {
-  EnergyTally energy;
-  for (const auto& element : model.elements()) element->AddEnergy(state, model.solver().gravity, &energy);
-  return energy.kinetic;
-}
 }  // namespace
 
 VelocityProjection::VelocityProjection(const Model& model, SparseSystem* system)
@@ -68,7 +63,7 @@ bool VelocityProjection::Apply(State* state) {
   MeanMotion single, twice;
   if (!SolveLimitingStep(*state, h, &single) || !SolveLimitingStep(*state, 2.0 * h, &twice)) return false;
   // Richardson extrapolation to h = 0 of the mean velocities and of the constraint impulses' work.
-  const double kinetic_before = KineticEnergy(model_, *state);
+  const double kinetic_before = StateEnergy(model_, *state).kinetic;
   for (int k = 0; k < model_.num_nodes(); ++k) {
     state->nodes[k].v = 2.0 * single.v[k] - twice.v[k];
     state->nodes[k].w = 2.0 * single.w[k] - twice.w[k];
@@ -85,7 +80,7 @@ bool VelocityProjection::Apply(State* state) {
   }
   state->external_work += external;
   state->dissipated_physical += dissipated;
-  state->dissipated_numerical += kinetic_before - KineticEnergy(model_, *state) + external - dissipated;
+  state->dissipated_numerical += kinetic_before - StateEnergy(model_, *state).kinetic + external - dissipated;
   return true;
 }
 
