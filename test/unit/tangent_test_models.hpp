@@ -33,6 +33,23 @@ inline BodySpec Body(const std::string& name, double mass, const Vec3& p_BoBcm_B
   return b;
 }
 
+// A body of 2 kg with its centre of mass 0.6 m out along x and a full inertia tensor, on a pivot about y at the
+// origin, under gravity along -z.
+inline ModelSpec PivotedArm(const std::string& source) {
+  ModelSpec spec;
+  spec.source = source;
+  spec.bodies.push_back(Body("link", 2.0, Vec3(0.6, 0.0, 0.0)));
+  JointSpec pivot;
+  pivot.name = "pivot";
+  pivot.type = JointType::kRevolute;
+  pivot.child = "link";
+  pivot.axis_J = Vec3::UnitY();
+  pivot.effects.resize(1);
+  spec.joints.push_back(pivot);
+  spec.solver.gravity = Vec3(0, 0, -9.81);
+  return spec;
+}
+
 // Places `child` so that `joint` holds at its initial position, given the parent pose (identity for the world).
 inline void PlaceChild(const Vec3& p_WP, const Mat3& R_WP, const JointSpec& joint, BodySpec* child) {
   const JointKinematics k = MakeJointKinematics(joint);

@@ -12,19 +12,9 @@
 namespace flexmbd {
 namespace {
 
-// A body with its centre of mass 0.6 m out along x and a full inertia tensor, on a pivot about y at the origin.
+// The pivoted arm with a tight Newton tolerance.
 ModelSpec Pendulum() {
-  ModelSpec spec;
-  spec.source = "pendulum (unit test)";
-  spec.bodies.push_back(test::Body("link", 2.0, Vec3(0.6, 0.0, 0.0)));
-  JointSpec pivot;
-  pivot.name = "pivot";
-  pivot.type = JointType::kRevolute;
-  pivot.child = "link";
-  pivot.axis_J = Vec3::UnitY();
-  pivot.effects.resize(1);
-  spec.joints.push_back(pivot);
-  spec.solver.gravity = Vec3(0, 0, -9.81);
+  ModelSpec spec = test::PivotedArm("pendulum (unit test)");
   spec.solver.tol = 1.0e-12;
   return spec;
 }

@@ -83,7 +83,6 @@ class BeamElement : public Element {
     // w C [(e_i + e_f)/2 + (mu/h + alpha) de - alpha de_lagged] and de - B_mid d per point
     Field::PointVectors stress, gap;
     std::array<Mat6, BeamShape::kMaxPoints> rate;  // d stress / d e_f
-    std::array<Field::Jacobian, BeamShape::kMaxPoints> B_mid;
     double gap_work = 0;  // sum_g gap . stress
   };
   StepStress StepStresses(const StepContext& ctx, const StepFields& step) const;

@@ -59,6 +59,8 @@ class BeamStrainField {
 
   /// B_g = d strain_g / dp (Order kFirst or kSecond).
   Jacobian StrainJacobian(int g) const;
+  /// B_g v for every point g (Order kFirst or kSecond), without forming B_g.
+  PointVectors StrainDirectionalDerivatives(const Vector& v) const;
   /// sum_g B_g^T stress_g: the generalised forces of section forces at the points (already weighted).
   Vector Gradient(const PointVectors& stress) const;
   /// K += sum_g B_g^T material_g B_g (if material) + d/dp [sum_g B_g^T stress_g] at fixed stress_g, rotations
@@ -102,6 +104,8 @@ class BeamStrainField {
   Vector LocalToPerturbation(const Vector& c) const;
   // dz/dp v.
   Vector LocalRate(const Vector& v) const;
+  // dq_g/dz z_dot.
+  Eigen::Matrix<double, 9, 1> PointRate(int g, const Vector& z_dot) const;
   // K += sum_k c_k . d2 z_k / dp2 for a covector c of z.
   void AddLocalCoordinateHessian(const Vector& c, Matrix* K) const;
   // d2 z / dp2 along v (6n x 6n).

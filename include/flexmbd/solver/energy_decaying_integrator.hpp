@@ -17,6 +17,7 @@
 
 #include "flexmbd/solver/dissipation_judging.hpp"
 #include "flexmbd/solver/step_context_builder.hpp"
+#include "flexmbd/solver/tangent_reuse.hpp"
 #include "flexmbd/solver/time_integrator.hpp"
 #include "flexmbd/solver/velocity_projection.hpp"
 
@@ -50,7 +51,7 @@ class EnergyDecayingIntegrator : public TimeIntegrator {
   // Asks every effect with modes whether the converged step contradicts its trial mode; true if any did.
   bool ReviseModes();
   // The effects' step-size requests and their state at the end of the accepted step.
-  void CommitEffects(const State& start, State* end, StepLimit* limit) const;
+  void CommitEffects(State* end, StepLimit* limit) const;
   // True when an effect changed its mode from `start` to `end` with a jump in the motion (ModeChangesAreSmooth).
   bool ModesJumped(const State& start, const State& end) const;
   void Commit(const State& start, const Eigen::VectorXd& unknowns, double h,
@@ -63,6 +64,7 @@ class EnergyDecayingIntegrator : public TimeIntegrator {
   double alpha_inf_;
   std::vector<Mat3> node_inertia_;  ///< rotational inertia of each node's body, weights the dissipation check
   std::vector<EffectState> modes_;  ///< trial modes of the step being solved
+  TangentReuse tangent_reuse_;     ///< whether a step starts from the previous one's factorisation, learnt
   DissipationJudging judging_;      ///< when a step judges its dissipation terms, learnt from the steps taken
 };
 

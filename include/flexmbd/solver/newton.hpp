@@ -3,7 +3,7 @@
 /// Newton iteration shared by static and dynamic analyses (simplified: the tangent is refreshed only when
 /// convergence is slow). Converged when the force rows are small relative to the magnitude of the forces that
 /// make them up, the constraint rows are below kConstraintTolerance, and the increment computed from that
-/// residual is small; the increment is applied.
+/// residual is small (for an approximate solve, the increment alone: NewtonOptions); the increment is applied.
 
 #include <functional>
 
@@ -32,19 +32,27 @@ struct NewtonReport {
   int worst_unknown = -1;          ///< row with the largest scaled residual
 };
 
+/// How a solve starts and what it must reach.
+struct NewtonOptions {
+  /// Start from the system's current factorisation instead of assembling a tangent (it is refreshed as soon as
+  /// the iteration contracts too slowly).
+  bool reuse_tangent = false;
+  /// Converged on the increment test alone, without the residual test of the iterate it came from: for an
+  /// approximate solve that a full one continues (an energy-decaying step judging its dissipation terms).
+  bool increment_test_only = false;
+};
+
 /// Round-off of a configuration with coordinates up to `magnitude` [m or rad]: increments below it are noise.
 double RoundOffFloor(double magnitude);
 
 /// @param noise_floor increments below this are round-off (see RoundOffFloor) whatever the tolerance.
 /// @param evaluate builds the StepContext for the current trial unknowns at a given iteration (1-based),
 /// saying whether the tangent will be assembled from it.
-/// @param reuse_tangent start from the system's current factorisation instead of assembling a tangent (it is
-/// refreshed as soon as the iteration contracts too slowly).
 /// @param apply applies a Newton increment to the trial unknowns and returns the size (max norm) of the
 /// kinematic motion against which increments are judged small, floor included (e.g. kMotionFloor).
 NewtonReport SolveNewton(const Model& model, SparseSystem* system, double tol, int max_iterations, double noise_floor,
                          const std::function<const StepContext&(int iteration, bool with_tangent)>& evaluate,
                          const std::function<double(const Eigen::VectorXd& increment)>& apply,
-                         bool reuse_tangent = false);
+                         const NewtonOptions& options = {});
 
 }  // namespace flexmbd

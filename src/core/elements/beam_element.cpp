@@ -217,13 +217,13 @@ BeamElement::StepStress BeamElement::StepStresses(const StepContext& ctx, const 
   const double alpha = Alpha(ctx);
   const double viscosity = damping_ / ctx.h + alpha;
   StepStress stress;
+  const Field::PointVectors mid_rates = mid.StrainDirectionalDerivatives(step.d);  // B_mid d
   for (int g = 0; g < mid.num_points(); ++g) {
     const Vec6 de = step.end->strain(g) - step.start->strain(g);
     stress.rate[g] = (0.5 + viscosity) * weighted_stiffness_[g];
     stress.stress[g] = weighted_stiffness_[g] * (0.5 * (step.start->strain(g) + step.end->strain(g)) + viscosity * de);
     if (alpha > 0) stress.stress[g] -= alpha * (weighted_stiffness_[g] * LaggedStrainChange(ctx, g));
-    stress.B_mid[g] = mid.StrainJacobian(g);
-    stress.gap[g] = de - stress.B_mid[g] * step.d;
+    stress.gap[g] = de - mid_rates[g];
     // A gap at the round-off of the strains would be divided by the squared increments into forces that
     // Newton cannot remove (a stiff section at rest).
     if (stress.gap[g].cwiseAbs().maxCoeff() <= 100.0 * step.strain_round_off) stress.gap[g].setZero();
@@ -243,14 +243,15 @@ void BeamElement::AddStepStressTangent(const StepFields& step, const StepStress&
   bool any_gap = false;
   Field::Vector dgap_work = Field::Vector::Zero(dofs);
   for (int g = 0; g < step.mid->num_points(); ++g) {
+    const Field::Jacobian B_mid = step.mid->StrainJacobian(g);
     Field::Jacobian B_end = step.end->StrainJacobian(g);
     step.to_end.ApplyToColumns(n, &B_end);
-    K->noalias() += stress.B_mid[g].transpose() * stress.rate[g] * B_end;
+    K->noalias() += B_mid.transpose() * stress.rate[g] * B_end;
     if (!moved) continue;
     dgap_work.noalias() += B_end.transpose() * (stress.rate[g].transpose() * stress.gap[g]);
     if (stress.gap[g].isZero(0.0)) continue;
     any_gap = true;
-    dgap_work.noalias() += (B_end - stress.B_mid[g]).transpose() * stress.stress[g];
+    dgap_work.noalias() += (B_end - B_mid).transpose() * stress.stress[g];
   }
   if (!moved) return;
   // The gap's derivative through B_mid at fixed d, summed against the stresses, is K_mid^T d: both are the

@@ -127,6 +127,23 @@ BeamStrainField::Jacobian BeamStrainField::StrainJacobian(int g) const {
   return LocalToPerturbation(PointToLocal<6>(g, points_[g].E));
 }
 
+Eigen::Matrix<double, 9, 1> BeamStrainField::PointRate(int g, const Vector& z_dot) const {
+  Eigen::Matrix<double, 9, 1> q_dot = Eigen::Matrix<double, 9, 1>::Zero();
+  for (int k = 0; k < shape_->num_nodes(); ++k) {
+    q_dot.segment<3>(kDy) += shape_->dNds[g][k] * z_dot.segment<3>(6 * k);
+    q_dot.segment<3>(kPsi) += shape_->N[g][k] * z_dot.segment<3>(6 * k + kRotation);
+    q_dot.segment<3>(kDpsi) += shape_->dNds[g][k] * z_dot.segment<3>(6 * k + kRotation);
+  }
+  return q_dot;
+}
+
+BeamStrainField::PointVectors BeamStrainField::StrainDirectionalDerivatives(const Vector& v) const {
+  const Vector z_dot = LocalRate(v);
+  PointVectors rates;
+  for (int g = 0; g < num_points(); ++g) rates[g] = points_[g].E * PointRate(g, z_dot);
+  return rates;
+}
+
 BeamStrainField::Vector BeamStrainField::Gradient(const PointVectors& stress) const {
   Vector c = Vector::Zero(num_dofs());
   for (int g = 0; g < num_points(); ++g) c += PointToLocal(g, points_[g].E.transpose() * stress[g]);
@@ -264,12 +281,7 @@ std::array<BeamStrainField::Jacobian, BeamStrainField::kMaxPoints> BeamStrainFie
   std::array<Jacobian, kMaxPoints> D;
   for (int g = 0; g < num_points(); ++g) {
     const Point& p = points_[g];
-    Eigen::Matrix<double, 9, 1> q_dot = Eigen::Matrix<double, 9, 1>::Zero();
-    for (int k = 0; k < n; ++k) {
-      q_dot.segment<3>(kDy) += shape_->dNds[g][k] * z_dot.segment<3>(6 * k);
-      q_dot.segment<3>(kPsi) += shape_->N[g][k] * z_dot.segment<3>(6 * k + kRotation);
-      q_dot.segment<3>(kDpsi) += shape_->dNds[g][k] * z_dot.segment<3>(6 * k + kRotation);
-    }
+    const Eigen::Matrix<double, 9, 1> q_dot = PointRate(g, z_dot);
     const Wide<6, 6> EA = PointToLocal<6>(g, p.E);
     D[g] = LocalToPerturbation(PointToLocal<6>(g, PointSecondDerivative(p, q_dot)));
     D[g].noalias() += EA * z_second;

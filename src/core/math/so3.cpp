@@ -23,6 +23,17 @@ double Sinc(double x) { return std::abs(x) < kSincSeriesLimit ? 1.0 - x * x / 6.
 Mat3 Exp(const Vec3& theta) { return so3::ExpOf<double>(theta); }
 
 Vec3 Log(const Mat3& R) {
+  // Below a quarter turn the skew part, sin(angle) times the axis, fixes the axis well and no quaternion is
+  // needed (the beams' local rotations, the hot case); nearer a half turn it vanishes, and Eigen's quaternion
+  // path, which takes the axis from the diagonal, is used.
+  const double cos_angle = 0.5 * (R.trace() - 1.0);
+  if (cos_angle > 0.0) {
+    const Vec3 sin_axis = Axial(R);
+    const double sin_angle = sin_axis.norm();
+    const double ratio = sin_angle < kSincSeriesLimit ? 1.0 + sin_angle * sin_angle / 6.0
+                                                      : std::atan2(sin_angle, cos_angle) / sin_angle;
+    return ratio * sin_axis;
+  }
   const Eigen::AngleAxisd angle_axis(R);
   return angle_axis.angle() * angle_axis.axis();
 }

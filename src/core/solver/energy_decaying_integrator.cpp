@@ -162,6 +162,10 @@ StepResult EnergyDecayingIntegrator::Step(const State& start, double h, State* e
   const bool choice_matters = coefficients.any() && model_.solver().tol < kDissipationJudgedAt;
   const bool early = judging_.Early();
   bool judging_dissipation = choice_matters && early;
+  // The first solve may start from the previous step's factorisation where the model's steps have shown that it
+  // holds (TangentReuse); a solve redone within the step reuses this step's own.
+  const bool earlier_tangent = system_->factorisation_key() == h && tangent_reuse_.Attempt();
+  bool first_solve = true;
   while (true) {
     int tangents = 0;
     const double tol = judging_dissipation ? kDissipationJudgedAt : model_.solver().tol;
@@ -181,7 +185,9 @@ StepResult EnergyDecayingIntegrator::Step(const State& start, double h, State* e
           unknowns += increment;
           return (unknowns.head(n_kinematic) - coasting).cwiseAbs().maxCoeff() + h * h * kAccelerationFloor;
         },
-        system_->factorisation_key() == h);
+        NewtonOptions{first_solve ? earlier_tangent : system_->factorisation_key() == h, judging_dissipation});
+    if (first_solve && earlier_tangent) tangent_reuse_.Record(result.newton.converged && result.newton.tangents == 0);
+    first_solve = false;
     iterations += result.newton.iterations;
     fresh_tangents += result.newton.tangents;
     result.newton.iterations = iterations;
@@ -216,7 +222,7 @@ StepResult EnergyDecayingIntegrator::Step(const State& start, double h, State* e
   }
   if (choice_matters) judging_.Record(early, iterations);
   Commit(start, unknowns, h, coefficients.nodes, end);
-  CommitEffects(start, end, &result.limit);
+  CommitEffects(end, &result.limit);
   // The accelerations of a step whose modes changed with a jump (an impact, a stick-slip transition) say nothing
   // about the next: the local error estimate and the scheme's dissipation restart their history.
   const bool jumped = ModesJumped(start, *end);
@@ -238,7 +244,7 @@ bool EnergyDecayingIntegrator::ModesJumped(const State& start, const State& end)
   return false;
 }
 
-void EnergyDecayingIntegrator::CommitEffects(const State& start, State* end, StepLimit* limit) const {
+void EnergyDecayingIntegrator::CommitEffects(State* end, StepLimit* limit) const {
   const StepContext& ctx = builder_.context();
   for (const ModalEffect* effect : model_.modal_effects()) limit->Merge(effect->Limit(ctx, *end));
   end->effects = modes_;

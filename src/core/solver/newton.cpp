@@ -53,14 +53,14 @@ double RoundOffFloor(double magnitude) {
 NewtonReport SolveNewton(const Model& model, SparseSystem* system, double tol, int max_iterations, double noise_floor,
                          const std::function<const StepContext&(int iteration, bool with_tangent)>& evaluate,
                          const std::function<double(const Eigen::VectorXd& increment)>& apply,
-                         bool reuse_tangent) {
+                         const NewtonOptions& options) {
   // Simplified Newton: the tangent is assembled and factorised on the first iteration and again only when the
   // observed contraction predicts more than this many further iterations.
   constexpr double kMaxSimplifiedIterations = 3.0;
   NewtonReport report;
   const int n_kinematic = model.num_unknowns() - model.num_multipliers();
   Eigen::VectorXd increment, applied;
-  bool refresh = !(reuse_tangent && system->has_factorisation());
+  bool refresh = !(options.reuse_tangent && system->has_factorisation());
   bool tangent_from_earlier_step = !refresh;
   double previous_size = std::numeric_limits<double>::infinity();
   for (int iteration = 1; iteration <= max_iterations; ++iteration) {
@@ -90,7 +90,10 @@ NewtonReport SolveNewton(const Model& model, SparseSystem* system, double tol, i
     tangent_from_earlier_step = tangent_from_earlier_step && !refresh;
     applied = increment;
     const double reference = apply(increment);
-    const bool residual_small = check.force <= tol && check.constraint <= kConstraintTolerance;
+    // On the increment test alone only an increment from a fresh tangent, or one that contracted, is trusted.
+    const bool increment_trusted = refresh || std::isfinite(previous_size);
+    const bool residual_small = (options.increment_test_only && increment_trusted) ||
+                                (check.force <= tol && check.constraint <= kConstraintTolerance);
     if (residual_small && size <= tol * reference + noise_floor) {
       report.converged = true;
       return report;

@@ -45,6 +45,12 @@ class TfTree(unittest.TestCase):
         joints = rospy.get_param('~joints', [])
         if not joints:
             return
+        # The listener's /tf connection can come up after the joint_states one: a sample older than the first
+        # transform received would never be found (and the lookup would wait until the run ends). Samples are
+        # taken only once every joint's transform has arrived.
+        for parent, child, _ in joints:
+            self.assertTrue(self.buffer.can_transform(parent, child, rospy.Time(0), rospy.Duration(TIMEOUT)),
+                            '%s -> %s never arrived on /tf' % (parent, child))
         states = []
         subscriber = rospy.Subscriber('/joint_states', JointState, states.append, queue_size=1000)
         deadline = rospy.get_time() + TIMEOUT

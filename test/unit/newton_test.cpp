@@ -1,0 +1,81 @@
+// SolveNewton's approximate solve (NewtonOptions::increment_test_only), on a static pendulum held by a spring:
+// it stops at the first trusted increment below the tolerance, before the full test would, and its iterate lies
+// within that tolerance of the converged one.
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <limits>
+
+#include "flexmbd/model/model.hpp"
+#include "flexmbd/solver/newton.hpp"
+#include "flexmbd/solver/sparse_system.hpp"
+#include "flexmbd/solver/step_context_builder.hpp"
+#include "tangent_test_models.hpp"
+
+namespace flexmbd {
+namespace {
+
+// The pivoted arm (0.6 m) held by a torsional spring: it settles where the spring balances gravity, about half
+// a radian down (a nonlinear root: the moment arm is 0.6 cos q).
+Model SprungPendulum() {
+  ModelSpec spec = test::PivotedArm("sprung pendulum (unit test)");
+  spec.joints[0].effects[0].springs.push_back(SpringSpec{20.0, 0.0});
+  return BuildModel(spec);
+}
+
+struct Solved {
+  NewtonReport report;
+  double angle = 0;  // [rad]
+};
+
+Solved SolveStatic(const Model& model, double tol, const NewtonOptions& options) {
+  SparseSystem system(model);
+  StepContextBuilder builder(model);
+  builder.set_geometric_stiffness(true);
+  State state = model.initial_state();
+  Eigen::VectorXd unknowns = Eigen::VectorXd::Zero(model.num_unknowns());
+  double travelled = 0;
+  const int n_kinematic = model.num_unknowns() - model.num_multipliers();
+  Solved solved;
+  solved.report = SolveNewton(
+      model, &system, tol, 50, RoundOffFloor(model.length_scale()),
+      [&](int, bool) -> const StepContext& {
+        unknowns.setZero();
+        unknowns.tail(model.num_multipliers()) = state.lambda;
+        return builder.Static(state, unknowns, 0.0, 1.0);
+      },
+      [&](const Eigen::VectorXd& increment) {
+        for (int k = 0; k < model.num_nodes(); ++k) {
+          state.nodes[k].x += increment.segment<3>(model.node_unknown(k));
+          state.nodes[k].R = state.nodes[k].R * Exp(increment.segment<3>(model.node_unknown(k) + 3));
+        }
+        for (int k = 0; k < model.num_variables(); ++k) state.q[k] += increment[model.variable_unknown(k)];
+        state.lambda += increment.tail(model.num_multipliers());
+        travelled = std::max(travelled, increment.head(n_kinematic).cwiseAbs().maxCoeff());
+        return travelled + kMotionFloor;
+      },
+      options);
+  solved.angle = state.q[0];
+  return solved;
+}
+
+TEST(Newton, AnApproximateSolveStopsAtItsFirstSmallIncrement) {
+  const Model model = SprungPendulum();
+  constexpr double kLoose = 1.0e-3;
+  const Solved reference = SolveStatic(model, 1.0e-12, NewtonOptions{});
+  const Solved full = SolveStatic(model, kLoose, NewtonOptions{});
+  const Solved approximate = SolveStatic(model, kLoose, NewtonOptions{false, true});
+  ASSERT_TRUE(reference.report.converged && full.report.converged && approximate.report.converged);
+  // The pendulum moves by about half a radian: not a root the first iterate finds.
+  EXPECT_GT(std::abs(reference.angle), 0.3);
+  // The full test also asks that the residual the last increment came from be small against the forces; the
+  // approximate solve stops as soon as the increment is (5 iterations against 8 here).
+  EXPECT_LT(approximate.report.iterations, full.report.iterations);
+  // Its iterate is within the tolerance of the travel (about 0.5 rad) of the root: the remaining error is the
+  // next increment, below the last one (it contracts).
+  EXPECT_LT(std::abs(approximate.angle - reference.angle), kLoose * 0.5);
+}
+
+}  // namespace
+}  // namespace flexmbd
