@@ -1,6 +1,6 @@
 // Benchmark subscriber for scripts/bench_node.sh: receives a node's sample topics on loopback (the four
-// every node has, and ~contacts, ~friction and ~beam_loads, which carry messages where the model has stops,
-// frictional joints or beam stations) and reports how many samples arrived, how many were lost (gaps in
+// every node has, /tf, and ~contacts, ~friction and ~beam_loads, which carry messages where the model has stops,
+// frictional joints or beam stations; a node started with ~wait_for_subscribers waits for each) and reports how many samples arrived, how many were lost (gaps in
 // header.seq, the sample index) and at what rate.
 //   sample_rate_subscriber NODE_NAME [IDLE_SECONDS]
 // Ends once messages have stopped for IDLE_SECONDS (default 3) after the first one; prints one line:
@@ -74,7 +74,12 @@ int main(int argc, char** argv) {
       subscribe("/joint_states", &joint_states), subscribe(prefix + "energy", &energy),
       subscribe(prefix + "reactions", &reactions), subscribe(prefix + "solver", &solver),
       subscribe(prefix + "contacts", &contacts), subscribe(prefix + "friction", &friction),
-      subscribe(prefix + "beam_loads", &beam_loads)};
+      subscribe(prefix + "beam_loads", &beam_loads),
+      // /tf messages carry no sample index: received, not counted
+      handle.subscribe<tf2_msgs::TFMessage>("/tf", kQueueSize,
+                                            boost::function<void(const tf2_msgs::TFMessage::ConstPtr&)>(
+                                                [&touch](const tf2_msgs::TFMessage::ConstPtr&) { touch(); }),
+                                            ros::VoidConstPtr())};
   const ros::WallDuration poll(0.01);
   while (ros::ok()) {
     ros::getGlobalCallbackQueue()->callAvailable(poll);

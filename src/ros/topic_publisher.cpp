@@ -103,7 +103,7 @@ bool TopicPublisher::HasSubscribers() const {
 }
 
 std::vector<const QueuedTopic*> TopicPublisher::SampleTopics() const {
-  std::vector<const QueuedTopic*> topics = {&joint_states_, &energy_, &reactions_, &solver_};
+  std::vector<const QueuedTopic*> topics = {&joint_states_, &energy_, &reactions_, &solver_, &tf_};
   for (const QueuedTopic* optional : {&contacts_, &friction_, &beam_loads_}) {
     if (*optional) topics.push_back(optional);
   }

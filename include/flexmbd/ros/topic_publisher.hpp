@@ -44,7 +44,7 @@ class TopicPublisher : public MessageSink {
   /// Wakes roscpp's sender for the samples written since it was last woken.
   void EndBatch() override;
 
-  /// Fewest subscribers over the sample topics (joint_states, ~energy, ~reactions, ~solver, and ~contacts,
+  /// Fewest subscribers over the sample topics (joint_states, ~energy, ~reactions, ~solver, /tf, and ~contacts,
   /// ~friction, ~beam_loads where advertised).
   int MinSampleSubscribers() const;
 
@@ -56,8 +56,9 @@ class TopicPublisher : public MessageSink {
   bool HasSubscribers() const;
 
  private:
-  // The topics every sample goes to: joint_states, ~energy, ~reactions, ~solver and those advertised of
-  // ~contacts, ~friction, ~beam_loads.
+  // The topics every sample goes to: joint_states, ~energy, ~reactions, ~solver, /tf and those advertised of
+  // ~contacts, ~friction, ~beam_loads. A subscriber to /tf that connects late would miss the link frames of a
+  // short run at real_time_factor 0 (it happened to the node_topics rostest on a loaded machine).
   std::vector<const QueuedTopic*> SampleTopics() const;
 
   QueuedTopic joint_states_, energy_, reactions_, solver_, contacts_, friction_, beam_loads_, tf_;
