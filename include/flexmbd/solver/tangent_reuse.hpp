@@ -15,7 +15,8 @@ class TangentReuse {
  public:
   /// Whether the next step whose size allows it should start from the previous factorisation.
   bool Attempt();
-  /// Books the outcome of an attempt: whether the reused factorisation's first increment contracted.
+  /// Books the outcome of an attempt: whether the solve converged on the reused factorisation, without a fresh
+  /// tangent.
   void Record(bool held);
 
  private:

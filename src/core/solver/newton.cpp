@@ -92,9 +92,9 @@ NewtonReport SolveNewton(const Model& model, SparseSystem* system, double tol, i
     const double reference = apply(increment);
     // On the increment test alone only an increment from a fresh tangent, or one that contracted, is trusted.
     const bool increment_trusted = refresh || std::isfinite(previous_size);
-    const bool residual_small = (options.increment_test_only && increment_trusted) ||
-                                (check.force <= tol && check.constraint <= kConstraintTolerance);
-    if (residual_small && size <= tol * reference + noise_floor) {
+    const bool residual_passes = (options.increment_test_only && increment_trusted) ||
+                                 (check.force <= tol && check.constraint <= kConstraintTolerance);
+    if (residual_passes && size <= tol * reference + noise_floor) {
       report.converged = true;
       return report;
     }
