@@ -5,7 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
-#include <limits>
+#include <cmath>
 
 #include "flexmbd/model/model.hpp"
 #include "flexmbd/solver/newton.hpp"
