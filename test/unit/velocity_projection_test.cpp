@@ -4,7 +4,9 @@
 
 #include <gtest/gtest.h>
 
+#include "flexmbd/effects/joint_stop.hpp"
 #include "flexmbd/model/model.hpp"
+#include "flexmbd/solver/joint_rates.hpp"
 #include "flexmbd/solver/sparse_system.hpp"
 #include "flexmbd/solver/velocity_projection.hpp"
 #include "tangent_test_models.hpp"
@@ -45,7 +47,7 @@ TEST(VelocityProjection, IsTheMassWeightedProjectionOntoThePivotsMotion) {
   const Vec3 d_v = Vec3::UnitY().cross(state.nodes[0].x), d_w = state.nodes[0].R.transpose() * Vec3::UnitY();
   const double s_d = Kinetic(model, state, v + d_v, w + d_w) - kinetic_before - Kinetic(model, state, d_v, d_w);
   const double omega = s_d / (2.0 * Kinetic(model, state, d_v, d_w));
-  ASSERT_TRUE(projection.Apply(&state));
+  ASSERT_TRUE(projection.Apply(&state, {}));  // no effects to hold
   // Extrapolated from steps of 1e-6 and 2e-6 s, the forces' share is O(h^2 g) ~ 1e-11 m/s; Newton at 1e-12.
   constexpr double kTolerance = 1.0e-9;
   EXPECT_NEAR((state.nodes[0].v - omega * d_v).norm(), 0.0, kTolerance);
@@ -60,9 +62,47 @@ TEST(VelocityProjection, IsTheMassWeightedProjectionOntoThePivotsMotion) {
   EXPECT_NEAR(state.external_work, 0.0, kTolerance);
   // Consistent velocities stay as they are.
   const State projected = state;
-  ASSERT_TRUE(projection.Apply(&state));
+  ASSERT_TRUE(projection.Apply(&state, {}));  // no effects to hold
   EXPECT_NEAR((state.nodes[0].v - projected.nodes[0].v).norm(), 0.0, kTolerance);
   EXPECT_NEAR((state.nodes[0].w - projected.nodes[0].w).norm(), 0.0, kTolerance);
+}
+
+// A contact brought to rest (docs/theory.md, (C2a')): the arm swings into a rigid stop at its current angle. Held,
+// the stop's constraint forbids the arm's one motion, so the projection stops it and books all its kinetic energy;
+// released, the stop allows the motion and the projection keeps it.
+TEST(VelocityProjection, HoldsAContactBroughtToRestAndReleasesTheOthers) {
+  ModelSpec spec = Pendulum();
+  StopSpec stop;
+  stop.name = "upper";
+  stop.side = StopSpec::Side::kUpper;
+  spec.joints[0].effects[0].stops.push_back(stop);
+  const Model model = BuildModel(spec);
+  ASSERT_EQ(model.modal_effects().size(), 1u);
+  const int slot = model.modal_effects()[0]->slot();
+  SparseSystem system(model);
+  VelocityProjection projection(model, &system);
+  State state = model.initial_state();
+  state.h_prev = 0.01;
+  constexpr double kRate = 1.5;  // [rad/s], into the stop
+  state.nodes[0].v = kRate * Vec3::UnitY().cross(state.nodes[0].x);
+  state.nodes[0].w = kRate * state.nodes[0].R.transpose() * Vec3::UnitY();
+  state.qdot = JointRates(model, state);
+  state.effects[slot].mode = JointStop::kContact;
+  const double kinetic_before = Kinetic(model, state, state.nodes[0].v, state.nodes[0].w);
+  constexpr double kTolerance = 1.0e-9;  // as above
+
+  State released = state;
+  ASSERT_TRUE(projection.Apply(&released, {false}));
+  EXPECT_NEAR(released.qdot[0], kRate, kTolerance);
+  EXPECT_NEAR(released.dissipated_numerical, 0.0, kTolerance);
+  EXPECT_EQ(released.effects[slot].mode, JointStop::kContact);  // the state keeps its modes
+
+  ASSERT_TRUE(projection.Apply(&state, {true}));
+  EXPECT_NEAR(state.qdot[0], 0.0, kTolerance);
+  EXPECT_NEAR(state.nodes[0].v.norm(), 0.0, kTolerance);
+  EXPECT_NEAR(state.nodes[0].w.norm(), 0.0, kTolerance);
+  EXPECT_GT(kinetic_before, 1.0);
+  EXPECT_NEAR(state.dissipated_numerical, kinetic_before, kTolerance);
 }
 
 }  // namespace

@@ -55,19 +55,14 @@ class RigidStop : public JointStop {
   void AddResidual(const StepContext& ctx, Eigen::Ref<Eigen::VectorXd> r,
                    Eigen::Ref<Eigen::VectorXd> magnitude) const override;
   void AddTangent(const StepContext& ctx, Eigen::Ref<Eigen::MatrixXd> J) const override;
-  void AddStepWork(const StepContext& ctx, StepWork* work) const override;
   int ReviseMode(const StepContext& ctx) const override;
-  /// Remembers the fastest impact and books the work of plastic impacts.
+  /// A plastic impact, or a contact that goes on after its first step while the joint still moves (C2a').
+  bool ComesToRest(const State& start, const State& end, double negligible_rate) const override;
+  /// Remembers the fastest impact.
   void Commit(const StepContext& ctx, const State& end, EffectState* effect) const override;
   StopSample Sample(const State& state) const override;
 
  private:
-  // True in a contact step that must end at rest on the stop: one approaching it, after the contact's first
-  // step or in a first step slower than kPlasticFraction of the fastest impact so far (C2a').
-  bool EndsAtRest(const StepContext& ctx) const;
-  // Work the contact force does on q over the step [J] (zero over an impact that returns the approach speed).
-  double StepWorkOnVariable(const StepContext& ctx) const;
-
   int multiplier_;
 };
 

@@ -36,6 +36,13 @@ class ModalEffect : public Element {
   /// projection (VelocityProjection) solves with, so that it removes only what the joints' constraints forbid.
   virtual int ReleasedMode(const State& state) const = 0;
 
+  /// True when the accepted step from `start` to `end` must leave this effect's motion at rest in its end mode
+  /// (a plastic contact): the velocity projection then holds this effect in that mode instead of releasing it.
+  /// Rates below `negligible_rate` [rad/s or m/s] are at rest already.
+  virtual bool ComesToRest(const State& /*start*/, const State& /*end*/, double /*negligible_rate*/) const {
+    return false;
+  }
+
   /// Step-size requests from the converged step ctx that led to `end` (rates of `end` known).
   virtual StepLimit Limit(const StepContext& /*ctx*/, const State& /*end*/) const { return {}; }
 

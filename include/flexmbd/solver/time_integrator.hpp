@@ -13,6 +13,7 @@ namespace flexmbd {
 
 class Model;
 class SparseSystem;
+struct SolverSpec;
 
 /// Outcome of one attempted step.
 enum class StepStatus { kAccepted, kRejectedError, kRejectedEvent, kNewtonDiverged, kSingularMatrix };
@@ -46,6 +47,10 @@ class TimeIntegrator {
 
 /// The scheme the model's solver settings name.
 std::unique_ptr<TimeIntegrator> MakeTimeIntegrator(const Model& model, SparseSystem* system);
+
+/// The absolute floor of the local error test on joint variables [rad or m] (solver.error_floor.joint, or its
+/// default).
+double JointErrorFloor(const SolverSpec& solver);
 
 /// Local error estimate of the step that led to `end` (docs/theory.md, (T12)), from its mean-rate history.
 ErrorEstimate EstimateLocalError(const Model& model, const State& end);

@@ -25,8 +25,10 @@ class VelocityProjection {
   VelocityProjection(const Model& model, SparseSystem* system);
 
   /// Projects the velocities of `state` (which stays in its modes) and books the kinetic energy it removes as
-  /// numerical dissipation. False (state unchanged) if the limiting step did not converge.
-  bool Apply(State* state);
+  /// numerical dissipation. Effects are released, except those whose slot is marked in `held` (a contact brought
+  /// to rest: its constraint then holds in the projection too). False (state unchanged) if the limiting step did
+  /// not converge.
+  bool Apply(State* state, const std::vector<bool>& held);
 
  private:
   // Mean velocities of one short step from `state` and the work done over it.

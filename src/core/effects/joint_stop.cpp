@@ -22,8 +22,9 @@ constexpr double kRetrySafety = 0.8;
 constexpr double kPi = 3.14159265358979323846;
 // A rigid impact slower than this fraction of the fastest one the stop has seen is plastic (C2a'): a joint
 // pressed onto a stop then comes to rest on it instead of bouncing ever lower and faster (a Zeno sequence that
-// no step size resolves). A faster one returns the approach speed; if the contact still holds over the next
-// steps (the load presses the joint back within a step), the first of them that approaches brings it to rest.
+// no step size resolves). A faster one returns the approach speed; if the contact still holds over the next step
+// (the load presses the joint back within it), that step brings it to rest. A contact moving slower than this
+// fraction of the fastest impact is at rest.
 constexpr double kPlasticFraction = 0.01;
 }  // namespace
 
@@ -76,36 +77,23 @@ void RigidStop::AddResidual(const StepContext& ctx, Eigen::Ref<Eigen::VectorXd> 
   const double force = GeneralisedForce(lambda);
   r[0] -= force;
   magnitude[0] += std::abs(force);
-  // An impact keeps the gap at its start value (zero work: the approach speed comes back), as does a contact
-  // that goes on while the joint moves off the stop (the load turns it back within the step); one that goes on
-  // approaching the stop, or a plastic impact, ends at rest on it under the scheme's relation, absorbing the
-  // approach; at rest (static analysis) the gap closes (C2a), (C2a').
-  if (ctx.at_end()) {
-    r[1] += Gap(q.q_f);
-  } else {
-    r[1] += Gap(q.q_f) - Gap(q.q_i) - (EndsAtRest(ctx) ? 0.5 * ctx.h * GapRate(q.qdot_i) : 0.0);
+  // A step in contact keeps the gap at its start value, so the contact force does no work (an impact returns the
+  // approach speed, (C2a)); one that must end at rest is brought there by the velocity projection after it
+  // (C2a'). At rest (static analysis) the gap closes.
+  r[1] += ctx.at_end() ? Gap(q.q_f) : Gap(q.q_f) - Gap(q.q_i);
+}
+
+bool RigidStop::ComesToRest(const State& start, const State& end, double negligible_rate) const {
+  const EffectState& before = start.effects[slot()];
+  if (end.effects[slot()].mode != kContact) return false;
+  if (before.mode != kContact) {
+    return -GapRate(start.qdot[variable()]) < kPlasticFraction * before.reference;
   }
-}
-
-bool RigidStop::EndsAtRest(const StepContext& ctx) const {
-  const EffectState& start = ctx.start->effects[slot()];
-  const double approach = -GapRate((*ctx.variables)[variable()].qdot_i);
-  if (TrialMode(ctx) != kContact || approach <= 0) return false;
-  return start.mode == kContact || approach < kPlasticFraction * start.reference;
-}
-
-double RigidStop::StepWorkOnVariable(const StepContext& ctx) const {
-  if (!EndsAtRest(ctx)) return 0.0;
-  const VariableStep& q = (*ctx.variables)[variable()];
-  return GeneralisedForce((*ctx.lambda)[multiplier_]) * (q.q_f - q.q_i);
-}
-
-void RigidStop::AddStepWork(const StepContext& ctx, StepWork* work) const {
-  work->dissipated -= StepWorkOnVariable(ctx);
+  const double rest_rate = std::max(negligible_rate, kPlasticFraction * before.reference);
+  return std::abs(GapRate(end.qdot[variable()])) > rest_rate;
 }
 
 void RigidStop::Commit(const StepContext& ctx, const State& end, EffectState* effect) const {
-  effect->work -= StepWorkOnVariable(ctx);
   if (effect->mode == kContact && ctx.start->effects[slot()].mode != kContact) {
     effect->reference = std::max(effect->reference, -GapRate(ctx.start->qdot[variable()]));
   }

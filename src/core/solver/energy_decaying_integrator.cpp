@@ -232,7 +232,17 @@ StepResult EnergyDecayingIntegrator::Step(const State& start, double h, State* e
   result.status = too_large ? StepStatus::kRejectedError : StepStatus::kAccepted;
   if (result.limit.retry < h) result.status = StepStatus::kRejectedEvent;
   // Only a step that stands is worth its projection (two solves).
-  if (jumped && result.status == StepStatus::kAccepted) projection_.Apply(end);
+  if (result.status != StepStatus::kAccepted) return result;
+  // A contact brought to rest is held in the projection; a rate that moves a joint less than its error floor over
+  // the step is rest already.
+  const double negligible_rate = JointErrorFloor(model_.solver()) / h;
+  std::vector<bool> held(model_.modal_effects().size(), false);
+  bool comes_to_rest = false;
+  for (const ModalEffect* effect : model_.modal_effects()) {
+    held[effect->slot()] = effect->ComesToRest(start, *end, negligible_rate);
+    comes_to_rest = comes_to_rest || held[effect->slot()];
+  }
+  if (jumped || comes_to_rest) projection_.Apply(end, held);
   return result;
 }
 

@@ -19,6 +19,10 @@ double FloorOrDefault(double floor, double error_tol, double unit) {
 }
 }  // namespace
 
+double JointErrorFloor(const SolverSpec& solver) {
+  return FloorOrDefault(solver.error_floor.joint, solver.error_tol, 1.0);
+}
+
 const char* StepStatusName(StepStatus status) {
   switch (status) {
     case StepStatus::kAccepted: return "accepted";
@@ -58,7 +62,7 @@ ErrorEstimate EstimateLocalError(const Model& model, const State& end) {
   const double position_scale = FloorOrDefault(solver.error_floor.position, rtol, model.length_scale()) +
                                 rtol * h[0] * end.peak_speed;
   const double rotation_scale = FloorOrDefault(solver.error_floor.rotation, rtol, 1.0) + rtol * h[0] * end.peak_spin;
-  const double joint_scale = FloorOrDefault(solver.error_floor.joint, rtol, 1.0) + rtol * h[0] * end.peak_joint_rate;
+  const double joint_scale = JointErrorFloor(solver) + rtol * h[0] * end.peak_joint_rate;
   double sum = 0, worst = -1;
   int count = 0;
   auto add = [&](double local_error, double scale, int unknown) {

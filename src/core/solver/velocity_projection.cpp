@@ -55,10 +55,12 @@ bool VelocityProjection::SolveLimitingStep(const State& state, double h, MeanMot
   return true;
 }
 
-bool VelocityProjection::Apply(State* state) {
-  std::vector<EffectState> released = state->effects;
-  for (const ModalEffect* effect : model_.modal_effects()) released[effect->slot()].mode = effect->ReleasedMode(*state);
-  builder_.set_effect_modes(&released);
+bool VelocityProjection::Apply(State* state, const std::vector<bool>& held) {
+  std::vector<EffectState> modes = state->effects;
+  for (const ModalEffect* effect : model_.modal_effects()) {
+    if (!held[effect->slot()]) modes[effect->slot()].mode = effect->ReleasedMode(*state);
+  }
+  builder_.set_effect_modes(&modes);
   const double h = kLimitingStepFraction * state->h_prev;
   MeanMotion single, twice;
   if (!SolveLimitingStep(*state, h, &single) || !SolveLimitingStep(*state, 2.0 * h, &twice)) return false;
