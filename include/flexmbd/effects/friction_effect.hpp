@@ -73,9 +73,16 @@ class FrictionEffect : public ModalEffect {
   Vec3 AxisW(const State& state) const;
   // Coulomb bound of the friction force with coefficient mu: mu rho N (or the constant torque).
   double Bound(double mu, double normal) const;
+  // The static bound mu_s rho N with the joint multipliers of `lambda`, about the motion axis of `start`.
+  double StaticBound(const Eigen::VectorXd& lambda, const State& start) const;
   int Direction(int mode) const { return mode == kSlidingPositive ? 1 : mode == kSlidingNegative ? -1 : 0; }
   // The regularised law's factor (1 - exp(-|v|/v0)) sign(v) at slip velocity v, and its derivative in *d_dv.
   double RegularisedFactor(double v, double* d_dv) const;
+  // Where, as a fraction of the step ctx solved sticking, the friction force of a joint stuck before it reaches
+  // the static bound (0 if at the start or before): the excess |lambda| - mu_s rho N on the line through the
+  // mean forces of the step before and of this one, at their mid-steps (F3'). Infinity when the start was not a
+  // steady stick or the excess does not grow.
+  double BreakawayFraction(const StepContext& ctx) const;
   // True in a step that began stuck and is solved sliding: the static bound did not hold.
   bool BreakingAway(const StepContext& ctx) const;
   // True in a step solved sticking: the sticking constraint is enforced.

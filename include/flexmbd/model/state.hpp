@@ -3,6 +3,7 @@
 /// State: the minimal copyable set that fixes the future of a run. Copying a State undoes a rejected step.
 
 #include <array>
+#include <limits>
 #include <vector>
 
 #include <Eigen/Core>
@@ -38,6 +39,9 @@ struct EffectState {
                            ///< largest slip speed seen [m/s]
   double work = 0.0;       ///< energy this effect dissipated since t = 0 [J]
   long events = 0;         ///< contacts begun (stops), sticking episodes begun (friction)
+  /// Friction: the sticking force of the last accepted step if it began stuck and stayed stuck (a steady stick,
+  /// whose force locates a breakaway, docs/theory.md (F3')) [N m or N]; NaN otherwise.
+  double steady_force = std::numeric_limits<double>::quiet_NaN();
 };
 
 /// Everything that changes during a run.

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "flexmbd/effects/joint_stop.hpp"
 
@@ -25,6 +26,15 @@ constexpr double kSpeedTargets[] = {0.5, 1.0, 2.5, 5.0};
 // impulse that stops it is then of the order of the friction force times the step); a faster one is
 // redone shorter, ending at kEventLanding of the interpolated stop.
 constexpr double kCaptureSpeeds = 2.0;
+// A stuck joint whose friction force passes its static bound later than this fraction into the step is located:
+// the step is redone to end at kEventLanding of the crossing, so the breakaway starts within a few percent of a
+// step of its instant (F3'), as a stop's contact does (C5).
+constexpr double kBreakawayEventFraction = 0.05;
+// BreakawayFraction when the static bound is not reached.
+constexpr double kNoBreakaway = std::numeric_limits<double>::infinity();
+
+// True when a breakaway at this fraction of the step lies far enough into it to be located by a shorter step.
+bool BreakawayToLocate(double fraction) { return fraction > kBreakawayEventFraction && fraction < 1.0; }
 }  // namespace
 
 FrictionEffect::FrictionEffect(const FrictionSpec& spec, const Joint& joint, int variable_unknown, int stick_multiplier,
@@ -176,9 +186,9 @@ int FrictionEffect::ReviseMode(const StepContext& ctx) const {
     // one step stuck before its bound is judged.
     if (ctx.start->effects[slot()].mode != kSticking && (*ctx.variables)[variable_].qdot_i == 0.0) return mode;
     const double lambda = (*ctx.lambda)[stick_multiplier_];
-    Vec3 unused;
-    const double normal = NormalForce(ctx.lambda->segment<3>(joint_multiplier_), AxisW(*ctx.start), &unused);
-    if (std::abs(lambda) <= Bound(spec_.mu_s, normal)) return mode;
+    if (std::abs(lambda) <= StaticBound(*ctx.lambda, *ctx.start)) return mode;
+    // Past the bound far into the step: stuck until the crossing, which Limit locates (F3').
+    if (BreakawayToLocate(BreakawayFraction(ctx))) return mode;
     return lambda > 0 ? kSlidingPositive : kSlidingNegative;
   }
   // A joint breaking away (it began the step stuck and its static bound did not hold) keeps sliding for the
@@ -193,9 +203,34 @@ int FrictionEffect::ReviseMode(const StepContext& ctx) const {
   return Direction(mode) * EndRate(ctx, variable_) < 0 && slow ? kSticking : mode;
 }
 
+double FrictionEffect::StaticBound(const Eigen::VectorXd& lambda, const State& start) const {
+  Vec3 unused;
+  return Bound(spec_.mu_s, NormalForce(lambda.segment<3>(joint_multiplier_), AxisW(start), &unused));
+}
+
+double FrictionEffect::BreakawayFraction(const StepContext& ctx) const {
+  const State& start = *ctx.start;
+  // Only a steady stick has a force to extrapolate from: a step that began sliding and stuck within it carries
+  // the impulse that stopped the slip.
+  const double force_i = start.effects[slot()].steady_force;
+  if (std::isnan(force_i) || !Constrained(ctx)) return kNoBreakaway;
+  const double excess_i = std::abs(force_i) - StaticBound(start.lambda, start);
+  const double excess_f = std::abs((*ctx.lambda)[stick_multiplier_]) - StaticBound(*ctx.lambda, start);
+  if (excess_f <= excess_i) return kNoBreakaway;  // not pressing harder
+  // The multipliers are the mean forces of their steps, taken at the mid-steps t - h_prev / 2 and t + h / 2.
+  const double crossing = -0.5 * start.h_prev + 0.5 * (start.h_prev + ctx.h) * -excess_i / (excess_f - excess_i);
+  return std::max(0.0, crossing / ctx.h);
+}
+
 StepLimit FrictionEffect::Limit(const StepContext& ctx, const State& end) const {
   StepLimit limit;
-  if (spec_.law == FrictionSpec::Law::kRegularised || TrialMode(ctx) == kSticking || HeldByStop(*ctx.effects)) return limit;
+  if (spec_.law == FrictionSpec::Law::kRegularised || HeldByStop(*ctx.effects)) return limit;
+  if (TrialMode(ctx) == kSticking) {
+    // Also a step whose mean force kept the bound may pass it before its end.
+    const double fraction = BreakawayFraction(ctx);
+    if (BreakawayToLocate(fraction)) limit.retry = kEventLanding * fraction * ctx.h;
+    return limit;
+  }
   const double v_i = ctx.start->qdot[variable_], v_f = end.qdot[variable_];
   if (Direction(TrialMode(ctx)) * v_f < 0 && !BreakingAway(ctx)) {
     // Redo the step to end just before the slip stops (linear in the rate), where it can stick gently.
@@ -216,6 +251,8 @@ StepLimit FrictionEffect::Limit(const StepContext& ctx, const State& end) const 
 
 void FrictionEffect::Commit(const StepContext& ctx, const State& end, EffectState* effect) const {
   effect->work += StepDissipation(ctx);
+  const bool steady = Constrained(ctx) && ctx.start->effects[slot()].mode == kSticking;
+  effect->steady_force = steady ? (*ctx.lambda)[stick_multiplier_] : std::numeric_limits<double>::quiet_NaN();
   const double speed = spec_.radius * std::abs(end.qdot[variable_]);
   effect->reference = std::max(effect->reference, speed);
   if (spec_.law == FrictionSpec::Law::kRegularised) return;
