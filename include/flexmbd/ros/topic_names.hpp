@@ -20,6 +20,9 @@ constexpr char kContactsTopic[] = "contacts";
 constexpr char kFrictionTopic[] = "friction";
 constexpr char kBeamLoadsTopic[] = "beam_loads";
 constexpr char kMarkersTopic[] = "markers";
+// Command inputs (sensor_msgs/JointState), in the node's private namespace.
+constexpr char kEffortCommandTopic[] = "effort_command";
+constexpr char kPositionCommandTopic[] = "position_command";
 
 /// Fully resolved topic names.
 struct TopicNames {
