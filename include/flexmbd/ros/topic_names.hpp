@@ -28,7 +28,7 @@ constexpr char kPositionCommandTopic[] = "position_command";
 struct TopicNames {
   std::string joint_states;  ///< sensor_msgs/JointState
   std::string energy;        ///< flexmbd/Energy
-  std::string reactions;     ///< flexmbd/JointReactions
+  std::string reactions;     ///< flexmbd/JointReactionArray
   std::string solver;        ///< flexmbd/SolverStep
   std::string contacts;      ///< flexmbd/JointContactArray (models with stops)
   std::string friction;      ///< flexmbd/JointFrictionArray (models with frictional joints)
