@@ -5,7 +5,8 @@
 ///
 /// Threads: the run loop (solver, conversion, pace, commands) runs in the caller of Run(); an
 /// AsyncSampleWriter publishes and records the samples the loop releases; the services and subscriber
-/// callbacks run in one spinner thread and reach the loop only through RunControl.
+/// callbacks run in one spinner thread and reach the loop only through RunControl (services) and CommandInput
+/// (the command topics).
 ///
 /// @code
 ///   flexmbd::ros::SimulatorNode node(ros::NodeHandle(), ros::NodeHandle("~"));
