@@ -5,7 +5,7 @@
 ///           of k (q - rest)^2 / 2 plus the energy-decaying scheme's dissipation k alpha (dq - dq_lagged) dq >= 0
 ///   damper  Q = -c (q_f - q_i)/h: dissipates c dq^2/h >= 0 per step
 ///   drive   q_f = f(t_f), enforced by a multiplier lambda; the drive force on q is -lambda. Under a commanded
-///           set-point s (State::commands) it follows s with a first-order lag instead (docs/theory.md, (T11))
+///           set-point s (State::commands) it follows s with a first-order lag instead (docs/theory.md, "Commands")
 ///   effort  Q = u, the commanded effort of State::commands held over the step: its work u dq is external
 
 #include "flexmbd/elements/element.hpp"
