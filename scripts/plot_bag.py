@@ -30,7 +30,7 @@ class BagError(Exception):
 SAMPLE_TYPES = {
     "joint_states": "sensor_msgs/JointState",
     "energy": "flexmbd/Energy",
-    "reactions": "flexmbd/JointReactions",
+    "reactions": "flexmbd/JointReactionArray",
     "solver": "flexmbd/SolverStep",
 }
 # published only by models with stops or frictional joints
@@ -84,11 +84,11 @@ def read_columns(path):
             add("joint.%s.velocity" % name, joint_state.velocity[k])
             add("joint.%s.effort" % name, joint_state.effort[k])
     for reactions in messages["reactions"]:
-        for k, name in enumerate(reactions.name):
+        for r in reactions.joints:
             for axis in "xyz":
-                add("joint.%s.reaction_force_%s" % (name, axis), getattr(reactions.force[k], axis))
+                add("joint.%s.reaction_force_%s" % (r.joint, axis), getattr(r.force, axis))
             for axis in "xyz":
-                add("joint.%s.reaction_moment_%s" % (name, axis), getattr(reactions.moment[k], axis))
+                add("joint.%s.reaction_moment_%s" % (r.joint, axis), getattr(r.moment, axis))
     for contacts in messages.get("contacts", []):
         for c in contacts.contacts:
             for field in ("in_contact", "force", "torque", "approach"):

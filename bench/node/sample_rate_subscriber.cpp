@@ -50,7 +50,7 @@ int main(int argc, char** argv) {
   constexpr uint32_t kQueueSize = 10000;
   TopicCounter<sensor_msgs::JointState> joint_states;
   TopicCounter<flexmbd::Energy> energy;
-  TopicCounter<flexmbd::JointReactions> reactions;
+  TopicCounter<flexmbd::JointReactionArray> reactions;
   TopicCounter<flexmbd::SolverStep> solver;
   TopicCounter<flexmbd::JointContactArray> contacts;
   TopicCounter<flexmbd::JointFrictionArray> friction;

@@ -95,15 +95,15 @@ void FillEnergy(const OutputSample& sample, Energy* msg) {
   msg->numerical_dissipation = sample.numerical_dissipation;
 }
 
-void FillJointReactions(const Model& model, const OutputSample& sample, JointReactions* msg) {
+void FillJointReactions(const Model& model, const OutputSample& sample, JointReactionArray* msg) {
   const size_t n = model.joints().size();
-  msg->name.resize(n);
-  msg->force.resize(n);
-  msg->moment.resize(n);
+  FLEXMBD_DEMAND(sample.reaction_force_W.size() == n && sample.reaction_moment.size() == n);
+  msg->joints.resize(n);
   for (size_t k = 0; k < n; ++k) {
-    msg->name[k] = model.joints()[k]->name();
-    SetVector3(sample.reaction_force_W[k], &msg->force[k]);
-    SetVector3(sample.reaction_moment[k], &msg->moment[k]);
+    JointReaction& reaction = msg->joints[k];
+    reaction.joint = model.joints()[k]->name();
+    SetVector3(sample.reaction_force_W[k], &reaction.force);
+    SetVector3(sample.reaction_moment[k], &reaction.moment);
   }
 }
 

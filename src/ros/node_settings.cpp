@@ -79,7 +79,8 @@ class SettingReader {
 const std::vector<std::string>& NodeSettingNames() {
   static const std::vector<std::string> names{
       "urdf_file",  "real_time_factor",     "bag",          "bag_compression", "publish", "rate_hz",
-      "keep_alive", "wait_for_subscribers", "clock_rate_hz",    "paused"};
+      "keep_alive", "wait_for_subscribers", "clock_rate_hz",    "paused",
+      "setpoint_time_constant"};
   return names;
 }
 
@@ -108,6 +109,11 @@ NodeSettings ReadNodeSettings(const ::ros::NodeHandle& private_node) {
   if (const std::optional<double> clock_rate = read.NonNegative("clock_rate_hz", clock_expected)) {
     if (*clock_rate > kMaxClockRateHz) read.Fail("clock_rate_hz", Value(*clock_rate), "is too high", clock_expected);
     settings.clock_rate_hz = *clock_rate;
+  }
+  const std::string lag_expected = "a time constant > 0 [s] (the lag of a drive behind ~position_command)";
+  if (const std::optional<double> lag = read.NonNegative("setpoint_time_constant", lag_expected)) {
+    if (*lag == 0.0) read.Fail("setpoint_time_constant", Value(*lag), "is not > 0", lag_expected);
+    settings.setpoint_time_constant = *lag;
   }
   return settings;
 }

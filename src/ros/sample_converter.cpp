@@ -23,7 +23,7 @@ void SampleConverter::Convert(const OutputSample& sample, const State& state, Sa
     header->seq = seq;
     header->stamp = stamp;
   }
-  messages->reactions.header.frame_id = world_frame_;  // the frame of the forces (msg/JointReactions.msg)
+  messages->reactions.header.frame_id = world_frame_;  // the frame of the forces (msg/JointReactionArray.msg)
   messages->has_transforms = !last_transform_time_ || state.t > *last_transform_time_;
   if (messages->has_transforms) {
     FillTransforms(frames_, state, &messages->transforms);

@@ -60,6 +60,7 @@ SimulatorNode::SimulatorNode(::ros::NodeHandle node, ::ros::NodeHandle private_n
                                                                   {"resume", RunControl::Command::kResume},
                                                                   {"step", RunControl::Command::kStep},
                                                                   {"reset", RunControl::Command::kReset}};
+  commands_ = std::make_unique<CommandInput>(private_node_, case_.model, case_.settings.setpoint_time_constant);
   for (const auto& [name, command] : services) {
     const RunControl::Command posted = command;
     services_.push_back(private_node_.advertiseService<std_srvs::Trigger::Request, std_srvs::Trigger::Response>(
@@ -161,6 +162,7 @@ void SimulatorNode::AdvanceOneChunk() {
   const State& state = simulation_->state();
   const double chunk = state.h_prev > 0.0 ? state.h_prev : solver.dt;
   const double until = std::min(state.t + chunk, solver.t_end);
+  commands_->ApplyTo(simulation_.get());  // from the next step on
   simulation_->AdvanceTo(until, solver.t_end, collect_);
   if (clock_ticks_) clock_ticks_->Reached(simulation_->state().t);
   computed_to_end_ = until >= solver.t_end;
@@ -188,6 +190,7 @@ std::optional<RunControl::Reply> SimulatorNode::Execute(RunControl::Command comm
       step_in_progress_ = true;
       return std::nullopt;  // answered when the sample is sent
     case RunControl::Command::kReset:
+      commands_->Discard();  // the new run starts without commands
       StartRun();
       return RunControl::Reply{
           true, "reset to the initial state; the next sample is at t = " + FormatTime(simulation_->state().t) + " s"};

@@ -46,7 +46,7 @@ TopicPublisher::TopicPublisher(::ros::NodeHandle& node, ::ros::NodeHandle& priva
                                const std::function<void()>& on_connect)
     : joint_states_(AdvertiseSamples<sensor_msgs::JointState>(node, kJointStatesTopic, on_connect)),
       energy_(AdvertiseSamples<Energy>(private_node, kEnergyTopic, on_connect)),
-      reactions_(AdvertiseSamples<JointReactions>(private_node, kReactionsTopic, on_connect)),
+      reactions_(AdvertiseSamples<JointReactionArray>(private_node, kReactionsTopic, on_connect)),
       solver_(AdvertiseSamples<SolverStep>(private_node, kSolverTopic, on_connect)),
       tf_(QueuedTopic::Advertise<tf2_msgs::TFMessage>(node, kTfTopic, kSampleQueueSize)),
       markers_(private_node.advertise<visualization_msgs::MarkerArray>(kMarkersTopic, 1, /*latch=*/true)) {

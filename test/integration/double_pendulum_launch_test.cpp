@@ -26,8 +26,8 @@ TEST(DoublePendulumLaunch, PublishesTheEnergy) {
 }
 
 TEST(DoublePendulumLaunch, ReactionsNameTheWorldFrame) {
-  // Reference: msg/JointReactions.msg: forces in the world frame, the URDF's ground root link "world".
-  const auto message = ::ros::topic::waitForMessage<JointReactions>("/flexmbd/reactions", kTimeout);
+  // Reference: msg/JointReactionArray.msg: forces in the world frame, the URDF's ground root link "world".
+  const auto message = ::ros::topic::waitForMessage<JointReactionArray>("/flexmbd/reactions", kTimeout);
   ASSERT_TRUE(message);
   EXPECT_EQ(message->header.frame_id, "world");
 }

@@ -48,6 +48,16 @@ TEST(NodeExit, BadNodeSettingExitsWithTwoNamingTheSetting) {
       << node.Output();
 }
 
+TEST(NodeExit, ZeroSetpointTimeConstantExitsWithTwoNamingTheSetting) {
+  // Reference: docs/ros.md, Inputs: a drive cannot follow its set-point with no lag (a jump in one step).
+  NodeProcess node("flexmbd_bad_lag", {"_setpoint_time_constant:=0.0"});
+  EXPECT_EQ(node.WaitForExit(kTimeout), std::optional<int>(kBadInputExit));
+  EXPECT_TRUE(Contains(node.Output(),
+                       "/flexmbd_bad_lag/setpoint_time_constant: '0' is not > 0; expected a time constant > 0 [s] "
+                       "(the lag of a drive behind ~position_command)"))
+      << node.Output();
+}
+
 TEST(NodeExit, MisspeltNodeSettingExitsWithTwoListingTheSettings) {
   // Reference: src/ros/node_case.cpp: a private name that is no setting and no YAML section is named with the
   // nearest setting and both lists (the loader's message listed only the sections).
@@ -56,7 +66,8 @@ TEST(NodeExit, MisspeltNodeSettingExitsWithTwoListingTheSettings) {
   EXPECT_TRUE(Contains(node.Output(),
                        "/flexmbd_misspelt_setting/realtime_factor: unknown parameter; did you mean "
                        "'real_time_factor'? expected a node setting (urdf_file, real_time_factor, bag, "
-                       "bag_compression, publish, rate_hz, keep_alive, wait_for_subscribers, clock_rate_hz, paused) "
+                       "bag_compression, publish, rate_hz, keep_alive, wait_for_subscribers, clock_rate_hz, paused, "
+                       "setpoint_time_constant) "
                        "or a section of the case (beams, joints, solver, output, loads, docs/config.md)"))
       << node.Output();
 }

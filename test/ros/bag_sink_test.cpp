@@ -46,7 +46,7 @@ void ExpectBagHolds(const std::string& path, const std::vector<SampleMessages>& 
   const TopicNames topics = DefaultTopicNames();
   const auto joint_states = ReadTopic<sensor_msgs::JointState>(path, topics.joint_states);
   const auto energy = ReadTopic<Energy>(path, topics.energy);
-  const auto reactions = ReadTopic<JointReactions>(path, topics.reactions);
+  const auto reactions = ReadTopic<JointReactionArray>(path, topics.reactions);
   const auto solver = ReadTopic<SolverStep>(path, topics.solver);
   ASSERT_EQ(joint_states.size(), written.size());
   ASSERT_EQ(energy.size(), written.size());

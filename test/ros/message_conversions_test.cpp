@@ -67,11 +67,13 @@ TEST(MessageConversions, EnergyCopiesEveryTerm) {
 TEST(MessageConversions, ReactionsAndSolverStepCopyTheSample) {
   const Model model = test::DoublePendulum();
   const OutputSample sample = SampleWithDistinctValues(model);
-  JointReactions reactions;
+  JointReactionArray reactions;
   FillJointReactions(model, sample, &reactions);
-  ASSERT_EQ(reactions.name, (std::vector<std::string>{"shoulder", "elbow"}));
-  EXPECT_EQ(reactions.force[1].z, 6.0);
-  EXPECT_EQ(reactions.moment[1].x, 8.0);
+  ASSERT_EQ(reactions.joints.size(), 2u);
+  EXPECT_EQ(reactions.joints[0].joint, "shoulder");
+  EXPECT_EQ(reactions.joints[1].joint, "elbow");
+  EXPECT_EQ(reactions.joints[1].force.z, 6.0);
+  EXPECT_EQ(reactions.joints[1].moment.x, 8.0);
   SolverStep step;
   FillSolverStep(sample, &step);
   EXPECT_EQ(step.dt, 0.003);

@@ -47,11 +47,10 @@ TEST(RunnerBag, HoldsTheSamplesOfTheCsv) {
       EXPECT_EQ(joints.velocity[v], row[csv.Column(prefix + ".velocity")]) << "row " << k;
       EXPECT_EQ(joints.effort[v], row[csv.Column(prefix + ".effort")]) << "row " << k;
     }
-    const JointReactions& reactions = bag.reactions[k];
-    for (size_t j = 0; j < reactions.name.size(); ++j) {
-      const std::string prefix = "joint." + reactions.name[j];
-      EXPECT_EQ(reactions.force[j].z, row[csv.Column(prefix + ".reaction_force_z")]) << "row " << k;
-      EXPECT_EQ(reactions.moment[j].y, row[csv.Column(prefix + ".reaction_moment_y")]) << "row " << k;
+    for (const JointReaction& reaction : bag.reactions[k].joints) {
+      const std::string prefix = "joint." + reaction.joint;
+      EXPECT_EQ(reaction.force.z, row[csv.Column(prefix + ".reaction_force_z")]) << "row " << k;
+      EXPECT_EQ(reaction.moment.y, row[csv.Column(prefix + ".reaction_moment_y")]) << "row " << k;
     }
     EXPECT_EQ(bag.energy[k].kinetic, row[csv.Column("energy.kinetic")]) << "row " << k;
     EXPECT_EQ(bag.energy[k].potential, row[csv.Column("energy.potential")]) << "row " << k;

@@ -4,7 +4,9 @@
 ///   spring  Q = -k (q_m - rest + alpha (dq - dq_lagged)), q_m the mid-step value: the exact discrete gradient
 ///           of k (q - rest)^2 / 2 plus the energy-decaying scheme's dissipation k alpha (dq - dq_lagged) dq >= 0
 ///   damper  Q = -c (q_f - q_i)/h: dissipates c dq^2/h >= 0 per step
-///   drive   q_f = f(t_f), enforced by a multiplier lambda; the drive force on q is -lambda
+///   drive   q_f = f(t_f), enforced by a multiplier lambda; the drive force on q is -lambda. Under a commanded
+///           set-point s (State::commands) it follows s with a first-order lag instead (docs/theory.md, "Commands")
+///   effort  Q = u, the commanded effort of State::commands held over the step: its work u dq is external
 
 #include "flexmbd/elements/element.hpp"
 #include "flexmbd/model/model_spec.hpp"
@@ -52,8 +54,24 @@ class VariableDrive : public Element {
   int variable() const { return variable_; }
 
  private:
+  /// q_f the drive enforces: f(t_f), or the lagged set-point.
+  double Target(const StepContext& ctx) const;
+
   int variable_, multiplier_;
   TimeFunctionSpec law_;
+};
+
+/// The effort a controller commands on a variable; one on every variable, zero until commanded.
+class VariableEffort : public Element {
+ public:
+  VariableEffort(int variable, int variable_unknown);
+  void AddResidual(const StepContext& ctx, Eigen::Ref<Eigen::VectorXd> r,
+                   Eigen::Ref<Eigen::VectorXd> magnitude) const override;
+  void AddTangent(const StepContext&, Eigen::Ref<Eigen::MatrixXd>) const override {}
+  void AddStepWork(const StepContext& ctx, StepWork* work) const override;
+
+ private:
+  int variable_;
 };
 
 }  // namespace flexmbd

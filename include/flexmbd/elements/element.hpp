@@ -106,7 +106,7 @@ struct EnergyTally {
 
 /// Work done over one accepted step.
 struct StepWork {
-  double external = 0;    ///< by applied loads and drives [J]
+  double external = 0;    ///< by applied loads, drives and commanded efforts [J]
   double dissipated = 0;  ///< by dampers, friction, contact and structural damping (>= 0) [J]
   double numerical = 0;   ///< by the integrator's dissipation in elastic elements (>= 0) [J]
 };

@@ -43,7 +43,7 @@ class Joint : public Element {
   Eigen::VectorXd ConstraintValues(const StepContext& ctx) const;
 
   /// Generalised force the joint transmits along each variable, (G_q^T lambda) [N m or N]: the sum of the
-  /// spring, damper and drive forces acting on the child along that variable.
+  /// spring, damper, drive and commanded forces acting on the child along that variable.
   Eigen::VectorXd VariableForces(const StepContext& ctx) const;
 
   const std::string& name() const { return name_; }

@@ -87,6 +87,10 @@ class Model {
   const std::vector<const FrictionEffect*>& friction_effects() const { return friction_effects_; }
   /// Name of each joint variable: the joint name, with "/k" appended for the k-th of several.
   const std::vector<std::string>& variable_names() const { return variable_names_; }
+  /// Index of the joint variable named `name` (variable_names()), or -1 if there is none.
+  int FindVariable(const std::string& name) const;
+  /// True if a drive prescribes the motion of `variable` (it then takes set-points, State::commands).
+  bool driven(int variable) const { return driven_[variable]; }
 
   const SolverSpec& solver() const { return solver_; }
   const OutputSpec& output() const { return output_; }
@@ -116,6 +120,7 @@ class Model {
   std::vector<const FrictionEffect*> friction_effects_;
   std::vector<std::string> node_names_;  ///< "body <name>" or "beam <name> node <k>", per node
   std::vector<std::string> variable_names_;
+  std::vector<bool> driven_;  ///< per variable
   std::vector<std::string> multiplier_names_;
   SolverSpec solver_;
   OutputSpec output_;

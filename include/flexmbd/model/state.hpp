@@ -44,6 +44,15 @@ struct EffectState {
   double steady_force = std::numeric_limits<double>::quiet_NaN();
 };
 
+/// What a controller commands on one joint variable (Simulation::SetEffort, SetSetpoint; docs/theory.md,
+/// "Commands"). It acts from the next step on and holds until changed.
+struct VariableCommand {
+  double effort = 0.0;         ///< generalised force applied on the variable [N m or N]
+  bool has_setpoint = false;   ///< a driven variable follows `setpoint` instead of its drive's law
+  double setpoint = 0.0;       ///< [rad or m]
+  double time_constant = 0.0;  ///< of the first-order lag by which the drive follows the set-point [s], > 0
+};
+
 /// Everything that changes during a run.
 struct State {
   double t = 0.0;                   ///< time [s]
@@ -56,6 +65,7 @@ struct State {
   Eigen::VectorXd qacc_alg;         ///< generalized-alpha algorithmic accelerations of the variables
   Eigen::VectorXd lambda;           ///< constraint multipliers [N, N m] (num_multipliers)
   std::vector<EffectState> effects; ///< per effect with modes (Model::modal_effects())
+  std::vector<VariableCommand> commands;  ///< per joint variable (num_variables)
   /// Per element (Model::elements()), what it keeps of past steps (Element::history_size(); mostly empty).
   std::vector<Eigen::VectorXd> element_history;
   int history_steps = 0;            ///< accepted steps since the start or the last jump in the motion (T12)
@@ -65,7 +75,7 @@ struct State {
   double peak_speed = 0.0;          ///< largest node speed so far [m/s]: scales of the local error test
   double peak_spin = 0.0;           ///< largest node angular speed so far [rad/s]
   double peak_joint_rate = 0.0;     ///< largest |qdot| of any joint variable so far [rad/s or m/s]
-  double external_work = 0.0;       ///< work of applied loads and drives since t = 0 [J]
+  double external_work = 0.0;       ///< work of applied loads, drives and commanded efforts since t = 0 [J]
   double dissipated_physical = 0.0; ///< energy dissipated by dampers, friction, stop and beam damping since t = 0 [J]
   double dissipated_numerical = 0.0;///< energy removed by the integrator's dissipation since t = 0 [J]
 };

@@ -18,7 +18,7 @@
 #include "flexmbd/Energy.h"
 #include "flexmbd/JointContactArray.h"
 #include "flexmbd/JointFrictionArray.h"
-#include "flexmbd/JointReactions.h"
+#include "flexmbd/JointReactionArray.h"
 #include "flexmbd/SolverStep.h"
 #include "flexmbd/model/model.hpp"
 #include "flexmbd/ros/transform_frames.hpp"
@@ -35,8 +35,8 @@ void FillJointState(const Model& model, const OutputSample& sample, sensor_msgs:
 
 void FillEnergy(const OutputSample& sample, Energy* msg);
 
-/// Reactions of every joint, named and ordered as Model::joints().
-void FillJointReactions(const Model& model, const OutputSample& sample, JointReactions* msg);
+/// One entry per joint: its reaction, named and ordered as Model::joints().
+void FillJointReactions(const Model& model, const OutputSample& sample, JointReactionArray* msg);
 
 void FillSolverStep(const OutputSample& sample, SolverStep* msg);
 

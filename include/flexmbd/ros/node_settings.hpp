@@ -25,6 +25,7 @@ struct NodeSettings {
   int wait_for_subscribers = 0;   ///< ~wait_for_subscribers: start once every sample topic has this many
   bool paused = false;            ///< ~paused: start paused (~step, ~resume go on)
   double clock_rate_hz = 0.0;     ///< ~clock_rate_hz: /clock ticks per simulated second; 0 = every step
+  double setpoint_time_constant = 0.1;  ///< ~setpoint_time_constant: lag of a drive behind its set-point [s]
 };
 
 /// Names of the settings above, relative to the private namespace.

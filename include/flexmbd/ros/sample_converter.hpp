@@ -17,7 +17,7 @@ namespace ros {
 struct SampleMessages {
   sensor_msgs::JointState joint_state;
   Energy energy;
-  JointReactions reactions;
+  JointReactionArray reactions;
   SolverStep solver;
   /// One entry per stop of the model; with none (a model without stops) the message is neither published
   /// nor recorded.

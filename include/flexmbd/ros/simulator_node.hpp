@@ -5,7 +5,8 @@
 ///
 /// Threads: the run loop (solver, conversion, pace, commands) runs in the caller of Run(); an
 /// AsyncSampleWriter publishes and records the samples the loop releases; the services and subscriber
-/// callbacks run in one spinner thread and reach the loop only through RunControl.
+/// callbacks run in one spinner thread and reach the loop only through RunControl (services) and CommandInput
+/// (the command topics).
 ///
 /// @code
 ///   flexmbd::ros::SimulatorNode node(ros::NodeHandle(), ros::NodeHandle("~"));
@@ -24,6 +25,7 @@
 #include "flexmbd/common/exit_status.hpp"
 #include "flexmbd/ros/async_sample_writer.hpp"
 #include "flexmbd/ros/clock_ticks.hpp"
+#include "flexmbd/ros/command_input.hpp"
 #include "flexmbd/ros/node_case.hpp"
 #include "flexmbd/ros/pacer.hpp"
 #include "flexmbd/ros/run_control.hpp"
@@ -72,6 +74,7 @@ class SimulatorNode {
   TopicPublisher* publisher_ = nullptr;        ///< owned by outputs_; null when ~publish is false
   std::unique_ptr<AsyncSampleWriter> writer_;  ///< writes to outputs_
   std::vector<::ros::ServiceServer> services_;
+  std::unique_ptr<CommandInput> commands_;     ///< ~effort_command, ~position_command
 
   // the current run
   std::unique_ptr<SampleConverter> converter_;

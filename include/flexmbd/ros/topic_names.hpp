@@ -20,12 +20,15 @@ constexpr char kContactsTopic[] = "contacts";
 constexpr char kFrictionTopic[] = "friction";
 constexpr char kBeamLoadsTopic[] = "beam_loads";
 constexpr char kMarkersTopic[] = "markers";
+// Command inputs (sensor_msgs/JointState), in the node's private namespace.
+constexpr char kEffortCommandTopic[] = "effort_command";
+constexpr char kPositionCommandTopic[] = "position_command";
 
 /// Fully resolved topic names.
 struct TopicNames {
   std::string joint_states;  ///< sensor_msgs/JointState
   std::string energy;        ///< flexmbd/Energy
-  std::string reactions;     ///< flexmbd/JointReactions
+  std::string reactions;     ///< flexmbd/JointReactionArray
   std::string solver;        ///< flexmbd/SolverStep
   std::string contacts;      ///< flexmbd/JointContactArray (models with stops)
   std::string friction;      ///< flexmbd/JointFrictionArray (models with frictional joints)

@@ -49,7 +49,7 @@ struct OutputSample {
   std::vector<BeamStationSample> beam_stations;  ///< per station, in Model::beam_stations() order
   double kinetic = 0;            ///< [J]
   double potential = 0;          ///< gravity, springs and beam strain energy [J]
-  double external_work = 0;      ///< cumulative work of applied loads and drives [J]
+  double external_work = 0;      ///< cumulative work of applied loads, drives and commanded efforts [J]
   double dissipated = 0;         ///< cumulative energy dissipated by dampers, friction, stop and beam damping [J]
   double numerical_dissipation = 0;  ///< cumulative energy removed by the integrator [J]
   double dt = 0;                 ///< size of the step that produced the sample [s]

@@ -40,6 +40,14 @@ class Simulation {
   /// calls may follow one another (pause and resume between them). Throws SolverError when it cannot go on.
   void AdvanceTo(double t_until, double t_end, const SampleSink& sink);
 
+  /// Commands (docs/theory.md, "Commands"), in force from the next step on until changed; their work is
+  /// external work. SetEffort applies `effort` [N m or N] on joint variable `variable`. SetSetpoint makes a driven
+  /// variable follow `setpoint` [rad or m] with a first-order lag of `time_constant` [s] instead of its law. Both
+  /// throw ConfigError naming the variable for a value that is not finite, a variable out of range, a time
+  /// constant not > 0 or a set-point for a variable without a drive.
+  void SetEffort(int variable, double effort);
+  void SetSetpoint(int variable, double setpoint, double time_constant);
+
   /// Attempts one step of size h; on acceptance the state advances. Books the outcome.
   StepResult TryStep(double h);
 
@@ -56,6 +64,7 @@ class Simulation {
  private:
   OutputSample SampleAtState(double dt, int iterations);
   [[noreturn]] void Fail(const char* what, double h, const StepResult& last) const;
+  void CheckCommand(int variable, const char* what, double value) const;
 
   const Model& model_;
   State state_;

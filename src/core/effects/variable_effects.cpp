@@ -77,7 +77,16 @@ void VariableDrive::AddResidual(const StepContext& ctx, Eigen::Ref<Eigen::Vector
   const double lambda = (*ctx.lambda)[multiplier_];
   r[0] += lambda;
   magnitude[0] += std::abs(lambda);
-  r[1] += (*ctx.variables)[variable_].q_f - Evaluate(law_, ctx.t_f);
+  r[1] += (*ctx.variables)[variable_].q_f - Target(ctx);
+}
+
+double VariableDrive::Target(const StepContext& ctx) const {
+  const VariableCommand& command = ctx.start->commands[variable_];
+  if (!command.has_setpoint) return Evaluate(law_, ctx.t_f);
+  if (ctx.mode == AnalysisMode::kStatic) return command.setpoint;
+  // tau qdot + q = s solved exactly over the step, so that the path does not depend on the step sizes
+  const double s = command.setpoint;
+  return s + (ctx.start->q[variable_] - s) * std::exp(-ctx.h / command.time_constant);
 }
 
 void VariableDrive::AddTangent(const StepContext&, Eigen::Ref<Eigen::MatrixXd> J) const {
@@ -88,6 +97,23 @@ void VariableDrive::AddTangent(const StepContext&, Eigen::Ref<Eigen::MatrixXd> J
 void VariableDrive::AddStepWork(const StepContext& ctx, StepWork* work) const {
   const VariableStep& q = (*ctx.variables)[variable_];
   work->external -= (*ctx.lambda)[multiplier_] * (q.q_f - q.q_i);
+}
+
+VariableEffort::VariableEffort(int variable, int variable_unknown) : variable_(variable) {
+  unknowns_ = {variable_unknown};
+}
+
+void VariableEffort::AddResidual(const StepContext& ctx, Eigen::Ref<Eigen::VectorXd> r,
+                                 Eigen::Ref<Eigen::VectorXd> magnitude) const {
+  // scaled with the applied loads in static load stepping
+  const double effort = ctx.load_factor * ctx.start->commands[variable_].effort;
+  r[0] -= effort;
+  magnitude[0] += std::abs(effort);
+}
+
+void VariableEffort::AddStepWork(const StepContext& ctx, StepWork* work) const {
+  const VariableStep& q = (*ctx.variables)[variable_];
+  work->external += ctx.start->commands[variable_].effort * (q.q_f - q.q_i);
 }
 
 }  // namespace flexmbd

@@ -88,6 +88,11 @@ std::string Model::DescribeUnknown(int unknown) const {
   return multiplier_names_[unknown - 6 * num_nodes_ - num_variables_];
 }
 
+int Model::FindVariable(const std::string& name) const {
+  const auto found = std::find(variable_names_.begin(), variable_names_.end(), name);
+  return found == variable_names_.end() ? -1 : static_cast<int>(found - variable_names_.begin());
+}
+
 Model BuildModel(const ModelSpec& spec) {
   if (spec.bodies.empty() && spec.beams.empty()) {
     throw ConfigError(Prefix(spec) + "nothing can move: the model has no body and no beam; expected at least one");
@@ -236,6 +241,8 @@ Model BuildModel(const ModelSpec& spec) {
   state.qdot = Eigen::VectorXd::Zero(model.num_variables_);
   state.lambda = Eigen::VectorXd::Zero(model.num_multipliers_);
   state.effects.resize(num_effect_slots);
+  state.commands.resize(model.num_variables_);
+  model.driven_.assign(model.num_variables_, false);
 
   int variable = 0, multiplier = 0;
   VariableEffectsBuilder effect_builder(&model, first_variable_of);
@@ -259,6 +266,7 @@ Model BuildModel(const ModelSpec& spec) {
       model.variable_names_.push_back(n_var == 1 ? joint.name : joint.name + "/" + std::to_string(k));
       if (k < static_cast<int>(joint.initial_position.size())) state.q[v] = joint.initial_position[k];
       if (k < static_cast<int>(joint.initial_velocity.size())) state.qdot[v] = joint.initial_velocity[k];
+      model.elements_.push_back(std::make_unique<VariableEffort>(v, model.variable_unknown(v)));
       if (k >= static_cast<int>(joint.effects.size())) continue;  // no effects on this variable
       effect_builder.Add(Prefix(spec) + "joint '" + joint.name + "': ", joint, v, joint.effects[k], &multiplier);
     }

@@ -40,6 +40,7 @@ void VariableEffectsBuilder::AddDrive(const std::string& where, int v, const Tim
   model_.elements_.push_back(std::make_unique<VariableDrive>(v, model_.variable_unknown(v), *multiplier,
                                                              model_.multiplier_unknown(*multiplier), law));
   model_.multiplier_names_.push_back("drive " + model_.variable_names_[v]);
+  model_.driven_[v] = true;
   ++*multiplier;
 }
 

@@ -15,6 +15,12 @@ constexpr double kTimeEpsilon = 1.0e-9;
 // run never ends with a sliver step dominated by round-off.
 constexpr double kSliverFraction = 0.01;
 
+std::string FormatCommand(double value) {
+  std::ostringstream text;
+  text << value;
+  return text.str();
+}
+
 // What a user can try when the step size fell below dt_min, by the reason the last attempt failed.
 const char* WhatToTry(StepStatus status) {
   switch (status) {
@@ -83,6 +89,39 @@ void Simulation::Run(const SampleSink& sink) {
   }
   if (solver.static_first) SolveStaticEquilibrium();
   Integrate(solver.t_end, sink);
+}
+
+void Simulation::SetEffort(int variable, double effort) {
+  CheckCommand(variable, "effort", effort);
+  state_.commands[variable].effort = effort;
+}
+
+void Simulation::SetSetpoint(int variable, double setpoint, double time_constant) {
+  CheckCommand(variable, "set-point", setpoint);
+  const std::string& name = model_.variable_names()[variable];
+  if (!model_.driven(variable)) {
+    throw ConfigError("set-point for joint variable '" + name +
+                      "', which has no drive; expected a set-point for a driven variable");
+  }
+  if (!(time_constant > 0.0 && std::isfinite(time_constant))) {
+    throw ConfigError("set-point for joint variable '" + name + "': time constant " + FormatCommand(time_constant) +
+                      " is not a finite number > 0 [s]");
+  }
+  VariableCommand& command = state_.commands[variable];
+  command.has_setpoint = true;
+  command.setpoint = setpoint;
+  command.time_constant = time_constant;
+}
+
+void Simulation::CheckCommand(int variable, const char* what, double value) const {
+  if (variable < 0 || variable >= model_.num_variables()) {
+    throw ConfigError(std::string(what) + " for joint variable " + std::to_string(variable) + ": no such variable; "
+                      "expected 0 <= variable < " + std::to_string(model_.num_variables()));
+  }
+  if (!std::isfinite(value)) {
+    throw ConfigError(std::string(what) + " for joint variable '" + model_.variable_names()[variable] + "': " +
+                      FormatCommand(value) + " is not a finite number");
+  }
 }
 
 StepResult Simulation::TryStep(double h) {

@@ -12,7 +12,7 @@ namespace test {
 struct Samples {
   std::vector<sensor_msgs::JointState> joint_states;
   std::vector<Energy> energy;
-  std::vector<JointReactions> reactions;
+  std::vector<JointReactionArray> reactions;
   std::vector<SolverStep> solver;
   std::vector<tf2_msgs::TFMessage> transforms;
   std::vector<JointContactArray> contacts;  ///< only for models with stops
