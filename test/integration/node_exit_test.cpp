@@ -7,6 +7,8 @@
 
 #include <cstdlib>
 #include <memory>
+#include <string>
+#include <vector>
 
 #include "helpers/bag_samples.hpp"
 #include "helpers/file_size_limit.hpp"
@@ -29,54 +31,49 @@ constexpr std::chrono::seconds kTimeout(30);
 
 bool Contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
 
+// A node started with `arguments` exits with 2 and its output holds `message`: one line naming the parameter
+// or file and the expected form.
+void ExpectBadInputExit(const std::string& name, const std::vector<std::string>& arguments,
+                        const std::string& message) {
+  NodeProcess node(name, arguments);
+  EXPECT_EQ(node.WaitForExit(kTimeout), std::optional<int>(kBadInputExit));
+  EXPECT_TRUE(Contains(node.Output(), message)) << node.Output();
+}
+
 TEST(NodeExit, BadParameterExitsWithTwoNamingTheParameter) {
   // Reference: docs/config.md, "Errors": the loader's message, with the node's namespace as its source.
-  NodeProcess node("flexmbd_bad_param", {});
-  EXPECT_EQ(node.WaitForExit(kTimeout), std::optional<int>(kBadInputExit));
-  EXPECT_TRUE(Contains(node.Output(),
-                       "/flexmbd_bad_param: joints.elbow.spring.k: -3 is negative; "
-                       "expected a stiffness >= 0 [N m/rad]"))
-      << node.Output();
+  ExpectBadInputExit("flexmbd_bad_param", {},
+                     "/flexmbd_bad_param: joints.elbow.spring.k: -3 is negative; "
+                     "expected a stiffness >= 0 [N m/rad]");
 }
 
 TEST(NodeExit, BadNodeSettingExitsWithTwoNamingTheSetting) {
-  NodeProcess node("flexmbd_bad_setting", {"_real_time_factor:=-1.0"});
-  EXPECT_EQ(node.WaitForExit(kTimeout), std::optional<int>(kBadInputExit));
-  EXPECT_TRUE(Contains(node.Output(),
-                       "/flexmbd_bad_setting/real_time_factor: '-1' is not a finite number >= 0; "
-                       "expected a factor >= 0 (0 = as fast as possible, 1 = wall-clock pace)"))
-      << node.Output();
+  ExpectBadInputExit("flexmbd_bad_setting", {"_real_time_factor:=-1.0"},
+                     "/flexmbd_bad_setting/real_time_factor: '-1' is not a finite number >= 0; "
+                     "expected a factor >= 0 (0 = as fast as possible, 1 = wall-clock pace)");
 }
 
 TEST(NodeExit, ZeroSetpointTimeConstantExitsWithTwoNamingTheSetting) {
   // Reference: docs/ros.md, Inputs: a drive cannot follow its set-point with no lag (a jump in one step).
-  NodeProcess node("flexmbd_bad_lag", {"_setpoint_time_constant:=0.0"});
-  EXPECT_EQ(node.WaitForExit(kTimeout), std::optional<int>(kBadInputExit));
-  EXPECT_TRUE(Contains(node.Output(),
-                       "/flexmbd_bad_lag/setpoint_time_constant: '0' is not > 0; expected a time constant > 0 [s] "
-                       "(the lag of a drive behind ~position_command)"))
-      << node.Output();
+  ExpectBadInputExit("flexmbd_bad_lag", {"_setpoint_time_constant:=0.0"},
+                     "/flexmbd_bad_lag/setpoint_time_constant: '0' is not > 0; expected a time constant > 0 [s] "
+                     "(the lag of a drive behind ~position_command)");
 }
 
 TEST(NodeExit, MisspeltNodeSettingExitsWithTwoListingTheSettings) {
   // Reference: src/ros/node_case.cpp: a private name that is no setting and no YAML section is named with the
   // nearest setting and both lists (the loader's message listed only the sections).
-  NodeProcess node("flexmbd_misspelt_setting", {"_realtime_factor:=2.0"});
-  EXPECT_EQ(node.WaitForExit(kTimeout), std::optional<int>(kBadInputExit));
-  EXPECT_TRUE(Contains(node.Output(),
-                       "/flexmbd_misspelt_setting/realtime_factor: unknown parameter; did you mean "
-                       "'real_time_factor'? expected a node setting (urdf_file, real_time_factor, bag, "
-                       "bag_compression, publish, rate_hz, keep_alive, wait_for_subscribers, clock_rate_hz, paused, "
-                       "setpoint_time_constant) "
-                       "or a section of the case (beams, joints, solver, output, loads, docs/config.md)"))
-      << node.Output();
+  ExpectBadInputExit("flexmbd_misspelt_setting", {"_realtime_factor:=2.0"},
+                     "/flexmbd_misspelt_setting/realtime_factor: unknown parameter; did you mean "
+                     "'real_time_factor'? expected a node setting (urdf_file, real_time_factor, bag, "
+                     "bag_compression, publish, rate_hz, keep_alive, wait_for_subscribers, clock_rate_hz, paused, "
+                     "setpoint_time_constant) "
+                     "or a section of the case (beams, joints, solver, output, loads, docs/config.md)");
 }
 
 TEST(NodeExit, MissingUrdfFileExitsWithTwoNamingTheFile) {
-  NodeProcess node("flexmbd_missing_urdf", {"_urdf_file:=/nonexistent/arm.urdf"});
-  EXPECT_EQ(node.WaitForExit(kTimeout), std::optional<int>(kBadInputExit));
-  EXPECT_TRUE(Contains(node.Output(), "cannot open URDF file '/nonexistent/arm.urdf': No such file or directory"))
-      << node.Output();
+  ExpectBadInputExit("flexmbd_missing_urdf", {"_urdf_file:=/nonexistent/arm.urdf"},
+                     "cannot open URDF file '/nonexistent/arm.urdf': No such file or directory");
 }
 
 TEST(NodeExit, SigintMidRunLeavesAReadableBagWithEverySampleSoFar) {

@@ -60,8 +60,9 @@ class EnergyDecayingIntegrator : public TimeIntegrator {
   const Model& model_;
   SparseSystem* system_;
   StepContextBuilder builder_;
-  VelocityProjection projection_;  ///< applied after steps whose modes jumped
+  VelocityProjection projection_;  ///< applied after steps whose modes jumped or whose contacts came to rest
   double alpha_inf_;
+  std::vector<bool> held_;          ///< per effect slot: held in the projection (a contact brought to rest)
   std::vector<Mat3> node_inertia_;  ///< rotational inertia of each node's body, weights the dissipation check
   std::vector<EffectState> modes_;  ///< trial modes of the step being solved
   TangentReuse tangent_reuse_;     ///< whether a step starts from the previous one's factorisation, learnt

@@ -51,6 +51,7 @@ EnergyDecayingIntegrator::EnergyDecayingIntegrator(const Model& model, SparseSys
       alpha_inf_(model.solver().integrator == SolverSpec::Integrator::kEnergyDecaying
                      ? DissipationFromRhoInf(model.solver().rho_inf)
                      : 0.0),
+      held_(model.modal_effects().size(), false),
       node_inertia_(model.num_nodes(), Mat3::Identity()) {
   for (const RigidBody* body : model.rigid_bodies()) node_inertia_[body->node()] = body->inertia();
 }
@@ -236,13 +237,12 @@ StepResult EnergyDecayingIntegrator::Step(const State& start, double h, State* e
   // A contact brought to rest is held in the projection; a rate that moves a joint less than its error floor over
   // the step is rest already.
   const double negligible_rate = JointErrorFloor(model_.solver()) / h;
-  std::vector<bool> held(model_.modal_effects().size(), false);
   bool comes_to_rest = false;
   for (const ModalEffect* effect : model_.modal_effects()) {
-    held[effect->slot()] = effect->ComesToRest(start, *end, negligible_rate);
-    comes_to_rest = comes_to_rest || held[effect->slot()];
+    held_[effect->slot()] = effect->ComesToRest(start, *end, negligible_rate);
+    comes_to_rest = comes_to_rest || held_[effect->slot()];
   }
-  if (jumped || comes_to_rest) projection_.Apply(end, held);
+  if (jumped || comes_to_rest) projection_.Apply(end, held_);
   return result;
 }
 
