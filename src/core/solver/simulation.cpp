@@ -1,9 +1,11 @@
 #include "flexmbd/solver/simulation.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
 #include "flexmbd/common/error.hpp"
+#include "flexmbd/solver/starting_step.hpp"
 #include "flexmbd/solver/step_context_builder.hpp"
 
 namespace flexmbd {
@@ -146,7 +148,12 @@ void Simulation::Begin(const SampleSink& sink) {
   sink(previous_);
   next_sample_ = 1;
   t_start_ = state_.t;
-  h_ = model_.solver().dt;
+  const SolverSpec& solver = model_.solver();
+  h_ = std::min(solver.dt, solver.dt_max);
+  if (solver.adaptive) {
+    h_ = ChooseStartingStep(integrator_.get(), state_, h_, solver.dt_min, &controller_);
+    controller_.Start(h_);
+  }
 }
 
 void Simulation::AdvanceTo(double t_until, double t_end, const SampleSink& sink) {
