@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include "flexmbd/model/model.hpp"
 #include "io_test_util.hpp"
 
 namespace flexmbd {
@@ -46,6 +47,21 @@ TEST(FrictionConfig, RadiusOnPrismaticJointIsRejected) {
     EXPECT_NE(std::string(e.what()).find("joints.slide.friction.radius: applies only to rotations"), std::string::npos)
         << e.what();
   }
+}
+
+// Found on the published antenna's case 1 (friction in the driven root hinge): the run failed at t = 0 with a
+// singular iteration matrix, the sticking constraint repeating the drive's.
+TEST(FrictionConfig, StickingFrictionOnADrivenVariableIsRejectedByBuildModel) {
+  const ModelSpec spec = test::LoadInline(kHingeUrdf, "joints: {hinge: {drive: {law: cosine_ramp, value: 0.1}, "
+                                                      "friction: {mu_k: 0.15, radius: 0.02}}}");
+  EXPECT_CONFIG_ERROR(BuildModel(spec), "joint 'hinge': friction that sticks on a driven variable: sticking would "
+                                        "hold the motion the drive prescribes a second time");
+}
+
+TEST(FrictionConfig, RegularisedFrictionOnADrivenVariableIsBuilt) {
+  const ModelSpec spec = test::LoadInline(kHingeUrdf, "joints: {hinge: {drive: {law: cosine_ramp, value: 0.1}, "
+                                                      "friction: {law: regularised, mu_k: 0.15, v0: 1.0e-3}}}");
+  EXPECT_NO_THROW(BuildModel(spec));
 }
 
 }  // namespace

@@ -25,6 +25,13 @@ void VariableEffectsBuilder::Add(const std::string& where, const JointSpec& join
   for (const TimeFunctionSpec& law : effects.drives) AddDrive(where, v, law, multiplier);
   for (const StopSpec& stop : effects.stops) AddStop(where, joint.name, v, stop, multiplier);
   if (effects.frictions.size() > 1) throw ConfigError(where + "more than one friction on one variable");
+  // A stuck joint is held by a constraint, which would repeat the drive's and make the iteration matrix singular.
+  const bool sticks = !effects.frictions.empty() && effects.frictions[0].law != FrictionSpec::Law::kRegularised;
+  if (sticks && !effects.drives.empty()) {
+    throw ConfigError(where + "friction that sticks on a driven variable: sticking would hold the motion the drive "
+                      "prescribes a second time; expected no friction there (on a driven variable it changes only "
+                      "the drive's effort, not the motion) or law: regularised");
+  }
   for (const FrictionSpec& friction : effects.frictions) AddFriction(where, joint, v, friction, multiplier);
 }
 
