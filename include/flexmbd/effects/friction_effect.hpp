@@ -10,7 +10,9 @@
 ///             kinetic energy of the slip speed below v0; later steps have q_f = q_i and do no work). The joint
 ///             stays stuck while |lambda_t| <= mu_s rho N, else the step is redone sliding in the direction of
 ///             lambda_t
-/// A sliding joint whose slip speed at the end of a step is below v0 sticks from the next step on. In a step in
+/// A sliding joint whose slip speed at the end of a step is below v0 sticks from the next step on. A breakaway from
+/// a steady stick is located within its step (F3'), and the step that slides first is no longer than the local
+/// error test allows after the jump (F3''). In a step in
 /// which a rigid stop of the joint is in contact the stop holds q (q_f = q_i): friction then does no work and
 /// its torque is not determined, so it applies none, and a sticking constraint would repeat the stop's; the
 /// joint sticks or slides from the next step as its speed after the contact says. The

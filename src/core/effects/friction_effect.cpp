@@ -240,9 +240,15 @@ StepLimit FrictionEffect::Limit(const StepContext& ctx, const State& end) const 
     return limit;
   }
   const double v_i = ctx.start->qdot[variable_], v_f = end.qdot[variable_];
-  if (BreakingAway(ctx)) {
-    // The slide starts with a jump of the acceleration, and the local error estimate restarts (F3'').
-    const double longest = StepAfterJump(solver_, (v_f - v_i) / ctx.h, ctx.start->peak_joint_rate);
+  if (BreakingAway(ctx) && !std::isnan(ctx.start->effects[slot()].steady_force)) {
+    // After a steady stick, whose steps grew with no local error to hold them, the slide starts with a jump of the
+    // acceleration and the local error estimate restarts (F3''). The jump is taken from mean rates, which do not
+    // carry the alternating velocity mode of the end rates (T12).
+    const Eigen::VectorXd& rates_before = ctx.start->mean_qdot[0];
+    const double rate_before = rates_before.size() > variable_ ? rates_before[variable_] : 0.0;
+    const VariableStep& q = (*ctx.variables)[variable_];
+    const double jump = 2.0 * ((q.q_f - q.q_i) / ctx.h - rate_before) / ctx.h;
+    const double longest = StepAfterJump(solver_, jump, ctx.start->peak_joint_rate);
     if (ctx.h > longest) {
       limit.retry = kStepAfterJumpSafety * longest;
       return limit;
