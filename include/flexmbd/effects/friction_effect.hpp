@@ -10,7 +10,9 @@
 ///             kinetic energy of the slip speed below v0; later steps have q_f = q_i and do no work). The joint
 ///             stays stuck while |lambda_t| <= mu_s rho N, else the step is redone sliding in the direction of
 ///             lambda_t
-/// A sliding joint whose slip speed at the end of a step is below v0 sticks from the next step on. In a step in
+/// A sliding joint whose slip speed at the end of a step is below v0 sticks from the next step on. A breakaway from
+/// a steady stick is located within its step (F3'), and the step that slides first is no longer than the local
+/// error test allows after the jump (F3''). In a step in
 /// which a rigid stop of the joint is in contact the stop holds q (q_f = q_i): friction then does no work and
 /// its torque is not determined, so it applies none, and a sticking constraint would repeat the stop's; the
 /// joint sticks or slides from the next step as its speed after the contact says. The
@@ -31,9 +33,10 @@ class FrictionEffect : public ModalEffect {
   enum Mode { kSticking = 0, kSlidingPositive = 1, kSlidingNegative = 2 };
 
   /// @param stick_multiplier the sticking multiplier (-1 for the regularised law, which has none)
-  /// @param error_tol the run's local error tolerance, which sets the sticking threshold without a given v0
+  /// @param solver the run's settings: error_tol sets the sticking threshold without a given v0, and the local
+  ///        error test bounds the step that breaks away (F3'')
   FrictionEffect(const FrictionSpec& spec, const Joint& joint, int variable_unknown, int stick_multiplier,
-                int stick_multiplier_unknown, int joint_multiplier_unknown, int slot, double error_tol);
+                int stick_multiplier_unknown, int joint_multiplier_unknown, int slot, const SolverSpec& solver);
 
   void AddResidual(const StepContext& ctx, Eigen::Ref<Eigen::VectorXd> r,
                    Eigen::Ref<Eigen::VectorXd> magnitude) const override;
@@ -47,8 +50,8 @@ class FrictionEffect : public ModalEffect {
 
   /// The initial mode for a starting rate: sliding in its direction, sticking at rest.
   static int InitialMode(double qdot) { return qdot > 0 ? kSlidingPositive : qdot < 0 ? kSlidingNegative : kSticking; }
-  /// The sticking threshold v0 in force at a state: given, or min(1%, 100 error_tol) of the largest slip speed
-  /// seen [m/s].
+  /// The sticking threshold v0 in force at a state: min(1%, 100 error_tol) of the largest slip speed seen (at least
+  /// 1e-6 m/s), or the given v0 where that is lower [m/s].
   double StickingSpeed(const EffectState& effect) const;
   FrictionSample Sample(const State& state) const;
   int variable() const { return variable_; }
@@ -93,6 +96,7 @@ class FrictionEffect : public ModalEffect {
   static double EndRate(const StepContext& ctx, int variable);
 
   FrictionSpec spec_;
+  SolverSpec solver_;
   double auto_sticking_fraction_;  ///< of the largest slip speed: the sticking threshold without a given v0
   int variable_;
   int parent_node_;

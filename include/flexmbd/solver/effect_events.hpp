@@ -11,9 +11,9 @@ namespace flexmbd {
 class Model;
 struct State;
 
-/// One mode change, at the end of the accepted step in which it happened.
+/// One mode change in an accepted step.
 struct EffectEvent {
-  double t = 0;     ///< [s]
+  double t = 0;     ///< when the new mode began: the step's start if the step was solved in it, else its end [s]
   int effect = -1;  ///< index into Model::modal_effects()
   int from = 0, to = 0;
 };

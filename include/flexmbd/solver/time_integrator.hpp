@@ -52,6 +52,12 @@ std::unique_ptr<TimeIntegrator> MakeTimeIntegrator(const Model& model, SparseSys
 /// default).
 double JointErrorFloor(const SolverSpec& solver);
 
+/// The largest step that begins with a jump of `acceleration_jump` in a joint variable's acceleration [rad/s^2 or
+/// m/s^2] and has no error history (docs/theory.md, (F3'')): where the estimate (T12), run across the jump with equal
+/// steps, would find the error acceptable, |jump| h^2 / 24 = floor + error_tol h peak_joint_rate. Infinity with
+/// fixed steps or without a jump.
+double StepAfterJump(const SolverSpec& solver, double acceleration_jump, double peak_joint_rate);
+
 /// Local error estimate of the step that led to `end` (docs/theory.md, (T12)), from its mean-rate history.
 ErrorEstimate EstimateLocalError(const Model& model, const State& end);
 

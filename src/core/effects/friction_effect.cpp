@@ -5,6 +5,7 @@
 #include <limits>
 
 #include "flexmbd/effects/joint_stop.hpp"
+#include "flexmbd/solver/time_integrator.hpp"
 
 namespace flexmbd {
 namespace {
@@ -30,6 +31,10 @@ constexpr double kCaptureSpeeds = 2.0;
 // the step is redone to end at kEventLanding of the crossing, so the breakaway starts within a few percent of a
 // step of its instant (F3'), as a stop's contact does (C5).
 constexpr double kBreakawayEventFraction = 0.05;
+// A step that breaks away longer than the local error test allows after the jump is redone with this fraction of
+// that size (the controller's safety factor), so that the redone step passes even if its mean acceleration is a
+// little larger.
+constexpr double kStepAfterJumpSafety = 0.9;
 // BreakawayFraction when the static bound is not reached.
 constexpr double kNoBreakaway = std::numeric_limits<double>::infinity();
 
@@ -38,10 +43,11 @@ bool BreakawayToLocate(double fraction) { return fraction > kBreakawayEventFract
 }  // namespace
 
 FrictionEffect::FrictionEffect(const FrictionSpec& spec, const Joint& joint, int variable_unknown, int stick_multiplier,
-                             int stick_multiplier_unknown, int joint_multiplier_unknown, int slot, double error_tol)
+                             int stick_multiplier_unknown, int joint_multiplier_unknown, int slot, const SolverSpec& solver)
     : ModalEffect(slot),
       spec_(spec),
-      auto_sticking_fraction_(std::min(kMaxAutoStickingFraction, kStickingFractionPerTolerance * error_tol)),
+      solver_(solver),
+      auto_sticking_fraction_(std::min(kMaxAutoStickingFraction, kStickingFractionPerTolerance * solver.error_tol)),
       variable_(joint.first_variable()),
       parent_node_(joint.parent().node),
       R_NJ_(joint.parent().R_NJ),
@@ -74,8 +80,10 @@ double FrictionEffect::Bound(double mu, double normal) const {
 }
 
 double FrictionEffect::StickingSpeed(const EffectState& effect) const {
-  if (spec_.v0 > 0) return spec_.v0;
-  return std::max(auto_sticking_fraction_ * effect.reference, kMinAutoStickingSpeed);
+  // A given v0 is the most the joint may stick early by: the tolerance's threshold governs where it is lower, so
+  // that a tighter error_tol still catches the slip's stop closer to its instant (F4).
+  const double from_tolerance = std::max(auto_sticking_fraction_ * effect.reference, kMinAutoStickingSpeed);
+  return spec_.v0 > 0 ? std::min(spec_.v0, from_tolerance) : from_tolerance;
 }
 
 double FrictionEffect::RegularisedFactor(double v, double* d_dv) const {
@@ -232,6 +240,20 @@ StepLimit FrictionEffect::Limit(const StepContext& ctx, const State& end) const 
     return limit;
   }
   const double v_i = ctx.start->qdot[variable_], v_f = end.qdot[variable_];
+  if (BreakingAway(ctx) && !std::isnan(ctx.start->effects[slot()].steady_force)) {
+    // After a steady stick, whose steps grew with no local error to hold them, the slide starts with a jump of the
+    // acceleration and the local error estimate restarts (F3''). The jump is taken from mean rates, which do not
+    // carry the alternating velocity mode of the end rates (T12).
+    const Eigen::VectorXd& rates_before = ctx.start->mean_qdot[0];
+    const double rate_before = rates_before.size() > variable_ ? rates_before[variable_] : 0.0;
+    const VariableStep& q = (*ctx.variables)[variable_];
+    const double jump = 2.0 * ((q.q_f - q.q_i) / ctx.h - rate_before) / ctx.h;
+    const double longest = StepAfterJump(solver_, jump, ctx.start->peak_joint_rate);
+    if (ctx.h > longest) {
+      limit.retry = kStepAfterJumpSafety * longest;
+      return limit;
+    }
+  }
   if (Direction(TrialMode(ctx)) * v_f < 0 && !BreakingAway(ctx)) {
     // Redo the step to end just before the slip stops (linear in the rate), where it can stick gently.
     limit.retry = kEventLanding * ctx.h * std::abs(v_i) / (std::abs(v_i) + std::abs(v_f));

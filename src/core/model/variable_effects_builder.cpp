@@ -94,7 +94,7 @@ void VariableEffectsBuilder::AddFriction(const std::string& where, const JointSp
   auto element = std::make_unique<FrictionEffect>(
       friction, element_joint, model_.variable_unknown(v), sticks ? *multiplier : -1,
       sticks ? model_.multiplier_unknown(*multiplier) : -1,
-      model_.multiplier_unknown(element_joint.first_multiplier()), slot, model_.solver().error_tol);
+      model_.multiplier_unknown(element_joint.first_multiplier()), slot, model_.solver());
   std::vector<int> rigid_stops;
   for (const JointStop* stop : model_.stop_effects_) {
     if (stop->variable() == v && dynamic_cast<const RigidStop*>(stop) != nullptr) rigid_stops.push_back(stop->slot());

@@ -130,9 +130,12 @@ StepResult Simulation::TryStep(double h) {
   State end;
   const StepResult result = integrator_->Step(state_, h, &end);
   if (result.status != StepStatus::kAccepted) return result;
+  // A step solved in its end mode (a breakaway, a contact begun or left within the step) has it from its start;
+  // a mode taken at its end (sticking below v0, a retraction) holds from its end.
+  const std::vector<EffectState>& solved = *integrator_->last_context().effects;
   for (size_t k = 0; k < end.effects.size(); ++k) {
     const int from = state_.effects[k].mode, to = end.effects[k].mode;
-    if (from != to) effect_events_.push_back({end.t, static_cast<int>(k), from, to});
+    if (from != to) effect_events_.push_back({solved[k].mode == to ? state_.t : end.t, static_cast<int>(k), from, to});
   }
   state_ = std::move(end);
   return result;

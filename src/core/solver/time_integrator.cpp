@@ -23,6 +23,14 @@ double JointErrorFloor(const SolverSpec& solver) {
   return FloorOrDefault(solver.error_floor.joint, solver.error_tol, 1.0);
 }
 
+double StepAfterJump(const SolverSpec& solver, double acceleration_jump, double peak_joint_rate) {
+  const double jump = std::abs(acceleration_jump);
+  if (!solver.adaptive || jump == 0) return std::numeric_limits<double>::infinity();
+  // The positive root of jump h^2 / 24 - relative h - floor = 0.
+  const double relative = solver.error_tol * peak_joint_rate;
+  return 12.0 * (relative + std::sqrt(relative * relative + jump * JointErrorFloor(solver) / 6.0)) / jump;
+}
+
 const char* StepStatusName(StepStatus status) {
   switch (status) {
     case StepStatus::kAccepted: return "accepted";
