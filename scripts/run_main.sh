@@ -2,14 +2,14 @@
 # The main job: installs what is missing, builds flexmbd, runs the main case with the ROS node through its
 # launch file (roslaunch starts a roscore if none is running) recording every sample to a bag, and plots the
 # bag to PNG files beside it. Ends on its own: the node exits at the end of the run and takes roslaunch down.
-#   FLEXMBD_CASE  case name: config/<case>/ and launch/<case>.launch (default: antenna)
+#   FLEXMBD_CASE  case name: config/<case>/ and launch/<case>.launch (default: antenna_published, its case 1)
 #   FLEXMBD_OUT   output folder (default: ./flexmbd_output, relative to the current directory)
 #   FLEXMBD_WS    catkin workspace (default: $HOME/flexmbd_ws)
 set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
 scripts="${FLEXMBD_REPO_ROOT}/scripts"
 
-case_name="${FLEXMBD_CASE:-antenna}"
+case_name="${FLEXMBD_CASE:-antenna_published}"
 launch_file="${FLEXMBD_REPO_ROOT}/launch/${case_name}.launch"
 if [[ ! -f "${launch_file}" ]]; then
   available="$(cd "${FLEXMBD_REPO_ROOT}/launch" 2>/dev/null && ls -- *.launch 2>/dev/null |
