@@ -33,11 +33,14 @@ SAMPLE_TYPES = {
     "reactions": "flexmbd/JointReactionArray",
     "solver": "flexmbd/SolverStep",
 }
-# published only by models with stops or frictional joints
+# published only by models with stops, frictional joints or beam stations
 OPTIONAL_TYPES = {
     "contacts": "flexmbd/JointContactArray",
     "friction": "flexmbd/JointFrictionArray",
+    "beam_loads": "flexmbd/BeamLoadsArray",  # models with output.beam_stations
 }
+# a beam station's CSV columns beam.<beam>.s<k>.<field>, in the CSV's order
+STATION_FIELDS = ("N", "V2", "V3", "T", "M2", "M3", "e1", "g2", "g3", "k1", "k2", "k3")
 # the CSV's energy columns, in its order; total = kinetic + potential
 ENERGY_FIELDS = ("kinetic", "potential", "total", "external_work", "dissipated", "numerical_dissipation")
 
@@ -97,6 +100,15 @@ def read_columns(path):
         for f in friction.joints:
             for field in ("sticking", "torque", "normal_force", "slip_velocity", "work"):
                 add("friction.%s.%s" % (f.joint, field), float(getattr(f, field)))
+    for loads in messages.get("beam_loads", []):
+        for station in loads.stations:
+            prefix = "beam.%s.s%d." % (station.beam, station.station)
+            for field in STATION_FIELDS:
+                add(prefix + field, getattr(station, field))
+            for axis in "xyz":
+                add(prefix + "u" + axis, getattr(station.displacement, axis))
+            for axis in "xyz":
+                add(prefix + "r" + axis, getattr(station.rotation, axis))
     for energy in messages["energy"]:
         for field in ENERGY_FIELDS:
             add("energy." + field, energy.kinetic + energy.potential if field == "total" else getattr(energy, field))

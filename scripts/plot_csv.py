@@ -113,6 +113,8 @@ def group_key(name):
         return "joint_" + quantity, joint
     if parts[0] in ("stop", "friction") and len(parts) >= 3:  # one plot per quantity, a line per stop or joint
         return parts[0] + "_" + parts[-1], ".".join(parts[1:-1])
+    if parts[0] == "beam" and len(parts) >= 4:  # beam.<beam>.s<k>.<quantity>: one plot per quantity
+        return "beam_" + parts[-1], ".".join(parts[1:-1])
     if parts[0] == "energy" and len(parts) >= 2:
         return "energy", ".".join(parts[1:])
     if parts[0] == "solver" and len(parts) >= 2:

@@ -1,0 +1,144 @@
+#!/usr/bin/python3
+"""The published antenna's figures (issue 16, docs/validation.md): its three cases overlaid, from their bags.
+
+  <out>/antenna_published_rotations.png   relative rotations phi_1..phi_4 of B1..B4 [deg]
+  <out>/antenna_published_friction.png    friction torques at B2 and B3 (cases 1, 2), sticking intervals as bars
+  <out>/antenna_published_moments.png     bending moment at each panel's mid-span station
+  <out>/antenna_published_work.png        cumulative work of the drive and energy dissipated
+
+Usage: plot_antenna_published.py CASE0.bag CASE1.bag CASE2.bag [--out-dir DIR]
+Bags from flexmbd_run --bag or the node (~bag) of config/antenna_published/case{0,1,2}.yaml; the panels' stations
+are the YAMLs' output.beam_stations (mid-span). Needs python3-rosbag and python3-matplotlib (no roscore).
+"""
+
+import argparse
+import math
+import os
+import sys
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402 (after the backend)
+
+import plot_bag  # noqa: E402: the bag reader beside this file, columns named as in the runner's CSV
+
+JOINTS = ("B1", "B2", "B3", "B4")
+FRICTION_JOINTS = ("B2", "B3")
+PANELS = ("panel_1", "panel_2", "panel_3", "panel_4")
+# The deployment turns about y, the axis 2 of the panels' sections: in-plane bending is M2.
+IN_PLANE_MOMENT = "M2"
+CASE_LABELS = ("case 0 (dampers)", "case 1 (friction)", "case 2 (preloads doubled)")
+
+
+def column(run, name):
+    header, columns = run
+    if name not in header:
+        raise plot_bag.BagError("no column %s: not a bag of config/antenna_published/" % name)
+    return columns[header.index(name)]
+
+
+def sticking_intervals(time, sticking):
+    """(start, end) of each run of samples with the sticking flag set."""
+    intervals, start = [], None
+    for t, flag in zip(time, sticking):
+        if flag > 0.5 and start is None:
+            start = t
+        elif flag <= 0.5 and start is not None:
+            intervals.append((start, t))
+            start = None
+    if start is not None:
+        intervals.append((start, time[-1]))
+    return intervals
+
+
+def save(figure, path):
+    figure.tight_layout()
+    figure.savefig(path, dpi=110)
+    plt.close(figure)
+    print(path)
+
+
+def plot_rotations(runs, path):
+    figure, axes = plt.subplots(len(JOINTS), 1, figsize=(10, 9), sharex=True)
+    for ax, joint in zip(axes, JOINTS):
+        for run, label in zip(runs, CASE_LABELS):
+            ax.plot(column(run, "t"), [math.degrees(v) for v in column(run, "joint.%s.position" % joint)],
+                    label=label, linewidth=0.9)
+        ax.set_ylabel("phi_%s [deg]" % joint[1:])
+        ax.grid(True, alpha=0.3)
+    axes[0].set_title("Relative rotations at the revolute joints")
+    axes[0].legend(loc="upper right", fontsize="small")
+    axes[-1].set_xlabel("time [s]")
+    save(figure, path)
+
+
+def plot_friction(runs, path):
+    figure, axes = plt.subplots(len(FRICTION_JOINTS), 1, figsize=(10, 7), sharex=True)
+    friction_runs = list(zip(runs[1:], CASE_LABELS[1:]))
+    for ax, joint in zip(axes, FRICTION_JOINTS):
+        for k, (run, label) in enumerate(friction_runs):
+            time = column(run, "t")
+            line, = ax.plot(time, column(run, "friction.%s.torque" % joint), label=label, linewidth=0.8)
+            # one row of bars per case along the bottom of the axes
+            for start, end in sticking_intervals(time, column(run, "friction.%s.sticking" % joint)):
+                ax.axvspan(start, end, ymin=0.02 + 0.05 * k, ymax=0.06 + 0.05 * k, color=line.get_color())
+        ax.set_ylabel("%s friction torque [N m]" % joint)
+        ax.grid(True, alpha=0.3)
+    axes[0].set_title("Friction torques; bars: sticking intervals (lower row case 1, upper row case 2)")
+    axes[0].legend(loc="upper right", fontsize="small")
+    axes[-1].set_xlabel("time [s]")
+    save(figure, path)
+
+
+def plot_moments(runs, path):
+    figure, axes = plt.subplots(len(PANELS), 1, figsize=(10, 9), sharex=True)
+    for ax, panel in zip(axes, PANELS):
+        for run, label in zip(runs, CASE_LABELS):
+            ax.plot(column(run, "t"), column(run, "beam.%s.s0.%s" % (panel, IN_PLANE_MOMENT)), label=label,
+                    linewidth=0.8)
+        ax.set_ylabel("%s [N m]" % panel)
+        ax.grid(True, alpha=0.3)
+    axes[0].set_title("Bending moment at the panels' mid-span (in the deployment plane)")
+    axes[0].legend(loc="upper right", fontsize="small")
+    axes[-1].set_xlabel("time [s]")
+    save(figure, path)
+
+
+def plot_work(runs, path):
+    figure, ax = plt.subplots(figsize=(10, 5))
+    for run, label in zip(runs, CASE_LABELS):
+        time = column(run, "t")
+        line, = ax.plot(time, column(run, "energy.external_work"), label=label + ": work of the drive",
+                        linewidth=1.0)
+        ax.plot(time, column(run, "energy.dissipated"), linestyle="--", color=line.get_color(),
+                label=label + ": dissipated by dampers or friction", linewidth=1.0)
+    ax.set_title("Cumulative work of the drive and of the joint forces")
+    ax.set_xlabel("time [s]")
+    ax.set_ylabel("energy [J]")
+    ax.grid(True, alpha=0.3)
+    ax.legend(loc="best", fontsize="small")
+    save(figure, path)
+
+
+def main(argv):
+    parser = argparse.ArgumentParser(description="Plot the published antenna's three cases overlaid.")
+    parser.add_argument("bags", nargs=3, metavar="CASE_BAG", help="bags of case 0, case 1 and case 2, in order")
+    parser.add_argument("--out-dir", "-o", default=".", help="folder for the PNG files (default: .)")
+    args = parser.parse_args(argv[1:])
+    try:
+        runs = [plot_bag.read_columns(bag) for bag in args.bags]
+        os.makedirs(args.out_dir, exist_ok=True)
+        stem = os.path.join(args.out_dir, "antenna_published_")
+        plot_rotations(runs, stem + "rotations.png")
+        plot_friction(runs, stem + "friction.png")
+        plot_moments(runs, stem + "moments.png")
+        plot_work(runs, stem + "work.png")
+    except (plot_bag.BagError, OSError) as exc:
+        print("error: plot_antenna_published.py: %s" % exc, file=sys.stderr)
+        return 1
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv))
