@@ -59,18 +59,23 @@ def save(figure, path):
     print(path)
 
 
-def plot_rotations(runs, path):
-    figure, axes = plt.subplots(len(JOINTS), 1, figsize=(10, 9), sharex=True)
-    for ax, joint in zip(axes, JOINTS):
+def plot_stacked(runs, rows, title, path):
+    """One axes per (y label, column name, scale) row, the three cases overlaid on each."""
+    figure, axes = plt.subplots(len(rows), 1, figsize=(10, 9), sharex=True)
+    for ax, (ylabel, name, scale) in zip(axes, rows):
         for run, label in zip(runs, CASE_LABELS):
-            ax.plot(column(run, "t"), [math.degrees(v) for v in column(run, "joint.%s.position" % joint)],
-                    label=label, linewidth=0.9)
-        ax.set_ylabel("phi_%s [deg]" % joint[1:])
+            ax.plot(column(run, "t"), [scale * v for v in column(run, name)], label=label, linewidth=0.9)
+        ax.set_ylabel(ylabel)
         ax.grid(True, alpha=0.3)
-    axes[0].set_title("Relative rotations at the revolute joints")
+    axes[0].set_title(title)
     axes[0].legend(loc="upper right", fontsize="small")
     axes[-1].set_xlabel("time [s]")
     save(figure, path)
+
+
+def plot_rotations(runs, path):
+    rows = [("phi_%s [deg]" % joint[1:], "joint.%s.position" % joint, math.degrees(1.0)) for joint in JOINTS]
+    plot_stacked(runs, rows, "Relative rotations at the revolute joints", path)
 
 
 def plot_friction(runs, path):
@@ -92,17 +97,8 @@ def plot_friction(runs, path):
 
 
 def plot_moments(runs, path):
-    figure, axes = plt.subplots(len(PANELS), 1, figsize=(10, 9), sharex=True)
-    for ax, panel in zip(axes, PANELS):
-        for run, label in zip(runs, CASE_LABELS):
-            ax.plot(column(run, "t"), column(run, "beam.%s.s0.%s" % (panel, IN_PLANE_MOMENT)), label=label,
-                    linewidth=0.8)
-        ax.set_ylabel("%s [N m]" % panel)
-        ax.grid(True, alpha=0.3)
-    axes[0].set_title("Bending moment at the panels' mid-span (in the deployment plane)")
-    axes[0].legend(loc="upper right", fontsize="small")
-    axes[-1].set_xlabel("time [s]")
-    save(figure, path)
+    rows = [("%s [N m]" % panel, "beam.%s.s0.%s" % (panel, IN_PLANE_MOMENT), 1.0) for panel in PANELS]
+    plot_stacked(runs, rows, "Bending moment at the panels' mid-span (in the deployment plane)", path)
 
 
 def plot_work(runs, path):
