@@ -1,13 +1,19 @@
 // Long fuzzing runs of the loader and the first solver steps (test/fuzz/README.md, bench/README.md).
 //   fuzz_config [--inputs N] [--seed S] [--out DIR] [--seconds T] [--time-limit S] [--source DIR]
 //   fuzz_config --replay URDF YAML [--param-tree]
+//   fuzz_config --make K [--seed S] [--out DIR] [--source DIR]
 // A campaign prints a progress line every 10,000 inputs and a summary: inputs, inputs per second, outcomes
 // and findings; it exits 1 if it found anything. --replay runs one reproducer in this process (no fork, the
-// loader's logs shown) and prints its outcome and verdict.
+// loader's logs shown) and prints its outcome and verdict. --make writes input K of seed S as DIR/input_S_K.urdf,
+// .yaml and .txt without running it: a campaign writes only the first findings of each kind, and any input can
+// be made again from its seed, its index and the same seed cases.
+
+#include <sys/stat.h>
 
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
+#include <stdexcept>
 #include <string>
 
 #include "flexmbd/io/text_file.hpp"
@@ -20,7 +26,8 @@ using flexmbd::fuzz::CampaignCounts;
 
 constexpr char kUsage[] =
     "usage: fuzz_config [--inputs N] [--seed S] [--out DIR] [--seconds T] [--time-limit S] [--source DIR]\n"
-    "       fuzz_config --replay URDF YAML [--param-tree]\n";
+    "       fuzz_config --replay URDF YAML [--param-tree]\n"
+    "       fuzz_config --make K [--seed S] [--out DIR] [--source DIR]\n";
 
 // Without sanitizers a runaway allocation is bounded so it ends as std::bad_alloc (a finding), not as the
 // machine's memory; AddressSanitizer reserves terabytes of address space and needs no limit.
@@ -65,6 +72,8 @@ int main(int argc, char** argv) {
   options.out_dir = "fuzz_findings";
   options.limits.memory_mib = kMemoryMib;
   std::string source = FLEXMBD_SOURCE_DIR;
+  bool make_one = false;
+  uint64_t make_index = 0;
   for (int k = 1; k < argc; ++k) {
     const std::string flag = argv[k];
     if (flag == "--replay" && k + 2 < argc) {
@@ -81,12 +90,30 @@ int main(int argc, char** argv) {
     else if (flag == "--seconds") options.max_seconds = std::atof(value.c_str());
     else if (flag == "--time-limit") options.limits.seconds = static_cast<unsigned>(std::atoi(value.c_str()));
     else if (flag == "--source") source = value;
+    else if (flag == "--make") {
+      make_one = true;
+      make_index = std::strtoull(value.c_str(), nullptr, 10);
+    }
     else {
       std::fputs(kUsage, stderr);
       return 2;
     }
   }
   const InputGenerator generator(ReadSeedCorpus(source, source + "/test/fuzz/seeds.txt"));
+  if (make_one) {
+    mkdir(options.out_dir.c_str(), 0755);
+    const std::string stem =
+        options.out_dir + "/input_" + std::to_string(options.seed) + "_" + std::to_string(make_index);
+    const FuzzInput input = generator.Make(options.seed, make_index);
+    try {
+      WriteInputFiles(stem, input, DescribeInput(options.seed, make_index, input, stem));
+    } catch (const std::runtime_error& error) {
+      std::fprintf(stderr, "%s\n", error.what());
+      return 1;
+    }
+    std::printf("wrote %s.urdf, .yaml and .txt\n", stem.c_str());
+    return 0;
+  }
   const auto start = std::chrono::steady_clock::now();
   const auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); };
   const CampaignCounts counts =

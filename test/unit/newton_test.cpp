@@ -1,6 +1,7 @@
-// SolveNewton's approximate solve (NewtonOptions::increment_test_only), on a static pendulum held by a spring:
-// it stops at the first trusted increment below the tolerance, before the full test would, and its iterate lies
-// within that tolerance of the converged one.
+// SolveNewton on a static pendulum held by a spring: the approximate solve (NewtonOptions::increment_test_only)
+// stops at the first trusted increment below the tolerance, before the full test would, and its iterate lies
+// within that tolerance of the converged one; a simplified iteration whose contraction is measured stops when the
+// error it leaves, not its increment, is below the tolerance.
 
 #include <gtest/gtest.h>
 
@@ -26,13 +27,17 @@ Model SprungPendulum() {
 
 struct Solved {
   NewtonReport report;
-  double angle = 0;  // [rad]
+  double angle = 0;           // [rad]
+  double last_increment = 0;  // largest kinematic entry of the last increment [rad]
+  double travelled = 0;       // largest increment, against which the tolerance judges them [rad]
 };
 
-Solved SolveStatic(const Model& model, double tol, const NewtonOptions& options) {
+// Without the geometric stiffness (gravity's moment changing with the angle) the tangent is inexact and the
+// iteration contracts linearly, as a step's simplified iteration does.
+Solved SolveStatic(const Model& model, double tol, const NewtonOptions& options, bool geometric_stiffness = true) {
   SparseSystem system(model);
   StepContextBuilder builder(model);
-  builder.set_geometric_stiffness(true);
+  builder.set_geometric_stiffness(geometric_stiffness);
   State state = model.initial_state();
   Eigen::VectorXd unknowns = Eigen::VectorXd::Zero(model.num_unknowns());
   double travelled = 0;
@@ -52,11 +57,13 @@ Solved SolveStatic(const Model& model, double tol, const NewtonOptions& options)
         }
         for (int k = 0; k < model.num_variables(); ++k) state.q[k] += increment[model.variable_unknown(k)];
         state.lambda += increment.tail(model.num_multipliers());
-        travelled = std::max(travelled, increment.head(n_kinematic).cwiseAbs().maxCoeff());
+        solved.last_increment = increment.head(n_kinematic).cwiseAbs().maxCoeff();
+        travelled = std::max(travelled, solved.last_increment);
         return travelled + kMotionFloor;
       },
       options);
   solved.angle = state.q[0];
+  solved.travelled = travelled;
   return solved;
 }
 
@@ -75,6 +82,21 @@ TEST(Newton, AnApproximateSolveStopsAtItsFirstSmallIncrement) {
   // Its iterate is within the tolerance of the travel (about 0.5 rad) of the root: the remaining error is the
   // next increment, below the last one (it contracts).
   EXPECT_LT(std::abs(approximate.angle - reference.angle), kLoose * 0.5);
+}
+
+TEST(Newton, AContractingIterationStopsWhenTheErrorItLeavesIsSmall) {
+  const Model model = SprungPendulum();
+  // The increments shrink by 0.29 per iteration here (0.59, 0.10, ..., 1.4e-6, 4.1e-7, 1.2e-7 rad).
+  constexpr double kTol = 1.0e-7;
+  const Solved reference = SolveStatic(model, 1.0e-12, NewtonOptions{});
+  const Solved simplified = SolveStatic(model, kTol, NewtonOptions{}, false);
+  ASSERT_TRUE(reference.report.converged && simplified.report.converged);
+  const double target = kTol * (simplified.travelled + kMotionFloor);
+  // It stopped on the contraction: its last increment was still above the target ...
+  EXPECT_GT(simplified.last_increment, target);
+  // ... and the error it left, about theta / (1 - theta) of that increment, is below it (the iteration contracts
+  // linearly, so the estimate is close; a factor 2 leaves room for the rate changing along the way).
+  EXPECT_LT(std::abs(simplified.angle - reference.angle), 2.0 * target);
 }
 
 }  // namespace

@@ -2,8 +2,9 @@
 /// @file
 /// Newton iteration shared by static and dynamic analyses (simplified: the tangent is refreshed only when
 /// convergence is slow). Converged when the force rows are small relative to the magnitude of the forces that
-/// make them up, the constraint rows are below kConstraintTolerance, and the increment computed from that
-/// residual is small (for an approximate solve, the increment alone: NewtonOptions); the increment is applied.
+/// make them up, the constraint rows are below kConstraintTolerance, and the error left after the increment
+/// computed from that residual (the increment, or less where the iteration's contraction was measured) is small
+/// (for an approximate solve, that test alone: NewtonOptions); the increment is applied.
 
 #include <functional>
 

@@ -94,14 +94,19 @@ NewtonReport SolveNewton(const Model& model, SparseSystem* system, double tol, i
     const bool increment_trusted = refresh || std::isfinite(previous_size);
     const bool residual_passes = (options.increment_test_only && increment_trusted) ||
                                  (check.force <= tol && check.constraint <= kConstraintTolerance);
-    if (residual_passes && size <= tol * reference + noise_floor) {
+    // The error left in the iterate: an iteration contracting at the rate theta leaves about
+    // theta / (1 - theta) times its last increment (Hairer and Wanner, Solving ODEs II, sec. IV.8, (8.10)); the
+    // rate is measured on increments of one factorisation, otherwise the increment itself is the bound.
+    const double contraction = size / previous_size;
+    const bool rate_measured = !refresh && std::isfinite(previous_size) && contraction < 1.0;
+    const double remaining = rate_measured ? size * contraction / (1.0 - contraction) : size;
+    const double target = tol * reference + noise_floor;
+    if (residual_passes && remaining <= target) {
       report.converged = true;
       return report;
     }
     // Refresh the tangent when the simplified iteration would need too many more iterations at its observed
-    // contraction rate (Hairer and Wanner, Solving ODEs II, sec. IV.8).
-    const double contraction = size / previous_size;
-    const double target = tol * reference + noise_floor;
+    // contraction rate (ibid.).
     refresh = contraction >= 1.0 || std::log(target / size) / std::log(contraction) > kMaxSimplifiedIterations;
     previous_size = size;
   }

@@ -24,13 +24,8 @@ std::string WriteReproducer(const CampaignOptions& options, uint64_t index, cons
                             const Verdict& verdict) {
   const std::string stem = options.out_dir + "/" + FindingName(verdict.finding) + "_" + std::to_string(options.seed) +
                            "_" + std::to_string(index);
-  WriteFile(stem + ".urdf", input.urdf);
-  WriteFile(stem + ".yaml", input.yaml);
-  const bool params = input.channel == Channel::kParamTree;
-  WriteFile(stem + ".txt", std::string(FindingName(verdict.finding)) + ": " + verdict.detail + "\nseed " +
-                               std::to_string(options.seed) + ", input " + std::to_string(index) + ", channel " +
-                               (params ? "parameter tree" : "files") + "\nreplay: fuzz_config --replay " + stem +
-                               ".urdf " + stem + ".yaml" + (params ? " --param-tree" : "") + "\n");
+  WriteInputFiles(stem, input, std::string(FindingName(verdict.finding)) + ": " + verdict.detail + "\n" +
+                                   DescribeInput(options.seed, index, input, stem));
   return stem + ".txt";
 }
 
@@ -65,6 +60,19 @@ void Count(const IsolatedResult& isolated, const Verdict& verdict, CampaignCount
 }
 
 }  // namespace
+
+std::string DescribeInput(uint64_t seed, uint64_t index, const FuzzInput& input, const std::string& stem) {
+  const bool params = input.channel == Channel::kParamTree;
+  return "seed " + std::to_string(seed) + ", input " + std::to_string(index) + ", channel " +
+         (params ? "parameter tree" : "files") + "\nreplay: fuzz_config --replay " + stem + ".urdf " + stem + ".yaml" +
+         (params ? " --param-tree" : "") + "\n";
+}
+
+void WriteInputFiles(const std::string& stem, const FuzzInput& input, const std::string& note) {
+  WriteFile(stem + ".urdf", input.urdf);
+  WriteFile(stem + ".yaml", input.yaml);
+  WriteFile(stem + ".txt", note);
+}
 
 CampaignCounts RunCampaign(const InputGenerator& generator, const CampaignOptions& options, const Progress& progress) {
   mkdir(options.out_dir.c_str(), 0755);

@@ -37,6 +37,12 @@ struct Progress {
   std::function<void(const CampaignCounts&)> report;
 };
 
+/// What a note beside an input's files says: its seed, index and channel, and how to replay it from `stem`.
+std::string DescribeInput(uint64_t seed, uint64_t index, const FuzzInput& input, const std::string& stem);
+
+/// Writes `stem`.urdf, `stem`.yaml and the note `stem`.txt; throws std::runtime_error if a write fails.
+void WriteInputFiles(const std::string& stem, const FuzzInput& input, const std::string& note);
+
 CampaignCounts RunCampaign(const InputGenerator& generator, const CampaignOptions& options,
                            const Progress& progress = {});
 
