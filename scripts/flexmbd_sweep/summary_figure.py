@@ -1,4 +1,5 @@
-"""The sweep's figure: one panel per metric against one swept parameter, one line per value of the others."""
+"""The sweep's figure: panels of metrics against one swept parameter, one line per metric and per value of the
+other parameters."""
 
 import math
 
@@ -6,6 +7,11 @@ import matplotlib
 
 matplotlib.use('Agg')
 import matplotlib.pyplot as plt  # noqa: E402 (after choosing the backend)
+
+
+def panel_metrics(item):
+    """A figure.y entry is one metric or a list of metrics that share a panel."""
+    return item if isinstance(item, list) else [item]
 
 
 def _lines(rows, x, others):
@@ -18,32 +24,38 @@ def _lines(rows, x, others):
     return lines
 
 
+def _draw_line(axis, line, x, metric, label):
+    """Finite values as a line; infinite ones (a decay not reached in the run) as open triangles at the top."""
+    xs = [row[x] for row in line]
+    ys = [math.nan if row[metric] in (None, '') else float(row[metric]) for row in line]
+    finite = [(a, b) for a, b in zip(xs, ys) if math.isfinite(b)]
+    drawn = axis.plot(*zip(*finite), 'o-', label=label) if finite else axis.plot([], [], label=label)
+    unreached = [a for a, b in zip(xs, ys) if math.isinf(b)]
+    if unreached:
+        top = max((b for _, b in finite), default=1.0) * 1.08 or 1.0
+        axis.plot(unreached, [top] * len(unreached), '^', mfc='none', ms=9, color=drawn[0].get_color(),
+                  label=f'{label}: not reached in the run')
+
+
 def draw_figure(figure, parameters, rows, path):
-    """Panels for figure['y'] against figure['x']. A metric that is not finite (a decay not reached) is drawn
-    as an open triangle at the top of its panel."""
-    x, metrics = figure['x'], figure['y']
+    x = figure['x']
     others = [name for name in parameters if name != x]
-    panels, axes = plt.subplots(len(metrics), 1, figsize=(7, 2.4 * len(metrics) + 0.6), sharex=True, squeeze=False)
-    for axis, metric in zip(axes[:, 0], metrics):
-        for label, line in _lines(rows, x, others).items():
-            xs = [row[x] for row in line]
-            ys = [float(row[metric]) if row[metric] not in (None, '') else math.nan for row in line]
-            finite = [(a, b) for a, b in zip(xs, ys) if math.isfinite(b)]
-            drawn = axis.plot(*zip(*finite), 'o-', label=label or None) if finite else axis.plot([], [])
-            top = max((b for _, b in finite), default=1.0) * 1.08 or 1.0
-            unreached = [a for a, b in zip(xs, ys) if math.isinf(b)]
-            if unreached:
-                axis.plot(unreached, [top] * len(unreached), '^', mfc='none', color=drawn[0].get_color(),
-                          label='not reached in the run' if not others else None)
-        axis.set_ylabel(metric)
+    lines = _lines(rows, x, others)
+    items = figure['y']
+    panels, axes = plt.subplots(len(items), 1, figsize=(7, 2.2 * len(items) + 0.8), sharex=True, squeeze=False)
+    for axis, item in zip(axes[:, 0], items):
+        metrics = panel_metrics(item)
+        for metric in metrics:
+            for others_label, line in lines.items():
+                _draw_line(axis, line, x, metric, ', '.join(filter(None, [metric, others_label])))
+        axis.set_ylabel(metrics[0] if len(metrics) == 1 else 'value')
         axis.grid(True, alpha=0.3)
-        if axis.get_legend_handles_labels()[0]:
-            axis.legend(fontsize='small')
+        axis.legend(fontsize='x-small')
     if figure.get('log_x'):
         axes[-1, 0].set_xscale('log')
     axes[-1, 0].set_xlabel(x)
     if figure.get('title'):
-        panels.suptitle(figure['title'])
+        panels.suptitle(figure['title'], fontsize='medium')
     panels.tight_layout()
     panels.savefig(path, dpi=110)
     plt.close(panels)

@@ -6,6 +6,7 @@ from dataclasses import dataclass, field
 from .csv_metrics import METRIC_KINDS
 from .errors import SweepError
 from .runner_statistics import RUNNER_METRICS
+from .summary_figure import panel_metrics
 from .yaml_io import load_yaml
 
 TOP_LEVEL_KEYS = ('base', 'set', 'grid', 'zip', 'metrics', 'figure', 'output')
@@ -141,9 +142,10 @@ def _figure(fields, parameters, metric_names):
     if x not in names:
         figure.fail('x', f'{x!r} is not a swept parameter ({", ".join(names)})')
     y = figure.get('y', list, required=True)
-    for k, name in enumerate(y):
-        if name not in metric_names:
-            figure.fail(f'y[{k}]', f'{name!r} is not a metric of this sweep ({", ".join(metric_names)})')
+    for k, item in enumerate(y):
+        for name in panel_metrics(item):
+            if name not in metric_names:
+                figure.fail(f'y[{k}]', f'{name!r} is not a metric of this sweep ({", ".join(metric_names)})')
     figure.get('log_x', bool)
     figure.get('title', str)
     return figure.mapping
