@@ -67,8 +67,8 @@ class SlurmCluster:
         self.env = dict(os.environ, SLURM_CONF=self.conf)
 
     def _start(self, name, command):
-        log = open(os.path.join(self.directory, 'log', f'{name}.out'), 'w', encoding='utf-8')
-        self.processes.append(subprocess.Popen(command, stdout=log, stderr=subprocess.STDOUT, env=self.env))
+        with open(os.path.join(self.directory, 'log', f'{name}.out'), 'w', encoding='utf-8') as log:
+            self.processes.append(subprocess.Popen(command, stdout=log, stderr=subprocess.STDOUT, env=self.env))
 
     def log_tail(self):
         """The daemons' output, for a failure message."""

@@ -4,6 +4,7 @@ reports for bad sweep files, and a failed run as a failed row."""
 
 import math
 import os
+import shutil
 import tempfile
 import unittest
 
@@ -22,6 +23,7 @@ PEAK_TOLERANCE_DEG = 1e-6
 class SweepLocal(unittest.TestCase):
     def setUp(self):
         self.directory = tempfile.mkdtemp(prefix='sweep_local_')
+        self.addCleanup(shutil.rmtree, self.directory, ignore_errors=True)
         self.out_dir = os.path.join(self.directory, 'out')
 
     def sweep_file(self, **changes):

@@ -3,6 +3,7 @@
 sweep as a job array and with local jobs gives the same summary (sweep_slurm.test)."""
 
 import os
+import shutil
 import tempfile
 import unittest
 
@@ -25,6 +26,8 @@ class SweepSlurm(unittest.TestCase):
     @classmethod
     def tearDownClass(cls):
         cls.cluster.stop()
+        shutil.rmtree(cls.cluster.directory, ignore_errors=True)
+        shutil.rmtree(cls.directory, ignore_errors=True)
 
     def test_job_array_gives_the_summary_of_local_jobs(self):
         sweep = write_sweep(self.directory, 'sweep.yaml', pendulum_sweep())
