@@ -67,21 +67,40 @@ class DecayTime(_Kind):
         return math.inf if last_above > t[-1] - self.option(entry, 'hold') else float(last_above)
 
 
+def sticking_intervals(t, sticking):
+    """(start, end) of each run of sticking samples; a run lasts until the next sample (or the last one)."""
+    flags = np.concatenate(([0], (sticking > 0.5).astype(int), [0]))
+    starts, ends = np.nonzero(np.diff(flags) == 1)[0], np.nonzero(np.diff(flags) == -1)[0]
+    return [(t[a], t[min(b, len(t) - 1)]) for a, b in zip(starts, ends)]
+
+
 class StickingTime(_Kind):
-    """Total time in which a 0/1 column (friction.<joint>.sticking) is 1: each sticking sample counts until the
-    next sample."""
+    """Total time in which a 0/1 column (friction.<joint>.sticking) is 1."""
 
     def compute(self, t, x, entry):
-        sticking = x[0][:-1] > 0.5
-        return float(np.sum(np.diff(t)[sticking]))
+        return float(sum(end - start for start, end in sticking_intervals(t, x[0])))
 
 
 class StickingIntervals(_Kind):
     """Number of intervals in which a 0/1 column is 1, as the samples see them."""
 
     def compute(self, t, x, entry):
-        sticking = (x[0] > 0.5).astype(int)
-        return int(sticking[0] + np.count_nonzero(np.diff(sticking) == 1))
+        return len(sticking_intervals(t, x[0]))
+
+
+class LongestSticking(_Kind):
+    """Duration of the longest sticking interval of a 0/1 column."""
+
+    def compute(self, t, x, entry):
+        return max((end - start for start, end in sticking_intervals(t, x[0])), default=0.0)
+
+
+class LongestStickingStart(_Kind):
+    """Start time of the longest sticking interval of a 0/1 column (nan if it never sticks)."""
+
+    def compute(self, t, x, entry):
+        intervals = sticking_intervals(t, x[0])
+        return float(max(intervals, key=lambda i: i[1] - i[0])[0]) if intervals else math.nan
 
 
 METRIC_KINDS = {
@@ -90,6 +109,8 @@ METRIC_KINDS = {
     'decay_time': DecayTime(),
     'sticking_time': StickingTime(),
     'sticking_intervals': StickingIntervals(),
+    'longest_sticking': LongestSticking(),
+    'longest_sticking_start': LongestStickingStart(),
 }
 
 

@@ -9,7 +9,7 @@ from .run_case import RESULT_FILE
 STATUS_COLUMNS = ('status', 'exit_code')
 
 
-def _result(plan, case):
+def _result(case):
     path = os.path.join(case['dir'], RESULT_FILE)
     try:
         with open(path, encoding='utf-8') as stream:
@@ -23,7 +23,7 @@ def collect_rows(plan):
     """One row per planned case: its parameters, status, runner statistics and metrics, and message."""
     rows = []
     for case in plan['cases']:
-        result = _result(plan, case)
+        result = _result(case)
         row = {'case': case['index'], **case['parameters']}
         row.update({key: result[key] for key in STATUS_COLUMNS})
         row.update(result['metrics'])

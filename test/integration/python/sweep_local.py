@@ -104,14 +104,16 @@ class SweepLocal(unittest.TestCase):
         metric['decay']['columns'] = ['a']
         self.assertEqual(self.metrics_of(still_moving, metric)['decay'], math.inf)
 
-    def test_sticking_time_and_intervals_count_the_sticking_samples(self):
+    def test_sticking_metrics_count_the_sticking_samples(self):
         t = np.round(np.arange(0.0, 10.005, 0.01), 6)
-        sticking = ((t >= 1.0) & (t < 3.0) | (t >= 5.0) & (t < 6.0)).astype(float)
-        metrics = {'time': {'kind': 'sticking_time', 'column': 's'},
-                   'intervals': {'kind': 'sticking_intervals', 'column': 's'}}
+        sticking = ((t >= 1.0) & (t < 3.0) | (t >= 5.0) & (t < 6.0) | (t >= 9.5)).astype(float)
+        metrics = {name: {'kind': name, 'column': 's'}
+                   for name in ('sticking_time', 'sticking_intervals', 'longest_sticking', 'longest_sticking_start')}
         values = self.metrics_of({'t': t, 's': sticking}, metrics)
-        self.assertAlmostEqual(values['time'], 3.0, places=9)
-        self.assertEqual(values['intervals'], 2)
+        self.assertAlmostEqual(values['sticking_time'], 3.5, places=9)  # the last interval ends with the run
+        self.assertEqual(values['sticking_intervals'], 3)
+        self.assertAlmostEqual(values['longest_sticking'], 2.0, places=9)
+        self.assertAlmostEqual(values['longest_sticking_start'], 1.0, places=9)
 
 
 if __name__ == '__main__':
