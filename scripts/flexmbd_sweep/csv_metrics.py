@@ -1,4 +1,4 @@
-"""Case metrics computed from a run's CSV output (columns as docs/config.md, "CSV columns", names them).
+"""Case metrics computed from a run's CSV output (its columns: docs/config.md, "output", and csv_sink.hpp).
 
 Each kind checks its entry of the sweep file (metrics.csv.<name>) and computes one number from the samples.
 Times are sample-based: a sticking time is resolved to one output sample period (output.rate_hz).
