@@ -19,8 +19,10 @@ class _Kind:
         entry.check_keys(self.keys + tuple(self.numbers))
         if 'column' in self.keys:
             entry.get('column', str, required=True)
-        if 'columns' in self.keys and not entry.get('columns', list, required=True):
-            entry.fail('columns', 'expected a non-empty list of CSV columns')
+        if 'columns' in self.keys:
+            columns = entry.get('columns', list, required=True)
+            if not columns or not all(isinstance(c, str) for c in columns):
+                entry.fail('columns', 'expected a non-empty list of CSV column names')
         for key in self.numbers:
             value = entry.get(key, (int, float))
             if key != 'scale' and value is not None and value <= 0:
