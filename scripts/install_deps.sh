@@ -25,6 +25,8 @@ PACKAGES=(
   libgtest-dev libbenchmark-dev
   # plotting
   python3-matplotlib python3-numpy
+  # parameter sweeps as Slurm job arrays (scripts/sweep.py --slurm), and the single-node Slurm of its test
+  slurm-client slurmctld slurmd munge
   # toolchain
   cmake g++ make
 )

@@ -1,6 +1,7 @@
 // Command-line runner: runs a case without roscore.
-//   flexmbd_run --urdf F --config F [--csv F] [--bag F]
+//   flexmbd_run --urdf F --config F [--csv F] [--bag F] [--check]
 // --csv and --bag override output.csv and output.bag; the bag is the one the node writes (docs/ros.md).
+// --check loads and builds the model and exits without running it (scripts/sweep.py checks every case first).
 // Exit status (flexmbd/common/exit_status.hpp): 0 success, 1 usage error, 2 bad input (ConfigError), 3 the run
 // failed (SolverError, or an output file that cannot be written), 4 an unexpected error (a bug); every failure
 // prints one line on stderr.
@@ -26,15 +27,20 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-constexpr char kUsage[] = "usage: flexmbd_run --urdf FILE --config FILE [--csv FILE] [--bag FILE]\n";
+constexpr char kUsage[] = "usage: flexmbd_run --urdf FILE --config FILE [--csv FILE] [--bag FILE] [--check]\n";
 
 struct Arguments {
   std::string urdf, config, csv, bag;
+  bool check_only = false;
 };
 
 bool Parse(int argc, char** argv, Arguments* args) {
   for (int k = 1; k < argc; ++k) {
     const std::string flag = argv[k];
+    if (flag == "--check") {
+      args->check_only = true;
+      continue;
+    }
     if (k + 1 >= argc) return false;
     const std::string value = argv[++k];
     if (flag == "--urdf") args->urdf = value;
@@ -117,6 +123,10 @@ int main(int argc, char** argv) {
     if (!args.csv.empty()) spec.output.csv = args.csv;
     if (!args.bag.empty()) spec.output.bag = args.bag;
     const flexmbd::Model model = flexmbd::BuildModel(spec);
+    if (args.check_only) {
+      std::printf("flexmbd_run: %s and %s are valid\n", args.urdf.c_str(), args.config.c_str());
+      return flexmbd::kExitSuccess;
+    }
     if (model.solver().analysis == flexmbd::SolverSpec::Analysis::kEigen) {
       try {
         RunEigen(model);

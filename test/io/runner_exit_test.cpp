@@ -170,4 +170,21 @@ TEST(RunnerExit, CsvOnADiskFillingUpMidRunExitsWithThreeKeepingWholeRows) {
   flexmbd::test::ExpectWholeRowsAsClaimed(csv, out.stderr_text);
 }
 
+TEST(RunnerExit, CheckLoadsTheCaseAndExitsZeroWithoutRunning) {
+  const std::string csv = testing::TempDir() + "check_only.csv";
+  std::remove(csv.c_str());
+  const RunOutcome out =
+      RunRunner("--urdf " + Data("urdf/pendulum.urdf") + " --config " + Data("yaml/pendulum.yaml") + " --csv " + csv +
+                " --check");
+  EXPECT_EQ(out.exit_status, 0) << out.stderr_text;
+  EXPECT_FALSE(std::ifstream(csv).good()) << "--check ran the case and wrote " << csv;
+}
+
+TEST(RunnerExit, CheckOfBadInputExitsWithTwoAndNamesField) {
+  const std::string yaml = WriteFile("check_negative_k.yaml", "joints:\n  B1:\n    spring: {k: -3.0}\n");
+  const RunOutcome out = RunRunner("--check --urdf " + Data("urdf/pendulum.urdf") + " --config " + yaml);
+  EXPECT_EQ(out.exit_status, kBadInputExit);
+  EXPECT_NE(out.stderr_text.find("joints.B1.spring.k"), std::string::npos) << out.stderr_text;
+}
+
 }  // namespace
