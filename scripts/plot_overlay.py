@@ -1,0 +1,44 @@
+"""Helpers of the figures that overlay several runs of one case read from their bags (plot_bag.read_columns):
+named columns, intervals where a 0/1 flag column is set (sticking, contact), drawn as bars, and saving."""
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402 (after the backend)
+
+import plot_bag  # noqa: E402: the bag reader beside this file
+
+
+def column(run, name, case):
+    """The column `name` of a run (header, columns); `case` names the config folder in the error."""
+    header, columns = run
+    if name not in header:
+        raise plot_bag.BagError("no column %s: not a bag of config/%s/" % (name, case))
+    return columns[header.index(name)]
+
+
+def flag_intervals(time, flags):
+    """(start, end) of each run of samples with the flag set."""
+    intervals, start = [], None
+    for t, flag in zip(time, flags):
+        if flag > 0.5 and start is None:
+            start = t
+        elif flag <= 0.5 and start is not None:
+            intervals.append((start, t))
+            start = None
+    if start is not None:
+        intervals.append((start, time[-1]))
+    return intervals
+
+
+def draw_interval_bars(ax, intervals, row, color):
+    """Bars along the bottom of the axes, one row per run (row 0 lowest)."""
+    for start, end in intervals:
+        ax.axvspan(start, end, ymin=0.02 + 0.05 * row, ymax=0.06 + 0.05 * row, color=color)
+
+
+def save(figure, path, dpi=110):
+    figure.tight_layout()
+    figure.savefig(path, dpi=dpi)
+    plt.close(figure)
+    print(path)
