@@ -11,9 +11,7 @@ Bags from flexmbd_run --bag or the node (~bag) of config/antenna_published/case{
 are the YAMLs' output.beam_stations (mid-span). Needs python3-rosbag and python3-matplotlib (no roscore).
 """
 
-import argparse
 import math
-import os
 import sys
 
 import plot_overlay  # helpers for figures of several runs overlaid; selects the Agg backend before pyplot loads
@@ -92,14 +90,10 @@ def plot_work(runs, path):
 
 
 def main(argv):
-    parser = argparse.ArgumentParser(description="Plot the published antenna's three cases overlaid.")
-    parser.add_argument("bags", nargs=3, metavar="CASE_BAG", help="bags of case 0, case 1 and case 2, in order")
-    parser.add_argument("--out-dir", "-o", default=".", help="folder for the PNG files (default: .)")
-    args = parser.parse_args(argv[1:])
+    args = plot_overlay.parse_args(argv, "Plot the published antenna's three cases overlaid.", 3, "CASE_BAG",
+                                   "bags of case 0, case 1 and case 2, in order")
     try:
-        runs = [plot_bag.read_columns(bag) for bag in args.bags]
-        os.makedirs(args.out_dir, exist_ok=True)
-        stem = os.path.join(args.out_dir, "antenna_published_")
+        runs, stem = plot_overlay.open_runs(args, "antenna_published_")
         plot_rotations(runs, stem + "rotations.png")
         plot_friction(runs, stem + "friction.png")
         plot_moments(runs, stem + "moments.png")

@@ -13,7 +13,6 @@ Bags from flexmbd_run --bag or the node (~bag) of config/blade_drop/release_{9.7
 are x/L = 0.40 (s0) and the tip (s1). Needs python3-rosbag and python3-matplotlib (no roscore).
 """
 
-import argparse
 import math
 import os
 import sys
@@ -69,15 +68,11 @@ def plot_overlaid(runs, ylabel, values, title, path):
 
 
 def main(argv):
-    parser = argparse.ArgumentParser(description="Plot the blade drop test, both release angles overlaid.")
-    parser.add_argument("bags", nargs=2, metavar="BAG", help="bags of the 9.7 deg and the 5.2 deg release, in order")
-    parser.add_argument("--out-dir", "-o", default=".", help="folder for the PNG files (default: .)")
-    args = parser.parse_args(argv[1:])
+    args = plot_overlay.parse_args(argv, "Plot the blade drop test, both release angles overlaid.", 2, "BAG",
+                                   "bags of the 9.7 deg and the 5.2 deg release, in order")
     try:
-        runs = [plot_bag.read_columns(bag) for bag in args.bags]
+        runs, stem = plot_overlay.open_runs(args, "blade_drop_")
         length = blade_length()
-        os.makedirs(args.out_dir, exist_ok=True)
-        stem = os.path.join(args.out_dir, "blade_drop_")
         plot_overlaid(runs, "tip deflection / L", lambda run: tip_deflection_over_length(run, length),
                       "Tip deflection over blade length (below the root section's line); bars: on the droop stop",
                       stem + "tip.png")

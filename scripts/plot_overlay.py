@@ -1,12 +1,31 @@
 """Helpers of the figures that overlay several runs of one case read from their bags (plot_bag.read_columns):
 named columns, intervals where a 0/1 flag column is set (sticking, contact), drawn as bars, and saving."""
 
+import argparse
+import os
+
 import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402 (after the backend)
 
 import plot_bag  # noqa: E402: the bag reader beside this file
+
+
+def parse_args(argv, description, count, metavar, bags_help):
+    """The command line of an overlay script: `count` bags in order, and --out-dir."""
+    parser = argparse.ArgumentParser(description=description)
+    parser.add_argument("bags", nargs=count, metavar=metavar, help=bags_help)
+    parser.add_argument("--out-dir", "-o", default=".", help="folder for the PNG files (default: .)")
+    return parser.parse_args(argv[1:])
+
+
+def open_runs(args, prefix):
+    """The runs read from the bags of the command line, and the stem <out-dir>/<prefix> of the PNG files (the
+    folder made if missing)."""
+    runs = [plot_bag.read_columns(bag) for bag in args.bags]
+    os.makedirs(args.out_dir, exist_ok=True)
+    return runs, os.path.join(args.out_dir, prefix)
 
 
 def column(run, name, case):

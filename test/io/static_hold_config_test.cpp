@@ -9,8 +9,7 @@
 namespace flexmbd {
 namespace {
 
-const std::string kHingeUrdf = test::WorldUrdf({"link"}, R"(
-  <joint name="hinge" type="continuous"><parent link="world"/><child link="link"/><axis xyz="0 1 0"/></joint>)");
+const std::string kHingeUrdf = test::HingeUrdf("0 1 0");
 
 TEST(StaticHoldConfig, ReadWithTheInitialPosition) {
   const ModelSpec spec = test::LoadInline(

@@ -66,6 +66,16 @@ size_t FirstContact(const test::Trace& run) {
   return k;
 }
 
+// One release: its blade, its run and the index of the sample that first shows the blade on the stop.
+struct Drop {
+  explicit Drop(const std::string& angle_deg)
+      : blade(Release(angle_deg)), run(RunOf(angle_deg)), impact(FirstContact(run)) {}
+  bool struck() const { return impact < run.samples.size(); }
+  Blade blade;
+  const test::Trace& run;
+  size_t impact;
+};
+
 TEST(BladeDrop, ReleasedFromTheGravityBentCantileverShape) {
   for (const char* angle : kReleases) {
     const ModelSpec spec = Release(angle);
@@ -93,15 +103,14 @@ TEST(BladeDrop, ReleasedFromTheGravityBentCantileverShape) {
 // the linear modal solution of the released cantilever (test::ReleasedCantilever).
 TEST(BladeDrop, StrainReversesDuringTheFallAsTheReleasedCantilevers) {
   for (const char* angle : kReleases) {
-    const ModelSpec spec = Release(angle);
-    const Blade blade(spec);
-    const test::Trace& run = RunOf(angle);
-    const size_t impact = FirstContact(run);
-    ASSERT_LT(impact, run.samples.size()) << angle << ": no impact";
+    const Drop drop(angle);
+    ASSERT_TRUE(drop.struck()) << angle << ": no impact";
+    const Blade& blade = drop.blade;
+    const test::Trace& run = drop.run;
     EXPECT_LT(test::FallingBarMoment(blade.weight, blade.length, blade.x(), blade.release), 0.0);
     size_t reversal = 1;
-    while (reversal < impact && Curvature(run.samples[reversal]) > 0.0) ++reversal;
-    ASSERT_LT(reversal, impact) << angle << ": no reversal before the impact";
+    while (reversal < drop.impact && Curvature(run.samples[reversal]) > 0.0) ++reversal;
+    ASSERT_LT(reversal, drop.impact) << angle << ": no reversal before the impact";
     const double t_reversal = run.samples[reversal].t;
     const double w = blade.weight * std::cos(blade.release);
     const test::ReleasedCantilever modal(w, blade.mass, blade.bending, blade.damping, blade.length, kModes);
@@ -120,17 +129,16 @@ TEST(BladeDrop, StrainReversesDuringTheFallAsTheReleasedCantilevers) {
 // 2 w L^3 / (8 EI) / sqrt(3 g sin(theta0) / L).
 TEST(BladeDrop, StopReachedWhenTheRigidBladeWouldReachIt) {
   for (const char* angle : kReleases) {
-    const ModelSpec spec = Release(angle);
-    const Blade blade(spec);
-    const test::Trace& run = RunOf(angle);
-    const size_t impact = FirstContact(run);
-    ASSERT_LT(impact, run.samples.size()) << angle << ": no impact";
+    const Drop drop(angle);
+    ASSERT_TRUE(drop.struck()) << angle << ": no impact";
+    const Blade& blade = drop.blade;
+    const test::Trace& run = drop.run;
     const double rigid = test::RigidFallTime(blade.g, blade.length, blade.release);
     const double swing = blade.weight * std::pow(blade.length, 3) / (4.0 * blade.bending);
     const double shift = swing / std::sqrt(3.0 * blade.g * std::sin(blade.release) / blade.length);
-    RecordProperty(std::string("impact_s_") + angle, test::Figure(run.samples[impact].t));
+    RecordProperty(std::string("impact_s_") + angle, test::Figure(run.samples[drop.impact].t));
     RecordProperty(std::string("rigid_impact_s_") + angle, test::Figure(rigid));
-    EXPECT_NEAR(run.samples[impact].t, rigid, shift) << angle;
+    EXPECT_NEAR(run.samples[drop.impact].t, rigid, shift) << angle;
   }
 }
 
@@ -159,11 +167,11 @@ TEST(BladeDrop, EnergyBooksBalance) {
 // curvature, then springs back past straight.
 TEST(BladeDrop, FlexesBeyondItsStaticCurvatureAndBackAfterTheImpact) {
   for (const char* angle : kReleases) {
-    const test::Trace& run = RunOf(angle);
-    const size_t impact = FirstContact(run);
-    ASSERT_LT(impact, run.samples.size()) << angle << ": no impact";
+    const Drop drop(angle);
+    ASSERT_TRUE(drop.struck()) << angle << ": no impact";
+    const test::Trace& run = drop.run;
     double largest = 0, smallest = 0;
-    for (size_t k = impact; k < run.samples.size(); ++k) {
+    for (size_t k = drop.impact; k < run.samples.size(); ++k) {
       largest = std::max(largest, Curvature(run.samples[k]));
       smallest = std::min(smallest, Curvature(run.samples[k]));
     }
