@@ -81,12 +81,7 @@ def plot_work(runs, path):
                         linewidth=1.0)
         ax.plot(time, column(run, "energy.dissipated"), linestyle="--", color=line.get_color(),
                 label=label + ": dissipated by dampers or friction", linewidth=1.0)
-    ax.set_title("Cumulative work of the drive and of the joint forces")
-    ax.set_xlabel("time [s]")
-    ax.set_ylabel("energy [J]")
-    ax.grid(True, alpha=0.3)
-    ax.legend(loc="best", fontsize="small")
-    plot_overlay.save(figure, path)
+    plot_overlay.finish(figure, ax, "Cumulative work of the drive and of the joint forces", "energy [J]", path, "best")
 
 
 def main(argv):

@@ -59,12 +59,7 @@ def plot_overlaid(runs, ylabel, values, title, path):
         plot_overlay.draw_interval_bars(ax, plot_overlay.flag_intervals(time, column(run, CONTACT)), row,
                                         line.get_color())
     ax.axhline(0.0, color="black", linewidth=0.5)
-    ax.set_title(title)
-    ax.set_xlabel("time [s]")
-    ax.set_ylabel(ylabel)
-    ax.grid(True, alpha=0.3)
-    ax.legend(loc="upper right", fontsize="small")
-    plot_overlay.save(figure, path)
+    plot_overlay.finish(figure, ax, title, ylabel, path, "upper right")
 
 
 def main(argv):

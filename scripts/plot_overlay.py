@@ -56,6 +56,16 @@ def draw_interval_bars(ax, intervals, row, color):
         ax.axvspan(start, end, ymin=0.02 + 0.05 * row, ymax=0.06 + 0.05 * row, color=color)
 
 
+def finish(figure, ax, title, ylabel, path, legend_loc):
+    """Titles, labels, grid and legend of a figure of one axes over time, then saves it."""
+    ax.set_title(title)
+    ax.set_xlabel("time [s]")
+    ax.set_ylabel(ylabel)
+    ax.grid(True, alpha=0.3)
+    ax.legend(loc=legend_loc, fontsize="small")
+    save(figure, path)
+
+
 def save(figure, path, dpi=110):
     figure.tight_layout()
     figure.savefig(path, dpi=dpi)
