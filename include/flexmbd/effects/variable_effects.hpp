@@ -63,6 +63,7 @@ class VariableDrive : public Element {
   TimeFunctionSpec law_;
 };
 
+/// Holds the variable at its initial position in a static analysis only (`initial.static_hold`).
 class VariableHold : public Element {
  public:
   VariableHold(int variable, int variable_unknown, int multiplier, int multiplier_unknown, double position);
