@@ -11,14 +11,10 @@ Bags from flexmbd_run --bag or the node (~bag) of config/antenna_published/case{
 are the YAMLs' output.beam_stations (mid-span). Needs python3-rosbag and python3-matplotlib (no roscore).
 """
 
-import argparse
 import math
-import os
 import sys
 
-import matplotlib
-
-matplotlib.use("Agg")
+import plot_overlay  # helpers for figures of several runs overlaid; selects the Agg backend before pyplot loads
 import matplotlib.pyplot as plt  # noqa: E402 (after the backend)
 
 import plot_bag  # noqa: E402: the bag reader beside this file, columns named as in the runner's CSV
@@ -32,31 +28,7 @@ CASE_LABELS = ("case 0 (dampers)", "case 1 (friction)", "case 2 (preloads double
 
 
 def column(run, name):
-    header, columns = run
-    if name not in header:
-        raise plot_bag.BagError("no column %s: not a bag of config/antenna_published/" % name)
-    return columns[header.index(name)]
-
-
-def sticking_intervals(time, sticking):
-    """(start, end) of each run of samples with the sticking flag set."""
-    intervals, start = [], None
-    for t, flag in zip(time, sticking):
-        if flag > 0.5 and start is None:
-            start = t
-        elif flag <= 0.5 and start is not None:
-            intervals.append((start, t))
-            start = None
-    if start is not None:
-        intervals.append((start, time[-1]))
-    return intervals
-
-
-def save(figure, path):
-    figure.tight_layout()
-    figure.savefig(path, dpi=110)
-    plt.close(figure)
-    print(path)
+    return plot_overlay.column(run, name, "antenna_published")
 
 
 def plot_stacked(runs, rows, title, path):
@@ -70,7 +42,7 @@ def plot_stacked(runs, rows, title, path):
     axes[0].set_title(title)
     axes[0].legend(loc="upper right", fontsize="small")
     axes[-1].set_xlabel("time [s]")
-    save(figure, path)
+    plot_overlay.save(figure, path)
 
 
 def plot_rotations(runs, path):
@@ -86,14 +58,14 @@ def plot_friction(runs, path):
             time = column(run, "t")
             line, = ax.plot(time, column(run, "friction.%s.torque" % joint), label=label, linewidth=0.8)
             # one row of bars per case along the bottom of the axes
-            for start, end in sticking_intervals(time, column(run, "friction.%s.sticking" % joint)):
-                ax.axvspan(start, end, ymin=0.02 + 0.05 * k, ymax=0.06 + 0.05 * k, color=line.get_color())
+            sticking = plot_overlay.flag_intervals(time, column(run, "friction.%s.sticking" % joint))
+            plot_overlay.draw_interval_bars(ax, sticking, k, line.get_color())
         ax.set_ylabel("%s friction torque [N m]" % joint)
         ax.grid(True, alpha=0.3)
     axes[0].set_title("Friction torques; bars: sticking intervals (lower row case 1, upper row case 2)")
     axes[0].legend(loc="upper right", fontsize="small")
     axes[-1].set_xlabel("time [s]")
-    save(figure, path)
+    plot_overlay.save(figure, path)
 
 
 def plot_moments(runs, path):
@@ -109,23 +81,14 @@ def plot_work(runs, path):
                         linewidth=1.0)
         ax.plot(time, column(run, "energy.dissipated"), linestyle="--", color=line.get_color(),
                 label=label + ": dissipated by dampers or friction", linewidth=1.0)
-    ax.set_title("Cumulative work of the drive and of the joint forces")
-    ax.set_xlabel("time [s]")
-    ax.set_ylabel("energy [J]")
-    ax.grid(True, alpha=0.3)
-    ax.legend(loc="best", fontsize="small")
-    save(figure, path)
+    plot_overlay.finish(figure, ax, "Cumulative work of the drive and of the joint forces", "energy [J]", path, "best")
 
 
 def main(argv):
-    parser = argparse.ArgumentParser(description="Plot the published antenna's three cases overlaid.")
-    parser.add_argument("bags", nargs=3, metavar="CASE_BAG", help="bags of case 0, case 1 and case 2, in order")
-    parser.add_argument("--out-dir", "-o", default=".", help="folder for the PNG files (default: .)")
-    args = parser.parse_args(argv[1:])
+    args = plot_overlay.parse_args(argv, "Plot the published antenna's three cases overlaid.", 3, "CASE_BAG",
+                                   "bags of case 0, case 1 and case 2, in order")
     try:
-        runs = [plot_bag.read_columns(bag) for bag in args.bags]
-        os.makedirs(args.out_dir, exist_ok=True)
-        stem = os.path.join(args.out_dir, "antenna_published_")
+        runs, stem = plot_overlay.open_runs(args, "antenna_published_")
         plot_rotations(runs, stem + "rotations.png")
         plot_friction(runs, stem + "friction.png")
         plot_moments(runs, stem + "moments.png")

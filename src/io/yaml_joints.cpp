@@ -146,7 +146,8 @@ void CheckOnDrive(const Field& initial, const std::string& what, double given, d
 }
 
 void ReadInitial(const Field& initial, const Field& drive, const VariableUnits& units, int variable, JointSpec* joint) {
-  CheckKeys(initial, {"position", "position_deg", "velocity", "velocity_deg"});
+  CheckKeys(initial, {"position", "position_deg", "velocity", "velocity_deg", "static_hold"});
+  OverlayBool(initial, "static_hold", &joint->effects[variable].static_hold);
   double& position = joint->initial_position[variable];
   double& velocity = joint->initial_velocity[variable];
   const std::string rate_unit = units.position + "/s";

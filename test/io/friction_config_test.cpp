@@ -8,8 +8,7 @@
 namespace flexmbd {
 namespace {
 
-const std::string kHingeUrdf = test::WorldUrdf({"link"}, R"(
-  <joint name="hinge" type="continuous"><parent link="world"/><child link="link"/><axis xyz="0 0 1"/></joint>)");
+const std::string kHingeUrdf = test::HingeUrdf("0 0 1");
 
 TEST(FrictionConfig, CoulombBlockRead) {
   const ModelSpec spec = test::LoadInline(

@@ -44,6 +44,12 @@ inline std::string WorldUrdf(const std::vector<std::string>& links, const std::s
   return urdf + joints + "</robot>";
 }
 
+/// WorldUrdf with one link, "link", on a continuous joint "hinge" from the world about `axis` ("0 0 1").
+inline std::string HingeUrdf(const std::string& axis) {
+  return WorldUrdf({"link"}, "<joint name=\"hinge\" type=\"continuous\"><parent link=\"world\"/>"
+                             "<child link=\"link\"/><axis xyz=\"" + axis + "\"/></joint>");
+}
+
 /// The message of the ConfigError that `load` throws, or a note that it threw none.
 inline std::string ConfigErrorOf(const std::function<void()>& load) {
   try {

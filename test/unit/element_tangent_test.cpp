@@ -173,6 +173,18 @@ TEST(ElementTangent, VariableEffectsStaticMatchFiniteDifference) {
   ExpectStaticTangents<VariableDrive>(model, 211);
 }
 
+TEST(ElementTangent, StaticHoldMatchesFiniteDifference) {
+  // Reference: central differences of (lambda, q - q0) in statics and of (0, lambda) in time steps. The hold
+  // replaces WorldRevoluteModel's drive (both on one variable are refused) and needs a static analysis.
+  ModelSpec spec = test::WorldRevoluteModel();
+  spec.joints[0].effects[0].drives.clear();
+  spec.joints[0].effects[0].static_hold = true;
+  spec.solver.static_first = true;
+  const Model model = BuildModel(spec);
+  ExpectStaticTangents<VariableHold>(model, 212);
+  ExpectDynamicTangents<VariableHold>(model, 213);
+}
+
 // The hinge of WorldRevoluteModel with one lower stop at 0.25 rad (its initial angle is 0.3 rad).
 constexpr double kStopAngle = 0.25;
 Model ModelWithStop(StopSpec stop) {

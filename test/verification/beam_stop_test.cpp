@@ -10,6 +10,7 @@
 
 #include "beam_cases.hpp"
 #include "case_builders.hpp"
+#include "closed_forms.hpp"
 #include "flexmbd/solver/simulation.hpp"
 
 namespace flexmbd {
@@ -62,21 +63,6 @@ std::vector<Record> Drop(double* root_station) {
   return records;
 }
 
-// Bending moment at station s of a hinged uniform bar of mass per length m turning rigidly under gravity from
-// the horizontal, at angle theta: transverse load m g cos(theta) (1 - 3 sigma / (2 L)) (gravity less the
-// inertia of the angular acceleration 3 g cos(theta) / (2 L)), moment int_s^L load (sigma - s) dsigma.
-double FallingBarMoment(double s, double theta) {
-  const double l = kLength;
-  const double shear_arm = 0.5 * (l - s) * (l - s);
-  const double inertia_arm = 1.5 / l * ((l * l * l - s * s * s) / 3.0 - s * (l * l - s * s) / 2.0);
-  return kMassPerLength * kG * std::cos(theta) * (shear_arm - inertia_arm);
-}
-
-// Bending moment at station s of the same bar at rest on the stop: a cantilever under its weight.
-double CantileverMoment(double s, double theta) {
-  return 0.5 * kMassPerLength * kG * std::cos(theta) * (kLength - s) * (kLength - s);
-}
-
 TEST(BeamOnDroopStop, EnergyNeverExceedsItsInitialValue) {
   double station = 0;
   const std::vector<Record> records = Drop(&station);
@@ -98,8 +84,8 @@ TEST(BeamOnDroopStop, RootCurvatureChangesSignAtTheImpact) {
   ASSERT_LT(impact, records.size()) << "no impact";
   // The closed forms give opposite signs at the root station: a freely falling hinged bar sags against the
   // inertia of its tip, a cantilever hogs.
-  const double falling = FallingBarMoment(station, 0.0) / kBending;
-  const double held = CantileverMoment(station, kDroopAngle) / kBending;
+  const double falling = test::FallingBarMoment(kMassPerLength * kG, kLength, station, 0.0) / kBending;
+  const double held = test::CantileverMoment(kMassPerLength * kG, kLength, station, kDroopAngle) / kBending;
   ASSERT_LT(falling * held, 0.0);
   // Released straight, the beam vibrates about the quasi-static curvature of the falling bar: averaged over
   // the fall it is that curvature, short of the vibration's unfinished cycle, at most 1 / (w1 t_fall) = 0.062 of

@@ -2,6 +2,7 @@
 // Closed forms the verification tests compare with.
 
 #include <cmath>
+#include <vector>
 
 namespace flexmbd {
 namespace test {
@@ -17,6 +18,100 @@ inline double EllipticK(double k) {
   }
   return M_PI / (2.0 * a);
 }
+
+// Bending moment at station s of a uniform bar of length l and weight per length w, hinged at s = 0 and turning
+// rigidly under gravity at angle theta from the horizontal: the transverse load w cos(theta) (1 - 3 sigma / (2 l))
+// (gravity less the inertia of the angular acceleration 3 g cos(theta) / (2 l)) times the arm sigma - s,
+// integrated from s to l. Positive when it bends the bar as its weight bends a cantilever.
+inline double FallingBarMoment(double w, double l, double s, double theta) {
+  const double shear_arm = 0.5 * (l - s) * (l - s);
+  const double inertia_arm = 1.5 / l * ((l * l * l - s * s * s) / 3.0 - s * (l * l - s * s) / 2.0);
+  return w * std::cos(theta) * (shear_arm - inertia_arm);
+}
+
+// Bending moment at station s of the same bar held at its root at angle theta: a cantilever under its weight.
+inline double CantileverMoment(double w, double l, double s, double theta) {
+  return 0.5 * w * std::cos(theta) * (l - s) * (l - s);
+}
+
+// Time a uniform bar of length l hinged at one end takes to fall rigidly from rest at theta0 above the horizontal
+// to the horizontal: theta'' = -a cos(theta), a = 3 g / (2 l), so theta'^2 = 2 a (sin(theta0) - sin(theta)) and
+// t = int_0^sqrt(sin theta0) 2 dv / sqrt(2 a (1 - (sin theta0 - v^2)^2)) with sin(theta) = sin(theta0) - v^2,
+// a smooth integrand: Simpson's rule on 1000 intervals is exact to round-off.
+inline double RigidFallTime(double g, double l, double theta0) {
+  const double a = 1.5 * g / l, s0 = std::sin(theta0), top = std::sqrt(s0);
+  auto f = [&](double v) {
+    const double s = s0 - v * v;
+    return 2.0 / std::sqrt(2.0 * a * (1.0 - s * s));
+  };
+  constexpr int kIntervals = 1000;
+  const double h = top / kIntervals;
+  double sum = f(0.0) + f(top);
+  for (int k = 1; k < kIntervals; ++k) sum += (k % 2 == 1 ? 4.0 : 2.0) * f(k * h);
+  return sum * h / 3.0;
+}
+
+// A uniform Euler-Bernoulli beam (length l, mass per length m, bending stiffness ei, structural damping mu as
+// in docs/config.md, transverse load per length w), pinned at s = 0 and free at l, released at t = 0 from rest in
+// its cantilever shape under the same load (linear theory, small rotations). Modal solution with the first
+// `modes` flexible modes of the pinned-free beam, phi = sin(b s) + (sin(b l) / sinh(b l)) sinh(b s) with
+// tan(b l) = tanh(b l), omega = b^2 sqrt(ei / m), damping ratio zeta = mu omega / 2: each modal coordinate moves
+// from the cantilever shape's projection q0 to the load's static share qs = f / (M omega^2) as a damped free
+// vibration. Overdamped modes (omega >= 2 / mu) are left out: they relax with time constants of about mu. The
+// rigid rotation has no curvature.
+class ReleasedCantilever {
+ public:
+  ReleasedCantilever(double w, double m, double ei, double mu, double l, int modes) {
+    constexpr int kIntervals = 2000;  // Simpson's rule for the modal integrals (smooth integrands)
+    const double h = l / kIntervals;
+    auto cantilever = [&](double s) { return w * s * s * (6 * l * l - 4 * l * s + s * s) / (24 * ei); };
+    for (int k = 0; k < modes; ++k) {
+      // the root of tan(b) = tanh(b) near (k + 1.25) pi, by bisection
+      double lo = (k + 1.25) * M_PI - 0.3, hi = (k + 1.25) * M_PI + 0.3;
+      auto f = [](double b) { return std::tan(b) - std::tanh(b); };
+      for (int i = 0; i < 60; ++i) {
+        const double mid = 0.5 * (lo + hi);
+        (f(mid) * f(lo) > 0 ? lo : hi) = mid;
+      }
+      Mode mode;
+      mode.b = 0.5 * (lo + hi) / l;
+      mode.ratio = std::sin(mode.b * l) / std::sinh(mode.b * l);
+      double mass = 0, load = 0, shape = 0;  // Simpson sums; their common factor h / 3 cancels below
+      for (int i = 0; i <= kIntervals; ++i) {
+        const double s = i * h, weight = (i == 0 || i == kIntervals) ? 1.0 : (i % 2 == 1 ? 4.0 : 2.0);
+        const double phi = std::sin(mode.b * s) + mode.ratio * std::sinh(mode.b * s);
+        mass += weight * m * phi * phi;
+        load += weight * w * phi;
+        shape += weight * m * cantilever(s) * phi;
+      }
+      mode.omega = mode.b * mode.b * std::sqrt(ei / m);
+      mode.zeta = 0.5 * mu * mode.omega;
+      if (mode.zeta >= 1.0) break;
+      mode.q_static = load / (mass * mode.omega * mode.omega);
+      mode.q0 = shape / mass;
+      modes_.push_back(mode);
+    }
+  }
+
+  // Bending curvature at s, time t; positive as w bends a cantilever [1/m].
+  double Curvature(double s, double t) const {
+    double curvature = 0;
+    for (const Mode& mode : modes_) {
+      const double phi_ss = mode.b * mode.b * (-std::sin(mode.b * s) + mode.ratio * std::sinh(mode.b * s));
+      const double damped = mode.omega * std::sqrt(1.0 - mode.zeta * mode.zeta);
+      const double free = std::exp(-mode.zeta * mode.omega * t) *
+                          (std::cos(damped * t) + mode.zeta * mode.omega / damped * std::sin(damped * t));
+      curvature += phi_ss * (mode.q_static + (mode.q0 - mode.q_static) * free);
+    }
+    return curvature;
+  }
+
+ private:
+  struct Mode {
+    double b, ratio, omega, zeta, q_static, q0;
+  };
+  std::vector<Mode> modes_;
+};
 
 }  // namespace test
 }  // namespace flexmbd

@@ -7,6 +7,8 @@
 ///   drive   q_f = f(t_f), enforced by a multiplier lambda; the drive force on q is -lambda. Under a commanded
 ///           set-point s (State::commands) it follows s with a first-order lag instead (docs/theory.md, "Commands")
 ///   effort  Q = u, the commanded effort of State::commands held over the step: its work u dq is external
+///   hold    q = q(0) in a static analysis, enforced by a multiplier lambda; in time steps lambda = 0: a body
+///           released from rest in its static deflected shape (docs/config.md, `initial.static_hold`)
 
 #include "flexmbd/elements/element.hpp"
 #include "flexmbd/model/model_spec.hpp"
@@ -59,6 +61,19 @@ class VariableDrive : public Element {
 
   int variable_, multiplier_;
   TimeFunctionSpec law_;
+};
+
+/// Holds the variable at its initial position in a static analysis only (`initial.static_hold`).
+class VariableHold : public Element {
+ public:
+  VariableHold(int variable, int variable_unknown, int multiplier, int multiplier_unknown, double position);
+  void AddResidual(const StepContext& ctx, Eigen::Ref<Eigen::VectorXd> r,
+                   Eigen::Ref<Eigen::VectorXd> magnitude) const override;
+  void AddTangent(const StepContext& ctx, Eigen::Ref<Eigen::MatrixXd> J) const override;
+
+ private:
+  int variable_, multiplier_;
+  double position_;  ///< the initial position held [rad or m]
 };
 
 /// The effort a controller commands on a variable; one on every variable, zero until commanded.

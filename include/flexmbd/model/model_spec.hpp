@@ -104,6 +104,7 @@ struct VariableEffectsSpec {
   std::vector<TimeFunctionSpec> drives;  ///< at most one: the variable then follows f(t) exactly
   std::vector<StopSpec> stops;
   std::vector<FrictionSpec> frictions;   ///< at most one
+  bool static_hold = false;              ///< held at its initial position in the static analysis, free after it
 };
 
 /// A joint between a frame J_P on the parent body (or the world) and a frame J_C on the child body.

@@ -99,6 +99,35 @@ void VariableDrive::AddStepWork(const StepContext& ctx, StepWork* work) const {
   work->external -= (*ctx.lambda)[multiplier_] * (q.q_f - q.q_i);
 }
 
+VariableHold::VariableHold(int variable, int variable_unknown, int multiplier, int multiplier_unknown,
+                           double position)
+    : variable_(variable), multiplier_(multiplier), position_(position) {
+  unknowns_ = {variable_unknown, multiplier_unknown};
+}
+
+// Only a static analysis holds; a time step keeps the row lambda = 0, so the pattern never changes and the hold
+// does no work.
+void VariableHold::AddResidual(const StepContext& ctx, Eigen::Ref<Eigen::VectorXd> r,
+                               Eigen::Ref<Eigen::VectorXd> magnitude) const {
+  const double lambda = (*ctx.lambda)[multiplier_];
+  if (ctx.mode != AnalysisMode::kStatic) {
+    r[1] += lambda;
+    return;
+  }
+  r[0] += lambda;
+  magnitude[0] += std::abs(lambda);
+  r[1] += (*ctx.variables)[variable_].q_f - position_;
+}
+
+void VariableHold::AddTangent(const StepContext& ctx, Eigen::Ref<Eigen::MatrixXd> J) const {
+  if (ctx.mode != AnalysisMode::kStatic) {
+    J(1, 1) += 1.0;
+    return;
+  }
+  J(0, 1) += 1.0;
+  J(1, 0) += 1.0;
+}
+
 VariableEffort::VariableEffort(int variable, int variable_unknown) : variable_(variable) {
   unknowns_ = {variable_unknown};
 }

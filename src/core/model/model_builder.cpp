@@ -226,7 +226,7 @@ Model BuildModel(const ModelSpec& spec) {
     model.num_variables_ += NumJointVariables(joint.type);
     model.num_multipliers_ += (joint.type == JointType::kSpherical ? 3 : 6);
     for (const VariableEffectsSpec& effects : joint.effects) {
-      model.num_multipliers_ += effects.drives.size();
+      model.num_multipliers_ += effects.drives.size() + effects.static_hold;
       for (const StopSpec& stop : effects.stops) model.num_multipliers_ += stop.kind == StopSpec::Kind::kRigid;
       for (const FrictionSpec& f : effects.frictions) model.num_multipliers_ += f.law != FrictionSpec::Law::kRegularised;
       num_effect_slots += effects.stops.size() + effects.frictions.size();

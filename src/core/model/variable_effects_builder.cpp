@@ -23,6 +23,7 @@ void VariableEffectsBuilder::Add(const std::string& where, const JointSpec& join
   }
   if (effects.drives.size() > 1) throw ConfigError(where + "more than one drive on one variable");
   for (const TimeFunctionSpec& law : effects.drives) AddDrive(where, v, law, multiplier);
+  if (effects.static_hold) AddHold(where, v, effects, multiplier);
   for (const StopSpec& stop : effects.stops) AddStop(where, joint.name, v, stop, multiplier);
   if (effects.frictions.size() > 1) throw ConfigError(where + "more than one friction on one variable");
   // A stuck joint is held by a constraint, which would repeat the drive's and make the iteration matrix singular.
@@ -48,6 +49,25 @@ void VariableEffectsBuilder::AddDrive(const std::string& where, int v, const Tim
                                                              model_.multiplier_unknown(*multiplier), law));
   model_.multiplier_names_.push_back("drive " + model_.variable_names_[v]);
   model_.driven_[v] = true;
+  ++*multiplier;
+}
+
+void VariableEffectsBuilder::AddHold(const std::string& where, int v, const VariableEffectsSpec& effects,
+                                    int* multiplier) {
+  const SolverSpec& solver = model_.solver();
+  if (solver.analysis != SolverSpec::Analysis::kStatic &&
+      !(solver.analysis == SolverSpec::Analysis::kDynamic && solver.static_first)) {
+    throw ConfigError(where + "initial.static_hold holds the variable in a static analysis, and this run has none; "
+                      "expected solver.static_first: true (or analysis: static)");
+  }
+  if (!effects.drives.empty()) {
+    throw ConfigError(where + "initial.static_hold on a driven variable, which its drive holds already; expected "
+                      "one of them");
+  }
+  model_.elements_.push_back(std::make_unique<VariableHold>(v, model_.variable_unknown(v), *multiplier,
+                                                            model_.multiplier_unknown(*multiplier),
+                                                            model_.initial_state_.q[v]));
+  model_.multiplier_names_.push_back("hold " + model_.variable_names_[v]);
   ++*multiplier;
 }
 
