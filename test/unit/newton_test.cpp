@@ -1,7 +1,8 @@
 // SolveNewton on a static pendulum held by a spring: the approximate solve (NewtonOptions::increment_test_only)
 // stops at the first trusted increment below the tolerance, before the full test would, and its iterate lies
 // within that tolerance of the converged one; a simplified iteration whose contraction is measured stops when the
-// error it leaves, not its increment, is below the tolerance.
+// error it leaves, not its increment, is below the tolerance; an approximate solve may take its first increment on
+// the rate an earlier one measured.
 
 #include <gtest/gtest.h>
 
@@ -97,6 +98,25 @@ TEST(Newton, AContractingIterationStopsWhenTheErrorItLeavesIsSmall) {
   // ... and the error it left, about theta / (1 - theta) of that increment, is below it (the iteration contracts
   // linearly, so the estimate is close; a factor 2 leaves room for the rate changing along the way).
   EXPECT_LT(std::abs(simplified.angle - reference.angle), 2.0 * target);
+}
+
+TEST(Newton, AnApproximateSolveTakesItsFirstIncrementOnAnExpectedContraction) {
+  const Model model = SprungPendulum();
+  constexpr double kLoose = 1.0e-3;
+  NewtonOptions approximate{false, true};
+  const Solved measuring = SolveStatic(model, kLoose, approximate);
+  ASSERT_TRUE(measuring.report.converged);
+  EXPECT_GT(measuring.report.iterations, 1);
+  // The rate its iterations measured is reported for the next solve of its kind.
+  EXPECT_TRUE(std::isfinite(measuring.report.contraction_factor));
+  // Told to expect an iteration that converges at once, the approximate solve stops at its first increment ...
+  approximate.expected_contraction_factor = 0.0;
+  EXPECT_EQ(SolveStatic(model, kLoose, approximate).report.iterations, 1);
+  // ... a full solve does not take the expectation: it tests its residual and its own contraction.
+  NewtonOptions full;
+  full.expected_contraction_factor = 0.0;
+  EXPECT_EQ(SolveStatic(model, kLoose, full).report.iterations,
+            SolveStatic(model, kLoose, NewtonOptions{}).report.iterations);
 }
 
 }  // namespace

@@ -11,6 +11,7 @@
 /// same way on their stretch, k a (dq - dq_lagged) dq >= 0, which damps the potential part of unresolved modes.
 /// alpha_inf = 0 is energy preserving.
 
+#include <limits>
 #include <vector>
 
 #include <Eigen/Core>
@@ -67,6 +68,8 @@ class EnergyDecayingIntegrator : public TimeIntegrator {
   std::vector<EffectState> modes_;  ///< trial modes of the step being solved
   TangentReuse tangent_reuse_;     ///< whether a step starts from the previous one's factorisation, learnt
   DissipationJudging judging_;      ///< when a step judges its dissipation terms, learnt from the steps taken
+  /// theta / (1 - theta) of the last judging solve, or its expectation aged by one solve (NaN: none yet)
+  double judging_contraction_factor_ = std::numeric_limits<double>::quiet_NaN();
 };
 
 }  // namespace flexmbd

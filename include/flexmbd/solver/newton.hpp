@@ -7,6 +7,7 @@
 /// (for an approximate solve, that test alone: NewtonOptions); the increment is applied.
 
 #include <functional>
+#include <limits>
 
 #include <Eigen/Core>
 
@@ -31,6 +32,8 @@ struct NewtonReport {
   double force_residual = 0;       ///< relative, at the last evaluation
   double constraint_residual = 0;  ///< [m or rad]
   int worst_unknown = -1;          ///< row with the largest scaled residual
+  /// theta / (1 - theta) of the last contraction measured on one factorisation; NaN if none was measured
+  double contraction_factor = std::numeric_limits<double>::quiet_NaN();
 };
 
 /// How a solve starts and what it must reach.
@@ -41,6 +44,9 @@ struct NewtonOptions {
   /// Converged on the increment test alone, without the residual test of the iterate it came from: for an
   /// approximate solve that a full one continues (an energy-decaying step judging its dissipation terms).
   bool increment_test_only = false;
+  /// For such a solve, theta / (1 - theta) expected of its first increment (from an earlier solve of the same
+  /// kind; NaN: unknown): the first increment alone may then pass the test.
+  double expected_contraction_factor = std::numeric_limits<double>::quiet_NaN();
 };
 
 /// Round-off of a configuration with coordinates up to `magnitude` [m or rad]: increments below it are noise.

@@ -186,7 +186,17 @@ StepResult EnergyDecayingIntegrator::Step(const State& start, double h, State* e
           unknowns += increment;
           return (unknowns.head(n_kinematic) - coasting).cwiseAbs().maxCoeff() + h * h * kAccelerationFloor;
         },
-        NewtonOptions{first_solve ? earlier_tangent : system_->factorisation_key() == h, judging_dissipation});
+        NewtonOptions{first_solve ? earlier_tangent : system_->factorisation_key() == h, judging_dissipation,
+                      judging_dissipation ? judging_contraction_factor_ : std::numeric_limits<double>::quiet_NaN()});
+    if (judging_dissipation) {
+      // A solve that stopped on the expected rate measured none: the expectation ages (^0.8 per use) until a
+      // solve measures the rate again.
+      judging_contraction_factor_ =
+          std::isfinite(result.newton.contraction_factor)
+              ? result.newton.contraction_factor
+              : std::isfinite(judging_contraction_factor_) ? std::pow(judging_contraction_factor_, 0.8)
+                                                           : judging_contraction_factor_;
+    }
     if (first_solve && earlier_tangent) tangent_reuse_.Record(result.newton.converged && result.newton.tangents == 0);
     first_solve = false;
     iterations += result.newton.iterations;
