@@ -18,6 +18,7 @@ import plot_overlay  # helpers for figures of several runs overlaid; selects the
 import matplotlib.pyplot as plt  # noqa: E402 (after the backend)
 
 import plot_bag  # noqa: E402: the bag reader beside this file, columns named as in the runner's CSV
+from flexmbd_sweep.csv_metrics import flag_intervals  # noqa: E402: sticking and contact intervals, as the sweeps'
 
 JOINTS = ("B1", "B2", "B3", "B4")
 FRICTION_JOINTS = ("B2", "B3")
@@ -58,7 +59,7 @@ def plot_friction(runs, path):
             time = column(run, "t")
             line, = ax.plot(time, column(run, "friction.%s.torque" % joint), label=label, linewidth=0.8)
             # one row of bars per case along the bottom of the axes
-            sticking = plot_overlay.flag_intervals(time, column(run, "friction.%s.sticking" % joint))
+            sticking = flag_intervals(time, column(run, "friction.%s.sticking" % joint))
             plot_overlay.draw_interval_bars(ax, sticking, k, line.get_color())
         ax.set_ylabel("%s friction torque [N m]" % joint)
         ax.grid(True, alpha=0.3)

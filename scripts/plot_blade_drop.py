@@ -21,6 +21,7 @@ import plot_overlay  # helpers for figures of several runs overlaid; selects the
 import matplotlib.pyplot as plt  # noqa: E402 (after the backend)
 
 import plot_bag  # noqa: E402: the bag reader beside this file, columns named as in the runner's CSV
+from flexmbd_sweep.csv_metrics import flag_intervals  # noqa: E402: sticking and contact intervals, as the sweeps'
 import yaml  # noqa: E402
 
 BLADE_YAML = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "config", "blade_drop",
@@ -56,7 +57,7 @@ def plot_overlaid(runs, ylabel, values, title, path):
     for row, (run, label) in enumerate(zip(runs, LABELS)):
         time = column(run, "t")
         line, = ax.plot(time, values(run), label=label, linewidth=1.0)
-        plot_overlay.draw_interval_bars(ax, plot_overlay.flag_intervals(time, column(run, CONTACT)), row,
+        plot_overlay.draw_interval_bars(ax, flag_intervals(time, column(run, CONTACT)), row,
                                         line.get_color())
     ax.axhline(0.0, color="black", linewidth=0.5)
     plot_overlay.finish(figure, ax, title, ylabel, path, "upper right")

@@ -1,5 +1,6 @@
 """Helpers of the figures that overlay several runs of one case read from their bags (plot_bag.read_columns):
-named columns, intervals where a 0/1 flag column is set (sticking, contact), drawn as bars, and saving."""
+named columns, bars of the intervals where a 0/1 flag column is set (sticking, contact: flag_intervals of
+flexmbd_sweep/csv_metrics.py), and saving."""
 
 import argparse
 import os
@@ -34,20 +35,6 @@ def column(run, name, case):
     if name not in header:
         raise plot_bag.BagError("no column %s: not a bag of config/%s/" % (name, case))
     return columns[header.index(name)]
-
-
-def flag_intervals(time, flags):
-    """(start, end) of each run of samples with the flag set."""
-    intervals, start = [], None
-    for t, flag in zip(time, flags):
-        if flag > 0.5 and start is None:
-            start = t
-        elif flag <= 0.5 and start is not None:
-            intervals.append((start, t))
-            start = None
-    if start is not None:
-        intervals.append((start, time[-1]))
-    return intervals
 
 
 def draw_interval_bars(ax, intervals, row, color):

@@ -69,10 +69,11 @@ class DecayTime(_Kind):
         return math.inf if last_above > t[-1] - self.option(entry, 'hold') else float(last_above)
 
 
-def sticking_intervals(t, sticking):
-    """(start, end) of each run of sticking samples; a run lasts until the next sample (or the last one)."""
-    flags = np.concatenate(([0], (sticking > 0.5).astype(int), [0]))
-    starts, ends = np.nonzero(np.diff(flags) == 1)[0], np.nonzero(np.diff(flags) == -1)[0]
+def flag_intervals(t, flags):
+    """(start, end) of each run of samples whose 0/1 column (sticking, in contact) is set; a run lasts until the
+    next sample (or the last one). The overlay figures (scripts/plot_overlay.py) draw the same intervals."""
+    padded = np.concatenate(([0], (np.asarray(flags) > 0.5).astype(int), [0]))
+    starts, ends = np.nonzero(np.diff(padded) == 1)[0], np.nonzero(np.diff(padded) == -1)[0]
     return [(t[a], t[min(b, len(t) - 1)]) for a, b in zip(starts, ends)]
 
 
@@ -80,28 +81,28 @@ class StickingTime(_Kind):
     """Total time in which a 0/1 column (friction.<joint>.sticking) is 1."""
 
     def compute(self, t, x, entry):
-        return float(sum(end - start for start, end in sticking_intervals(t, x[0])))
+        return float(sum(end - start for start, end in flag_intervals(t, x[0])))
 
 
 class StickingIntervals(_Kind):
     """Number of intervals in which a 0/1 column is 1, as the samples see them."""
 
     def compute(self, t, x, entry):
-        return len(sticking_intervals(t, x[0]))
+        return len(flag_intervals(t, x[0]))
 
 
 class LongestSticking(_Kind):
     """Duration of the longest sticking interval of a 0/1 column."""
 
     def compute(self, t, x, entry):
-        return max((end - start for start, end in sticking_intervals(t, x[0])), default=0.0)
+        return max((end - start for start, end in flag_intervals(t, x[0])), default=0.0)
 
 
 class LongestStickingStart(_Kind):
     """Start time of the longest sticking interval of a 0/1 column (nan if it never sticks)."""
 
     def compute(self, t, x, entry):
-        intervals = sticking_intervals(t, x[0])
+        intervals = flag_intervals(t, x[0])
         return float(max(intervals, key=lambda i: i[1] - i[0])[0]) if intervals else math.nan
 
 
