@@ -55,6 +55,8 @@ class EnergyDecayingIntegrator : public TimeIntegrator {
   void CommitEffects(State* end, StepLimit* limit) const;
   // True when an effect changed its mode from `start` to `end` with a jump in the motion (ModeChangesAreSmooth).
   bool ModesJumped(const State& start, const State& end) const;
+  /// theta / (1 - theta) a judging solve assumes for its first increment (NaN while no rate was measured).
+  double ExpectedJudgingContraction() const;
   void Commit(const State& start, const Eigen::VectorXd& unknowns, double h,
               const std::vector<NodeSchemeCoefficients>& coefficients, State* end);
 

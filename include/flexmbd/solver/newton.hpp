@@ -44,8 +44,8 @@ struct NewtonOptions {
   /// Converged on the increment test alone, without the residual test of the iterate it came from: for an
   /// approximate solve that a full one continues (an energy-decaying step judging its dissipation terms).
   bool increment_test_only = false;
-  /// For such a solve, theta / (1 - theta) expected of its first increment (from an earlier solve of the same
-  /// kind; NaN: unknown): the first increment alone may then pass the test.
+  /// For such a solve, theta / (1 - theta) to assume for its first increment, the error it leaves being that
+  /// times the increment (NaN: unknown, the increment itself is the bound).
   double expected_contraction_factor = std::numeric_limits<double>::quiet_NaN();
 };
 

@@ -144,6 +144,13 @@ bool EnergyDecayingIntegrator::ReviseModes() {
   return revised;
 }
 
+double EnergyDecayingIntegrator::ExpectedJudgingContraction() const {
+  // The rate the last judging solve measured, raised to 0.8 so that a rate measured on a lucky pair of
+  // increments does not hold for long (Hairer and Wanner, Solving ODEs II, IV.8; RADAU5's FACCON), and at least
+  // round-off.
+  return std::pow(std::max(judging_contraction_factor_, std::numeric_limits<double>::epsilon()), 0.8);
+}
+
 StepResult EnergyDecayingIntegrator::Step(const State& start, double h, State* end) {
   Coefficients coefficients = Choose(start);
   modes_ = start.effects;
@@ -187,15 +194,13 @@ StepResult EnergyDecayingIntegrator::Step(const State& start, double h, State* e
           return (unknowns.head(n_kinematic) - coasting).cwiseAbs().maxCoeff() + h * h * kAccelerationFloor;
         },
         NewtonOptions{first_solve ? earlier_tangent : system_->factorisation_key() == h, judging_dissipation,
-                      judging_dissipation ? judging_contraction_factor_ : std::numeric_limits<double>::quiet_NaN()});
+                      judging_dissipation ? ExpectedJudgingContraction() : std::numeric_limits<double>::quiet_NaN()});
     if (judging_dissipation) {
-      // A solve that stopped on the expected rate measured none: the expectation ages (^0.8 per use) until a
-      // solve measures the rate again.
-      judging_contraction_factor_ =
-          std::isfinite(result.newton.contraction_factor)
-              ? result.newton.contraction_factor
-              : std::isfinite(judging_contraction_factor_) ? std::pow(judging_contraction_factor_, 0.8)
-                                                           : judging_contraction_factor_;
+      // A solve that stopped on the expectation measured no rate: the expectation ages by the same power at each
+      // use until a solve measures the rate again (NaN stays NaN).
+      judging_contraction_factor_ = std::isfinite(result.newton.contraction_factor)
+                                        ? result.newton.contraction_factor
+                                        : std::pow(judging_contraction_factor_, 0.8);
     }
     if (first_solve && earlier_tangent) tangent_reuse_.Record(result.newton.converged && result.newton.tangents == 0);
     first_solve = false;

@@ -11,7 +11,6 @@ namespace flexmbd {
 namespace {
 // Force magnitudes below this are treated as this [N]: keeps the relative test meaningful at rest.
 constexpr double kForceFloor = 1.0e-9;
-constexpr double kEpsilon = std::numeric_limits<double>::epsilon();
 
 
 struct ResidualCheck {
@@ -101,14 +100,12 @@ NewtonReport SolveNewton(const Model& model, SparseSystem* system, double tol, i
     const double contraction = size / previous_size;
     const bool rate_measured = !refresh && std::isfinite(previous_size) && contraction < 1.0;
     if (rate_measured) report.contraction_factor = contraction / (1.0 - contraction);
-    // An approximate solve's first increment is judged on the rate an earlier one measured, raised to 0.8 so that
-    // a rate measured on a lucky pair does not hold for long (Hairer and Wanner, ibid., RADAU5's FACCON).
+    // An approximate solve's first increment may be judged on the rate its caller expects (options).
     const bool rate_expected = options.increment_test_only && !std::isfinite(previous_size) &&
                                std::isfinite(options.expected_contraction_factor);
-    const double remaining = rate_measured ? size * report.contraction_factor
-                             : rate_expected
-                                 ? size * std::pow(std::max(options.expected_contraction_factor, kEpsilon), 0.8)
-                                 : size;
+    double remaining = size;
+    if (rate_measured) remaining = size * report.contraction_factor;
+    else if (rate_expected) remaining = size * options.expected_contraction_factor;
     const double target = tol * reference + noise_floor;
     if (residual_passes && remaining <= target) {
       report.converged = true;
