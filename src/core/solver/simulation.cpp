@@ -24,7 +24,7 @@ std::string FormatCommand(double value) {
 }
 
 // What a user can try when the step size fell below dt_min, by the reason the last attempt failed.
-const char* WhatToTry(StepStatus status) {
+const char* WhatToTry(StepStatus status, bool adaptive) {
   switch (status) {
     case StepStatus::kRejectedError:
       return "try a larger solver.error_tol or solver.error_floor, or a smaller solver.dt_min";
@@ -40,6 +40,10 @@ const char* WhatToTry(StepStatus status) {
     case StepStatus::kAccepted:
       break;
   }
+  // An accepted step whose next step fell below dt_min was held back by a stop or friction event's step limit.
+  // Fixed steps far too large for the motion leave it unresolved, and the events after it shrink without end.
+  if (!adaptive) return "try a smaller solver.dt (fixed steps may leave the motion unresolved), adaptive steps, "
+                        "or a smaller solver.dt_min";
   return "try a smaller solver.dt_min";
 }
 
@@ -65,7 +69,7 @@ void Simulation::Fail(const char* what, double h, const StepResult& last) const 
     msg << "; worst residual at " << model_.DescribeUnknown(last.newton.worst_unknown) << " (force "
         << last.newton.force_residual << " relative, constraint " << last.newton.constraint_residual << ")";
   }
-  msg << "; " << WhatToTry(last.status);
+  msg << "; " << WhatToTry(last.status, model_.solver().adaptive);
   throw SolverError(msg.str());
 }
 
