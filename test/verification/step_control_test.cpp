@@ -214,6 +214,27 @@ TEST(StepControl, BeamArmFirstStepIsChosenByTheEstimate) {
   EXPECT_LT(TipError(run, ConvergedBeamArm()), 1.7e-4 / 5);
 }
 
+TEST(StepControl, StatisticsNameTheNodeRotationOrTranslationThatLimitedTheStep) {
+  // The error norm's entries are a node's translation and rotation as vectors and each joint variable (T12): the
+  // summary names the entry, not the first of its components ("rot_x" misled a reader into looking for twist).
+  const Model model = BuildModel(BeamArm(1.0e-4));
+  Simulation simulation(model);
+  simulation.Run([](const OutputSample&) {});
+  const std::string summary = simulation.statistics().Summary(model);
+  const std::string lead = "local error limited the step most at ";
+  const size_t at = summary.find(lead);
+  ASSERT_NE(at, std::string::npos) << summary;
+  const std::string entry = summary.substr(at + lead.size(), summary.find(" (", at) - at - lead.size());
+  const bool node_entry = entry.rfind("beam ", 0) == 0 || entry.rfind("body ", 0) == 0;
+  if (node_entry) {
+    EXPECT_TRUE(entry.size() > 9 && (entry.substr(entry.size() - 9) == " rotation" ||
+                                     entry.substr(entry.size() - 12) == " translation"))
+        << entry;
+  } else {
+    EXPECT_EQ(entry.rfind("joint variable ", 0), 0u) << entry;
+  }
+}
+
 TEST(StepControl, ToleranceSoSmallItsFloorsUnderflowFailsInsteadOfRetryingForEver) {
   // A fuzz finding: an infinite error estimate was read as "no estimate" and the same step retried for ever.
   const ModelSpec spec = Case("pendulum.urdf", "error_tol_underflow.yaml");

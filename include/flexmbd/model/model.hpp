@@ -61,6 +61,8 @@ struct FrictionInfo {
 class Model {
  public:
   int num_nodes() const { return num_nodes_; }
+  /// "body <name>" or "beam <name> node <k>".
+  const std::string& node_name(int node) const { return node_names_[node]; }
   int num_variables() const { return num_variables_; }
   int num_multipliers() const { return num_multipliers_; }
   int num_unknowns() const { return 6 * num_nodes_ + num_variables_ + num_multipliers_; }

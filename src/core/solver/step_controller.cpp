@@ -21,6 +21,12 @@ constexpr double kErrorOrder = 2.0;
 // to 2-5% of its steps, and the five cases' steps at equal error changed by -10 ... +15% counting rejections.
 constexpr double kPiCurrent = 0.3;
 constexpr double kPiPrevious = 0.1;
+// An entry of the error norm: a node's translation or rotation as a whole, or a joint variable.
+std::string DescribeErrorEntry(const Model& model, int unknown) {
+  if (unknown >= model.node_unknown(model.num_nodes())) return model.DescribeUnknown(unknown);
+  const int node = unknown / 6;
+  return model.node_name(node) + (unknown - model.node_unknown(node) < 3 ? " translation" : " rotation");
+}
 }  // namespace
 
 std::string StepStatistics::Summary(const Model& model) const {
@@ -33,7 +39,7 @@ std::string StepStatistics::Summary(const Model& model) const {
   const auto most = std::max_element(limited_by.begin(), limited_by.end(),
                                      [](const auto& a, const auto& b) { return a.second < b.second; });
   if (most != limited_by.end()) {
-    out << "; local error limited the step most at " << model.DescribeUnknown(most->first) << " (" << most->second
+    out << "; local error limited the step most at " << DescribeErrorEntry(model, most->first) << " (" << most->second
         << " times)";
   }
   return out.str();
