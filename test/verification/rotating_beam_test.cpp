@@ -16,6 +16,7 @@
 #include "flexmbd/common/error.hpp"
 #include "flexmbd/io/config_loader.hpp"
 #include "flexmbd/model/model.hpp"
+#include "flexmbd/solver/steady_rotation.hpp"
 #include "runner_output.hpp"
 
 namespace flexmbd {
@@ -146,6 +147,25 @@ TEST(RotatingBeam, SpinIsOneRigidBodyModeAndTheBendingModesAreUndamped) {
   // lambda = 6.00008 moves the table values at 6 by 5e-6 (flap) and 1.2e-5 (lag), inside the bound.
   EXPECT_NEAR(NonDimensional(ModeRow(output, 2).frequency_hz) / LagOf(kFlap[3], 6.0), 1.0, kTableTolerance) << output;
   EXPECT_NEAR(NonDimensional(ModeRow(output, 3).frequency_hz) / kFlap[3], 1.0, kTableTolerance) << output;
+}
+
+TEST(RotatingBeam, SteadyStateStretchesTheBladeByItsCentrifugalLoad) {
+  // test/data/yaml/spinning_blade.yaml: a 1 m blade (EA 1e7 N, m 2.5 kg/m, 4 cubic elements) on a free hub at
+  // 10 rad/s, without gravity. Reference: the linear bar under m Omega^2 x, tip displacement
+  // u(L) = m Omega^2 L^3 / (3 EA) = 8.333e-6 m, which the cubic elements represent exactly; the geometric
+  // nonlinearity (tension on the stretched radius, the strain measure) is of the order of the strain, 1.25e-5
+  // (measured 1.0e-5): 1e-4 leaves a margin of 8.
+  const Model model = BuildModel(LoadModelSpec(std::string(FLEXMBD_SOURCE_DIR) + "/test/data/urdf/spinning_hub.urdf",
+                                               std::string(FLEXMBD_SOURCE_DIR) + "/test/data/yaml/spinning_blade.yaml"));
+  const SteadyRotation spin = SteadyRotationOf(model, model.initial_state());
+  const SteadyResult steady = SolveSteadyRotation(model, model.initial_state(), spin);
+  const double tip = steady.state.nodes[model.beams()[0].nodes.back()].x.norm() - 1.0;
+  const double expected = 2.5 * 100.0 / (3 * 1.0e7);
+  RecordProperty("tip_stretch_error", std::to_string(tip / expected - 1));
+  constexpr double kStretchTolerance = 1.0e-4;
+  EXPECT_NEAR(tip / expected, 1.0, kStretchTolerance) << tip;
+  // No load turns the hub: its holding torque is round-off of the root's moments (1e-9 of m Omega^2 L^3 / 2).
+  EXPECT_LT(std::abs(steady.hub_effort), 1.0e-9 * 125.0) << steady.hub_effort;
 }
 
 // The ConfigError of loading and building kUrdf with `yaml`, or "" if there is none.
