@@ -21,6 +21,7 @@
 #include "flexmbd/io/config_loader.hpp"
 #include "flexmbd/solver/sparse_system.hpp"
 #include "flexmbd/solver/static_solver.hpp"
+#include "flexmbd/solver/steady_rotation.hpp"
 
 namespace flexmbd {
 namespace {
@@ -381,6 +382,20 @@ TEST(EigenSweep, HingedArmFrequencyIsProportionalToHubSpeed) {
     ASSERT_EQ(p.result.modes.size(), 1u);
     EXPECT_NEAR(p.result.modes[0].frequency_hz / Hz(HingedArmFrequency(p.parameter * spin)), 1.0, kRotatingTolerance);
   }
+}
+
+TEST(EigenAnalysis, SteadyRotationOfDrivenHubKeepsTheDriveAndAddsNoRigidMode) {
+  // Reference as above. The drive holds the hub in the steady solve and in the modes, so the spin is no degree of
+  // freedom and no rigid-body mode is added (docs/theory.md (S2)-(S4)); the arm's radial steady state is the
+  // initial state, so the frequency is the one about the initial state.
+  const double spin = 12.0;
+  const Model model = BuildModel(DrivenHingedArm(spin));
+  const SteadyRotation rotation = SteadyRotationOf(model, model.initial_state());
+  const SteadyResult steady = SolveSteadyRotation(model, model.initial_state(), rotation);
+  const EigenResult result = EigenAnalysisAboutSteadyRotation(model, steady.state, rotation, EigenOptions());
+  EXPECT_EQ(result.num_rigid_body, 0);
+  ASSERT_EQ(result.modes.size(), 1u);
+  EXPECT_NEAR(result.modes[0].frequency_hz / Hz(HingedArmFrequency(spin)), 1.0, kRotatingTolerance);
 }
 
 // Parallelogram four-bar hanging from two hinges a distance d apart: equal cranks (length L, centre of mass
