@@ -8,7 +8,7 @@ const std::vector<std::string> kSolverKeys = {"analysis",       "integrator", "r
                                               "dt_min",         "dt_max",     "adaptive",     "tol",    "error_tol",
                                               "error_floor",    "max_iterations", "load_steps", "static_first", "gravity",
                                               "eigen"};
-const std::vector<std::string> kEigenKeys = {"modes", "static_first", "method", "shift_hz", "sweep"};
+const std::vector<std::string> kEigenKeys = {"modes", "static_first", "method", "shift_hz", "about", "sweep"};
 const std::vector<std::string> kSweepKeys = {"velocity_scale"};
 const std::vector<std::string> kErrorFloorKeys = {"position", "rotation", "joint"};
 const std::vector<std::string> kOutputKeys = {"rate_hz", "csv", "bag", "beam_stations", "allow_large_output"};
@@ -37,6 +37,7 @@ void CheckStepBounds(const Field& solver, const SolverSpec& spec) {
 // `solver.eigen:` the eigen-analysis settings (docs/config.md, "solver.eigen").
 void ReadEigen(const Field& eigen, SolverSpec::EigenSettings* spec) {
   using Method = SolverSpec::EigenSettings::Method;
+  using About = SolverSpec::EigenSettings::About;
   CheckKeys(eigen, kEigenKeys);
   OverlayInteger(eigen, "modes", Quantity{"a number of modes (0: all)", Bound::kNonNegative, ""}, &spec->modes);
   OverlayBool(eigen, "static_first", &spec->static_first);
@@ -45,6 +46,14 @@ void ReadEigen(const Field& eigen, SolverSpec::EigenSettings* spec) {
                                     {{"auto", Method::kAuto}, {"dense", Method::kDense}, {"sparse", Method::kSparse}});
   }
   OverlayNumber(eigen, "shift_hz", Quantity{"a target frequency", Bound::kNonNegative, "Hz"}, &spec->shift_hz);
+  if (eigen.Child("about").present()) {
+    spec->about = ReadEnum<About>(eigen.Child("about"), "state to linearise about",
+                                  {{"initial_state", About::kInitialState}, {"steady_state", About::kSteadyState}});
+  }
+  if (spec->about == About::kSteadyState && spec->static_first) {
+    eigen.Child("static_first").Fail("true cannot go with about: steady_state (the steady state includes gravity "
+                                     "and loads); expected false");
+  }
   const Field sweep = eigen.Child("sweep");
   if (!sweep.present()) return;
   CheckKeys(sweep, kSweepKeys);

@@ -22,6 +22,7 @@
 #include "flexmbd/solver/simulation.hpp"
 #include "flexmbd/solver/sparse_system.hpp"
 #include "flexmbd/solver/static_solver.hpp"
+#include "flexmbd/solver/steady_rotation.hpp"
 
 namespace {
 
@@ -68,8 +69,33 @@ void PrintSummary(const flexmbd::Simulation& simulation, const flexmbd::OutputSa
   }
 }
 
-// solver.analysis: eigen. Linearises about the initial state (or its static equilibrium) and prints the mode
-// table, or a fan-plot table for a sweep of velocity factors.
+// solver.eigen.about: steady_state. The mode table about the steady rotation at the initial hub rate, or a fan
+// plot with the steady state solved at each speed factor.
+void RunEigenAboutSteadyRotation(const flexmbd::Model& model, const flexmbd::EigenOptions& options) {
+  const flexmbd::SolverSpec::EigenSettings& settings = model.solver().eigen;
+  const flexmbd::SteadyRotation spin = flexmbd::SteadyRotationOf(model, model.initial_state());
+  const std::string hub = model.variable_names()[spin.spinning_variable];
+  if (!settings.sweep_velocity_scale.empty()) {
+    const std::vector<flexmbd::SweepPoint> points = flexmbd::SteadyRotationSweep(
+        model, model.initial_state(), spin, settings.sweep_velocity_scale, options);
+    std::printf("flexmbd_run: eigen-analysis sweep of %zu speed factors about steady rotations of %s at %.8g rad/s "
+                "times the factor (%s)\n",
+                points.size(), hub.c_str(), spin.speed, points.empty() ? "" : points.front().result.method.c_str());
+    std::fputs(flexmbd::FormatFanPlot(points, "velocity_scale", settings.modes).c_str(), stdout);
+    return;
+  }
+  const flexmbd::SteadyResult steady = flexmbd::SolveSteadyRotation(model, model.initial_state(), spin);
+  std::printf("flexmbd_run: steady rotation of %s at %.8g rad/s: %d Newton iterations, holding effort %.6g\n",
+              hub.c_str(), spin.speed, steady.iterations, steady.hub_effort);
+  const flexmbd::EigenResult result = flexmbd::EigenAnalysisAboutSteadyRotation(model, steady.state, spin, options);
+  std::printf("flexmbd_run: eigen-analysis about the steady rotation (%s): %d degrees of freedom, %d rigid-body "
+              "modes\n",
+              result.method.c_str(), result.num_dof, result.num_rigid_body);
+  std::fputs(flexmbd::FormatModeTable(result).c_str(), stdout);
+}
+
+// solver.analysis: eigen. Linearises about the initial state (or its static equilibrium, or the steady rotation)
+// and prints the mode table, or a fan-plot table for a sweep of velocity factors.
 void RunEigen(const flexmbd::Model& model) {
   using Method = flexmbd::SolverSpec::EigenSettings::Method;
   const flexmbd::SolverSpec::EigenSettings& settings = model.solver().eigen;
@@ -79,6 +105,10 @@ void RunEigen(const flexmbd::Model& model) {
   options.method = settings.method == Method::kDense    ? flexmbd::EigenMethod::kDense
                    : settings.method == Method::kSparse ? flexmbd::EigenMethod::kSparse
                                                         : flexmbd::EigenMethod::kAuto;
+  if (settings.about == flexmbd::SolverSpec::EigenSettings::About::kSteadyState) {
+    RunEigenAboutSteadyRotation(model, options);
+    return;
+  }
   flexmbd::State state = model.initial_state();
   if (settings.static_first) {
     // From consistent multipliers: with zero ones the first static tangent of a hanging body has no joint

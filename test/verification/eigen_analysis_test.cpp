@@ -6,7 +6,6 @@
 #include "flexmbd/solver/eigen_analysis.hpp"
 
 #include <gtest/gtest.h>
-#include <sys/wait.h>
 
 #include <algorithm>
 #include <cmath>
@@ -17,10 +16,12 @@
 #include <vector>
 
 #include "case_builders.hpp"
+#include "runner_output.hpp"
 #include "flexmbd/common/error.hpp"
 #include "flexmbd/io/config_loader.hpp"
 #include "flexmbd/solver/sparse_system.hpp"
 #include "flexmbd/solver/static_solver.hpp"
+#include "flexmbd/solver/steady_rotation.hpp"
 
 namespace flexmbd {
 namespace {
@@ -383,6 +384,20 @@ TEST(EigenSweep, HingedArmFrequencyIsProportionalToHubSpeed) {
   }
 }
 
+TEST(EigenAnalysis, SteadyRotationOfDrivenHubKeepsTheDriveAndAddsNoRigidMode) {
+  // Reference as above. The drive holds the hub in the steady solve and in the modes, so the spin is no degree of
+  // freedom and no rigid-body mode is added (docs/theory.md (S2)-(S4)); the arm's radial steady state is the
+  // initial state, so the frequency is the one about the initial state.
+  const double spin = 12.0;
+  const Model model = BuildModel(DrivenHingedArm(spin));
+  const SteadyRotation rotation = SteadyRotationOf(model, model.initial_state());
+  const SteadyResult steady = SolveSteadyRotation(model, model.initial_state(), rotation);
+  const EigenResult result = EigenAnalysisAboutSteadyRotation(model, steady.state, rotation, EigenOptions());
+  EXPECT_EQ(result.num_rigid_body, 0);
+  ASSERT_EQ(result.modes.size(), 1u);
+  EXPECT_NEAR(result.modes[0].frequency_hz / Hz(HingedArmFrequency(spin)), 1.0, kRotatingTolerance);
+}
+
 // Parallelogram four-bar hanging from two hinges a distance d apart: equal cranks (length L, centre of mass
 // at L/2) and a coupler, all hinged about y. In 3-D its 24 joint rows hold 3 redundant ones.
 ModelSpec Parallelogram(double mc, double L, double ic, double mb, double d, double ib) {
@@ -554,41 +569,16 @@ TEST(EigenConfig, SolverEigenBlockIsReadFromYaml) {
   }
 }
 
-// Runs flexmbd_run on a URDF of the source tree with the given YAML text; returns its output, which must
-// report exit 0.
-std::string RunnerOutput(const std::string& urdf, const std::string& yaml_text, const std::string& name) {
-  const std::string yaml = testing::TempDir() + name + ".yaml";
-  std::ofstream(yaml) << yaml_text;
-  const std::string out = testing::TempDir() + name + ".txt";
-  const std::string command = std::string(FLEXMBD_RUNNER) + " --urdf " + FLEXMBD_SOURCE_DIR + "/" + urdf +
-                              " --config " + yaml + " > " + out + " 2>&1";
-  const int status = std::system(command.c_str());
-  std::ifstream file(out);
-  std::stringstream text;
-  text << file.rdbuf();
-  EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << text.str();
-  return text.str();
-}
-
-// The frequency [Hz] of mode `index` in a printed mode table, or NaN when the row is missing.
-double TableFrequency(const std::string& table, int index) {
-  char row[16];
-  std::snprintf(row, sizeof(row), "\n%4d  ", index);
-  const size_t at = table.find(row);
-  double frequency = std::nan("");
-  if (at != std::string::npos) std::sscanf(table.c_str() + at, " %*d %lf", &frequency);
-  return frequency;
-}
-
 // The table prints 8 significant digits.
 constexpr double kPrintedTolerance = 1.0e-7;
 
 TEST(EigenRunner, PrintsModeTableOfUrdfPendulum) {
   // Reference: test/data/urdf/pendulum.urdf, m = 2 kg, l = 0.5 m, I_yy = 0.17 kg m^2 about the centre of mass:
   // f = sqrt(m g l / (I + m l^2)) / 2 pi = 0.609 Hz, linearised about the static equilibrium.
-  const std::string table = RunnerOutput("test/data/urdf/pendulum.urdf",
-                                         "solver: {analysis: eigen, eigen: {static_first: true}}\n", "eigen_runner");
-  EXPECT_NEAR(TableFrequency(table, 1) / Hz(std::sqrt(2.0 * kG * 0.5 / (0.17 + 2.0 * 0.25))), 1.0, kPrintedTolerance)
+  const std::string table = test::RunnerOutput(
+      "test/data/urdf/pendulum.urdf", "solver: {analysis: eigen, eigen: {static_first: true}}\n", "eigen_runner");
+  EXPECT_NEAR(test::TableFrequency(table, 1) / Hz(std::sqrt(2.0 * kG * 0.5 / (0.17 + 2.0 * 0.25))), 1.0,
+              kPrintedTolerance)
       << table;
 }
 
@@ -608,12 +598,12 @@ TEST(EigenRunner, DampedFlexibleAntennaKeepsItsDeploymentModesAtDefaultSettings)
   const std::string model = yaml.substr(0, solver + 1) + yaml.substr(output + 1);
   const std::string urdf = "config/antenna/antenna.urdf";
   const std::string in_space = "solver: {gravity: [0, 0, 0], analysis: eigen, eigen: {modes: 4";
-  const std::string dense = RunnerOutput(urdf, model + in_space + "}}\n", "antenna_dense");
-  const std::string sparse = RunnerOutput(urdf, model + in_space + ", method: sparse}}\n", "antenna_sparse");
+  const std::string dense = test::RunnerOutput(urdf, model + in_space + "}}\n", "antenna_dense");
+  const std::string sparse = test::RunnerOutput(urdf, model + in_space + ", method: sparse}}\n", "antenna_sparse");
   EXPECT_NE(dense.find("(dense): 220 degrees of freedom, 0 rigid-body modes"), std::string::npos) << dense;
   constexpr double kDenseTolerance = 3.0e-5;
   for (int mode = 1; mode <= 4; ++mode) {
-    EXPECT_NEAR(TableFrequency(dense, mode) / TableFrequency(sparse, mode), 1.0, kDenseTolerance)
+    EXPECT_NEAR(test::TableFrequency(dense, mode) / test::TableFrequency(sparse, mode), 1.0, kDenseTolerance)
         << "mode " << mode << "\n" << dense << sparse;
   }
 }

@@ -202,6 +202,10 @@ struct SolverSpec {
   /// Eigen-analysis settings (docs/config.md, "solver.eigen"; docs/theory.md, "Eigen-analysis").
   struct EigenSettings {
     enum class Method { kAuto, kDense, kSparse };
+    /// The state linearised about: the initial one (or its static equilibrium), or the steady rotation at the
+    /// initial rate of the spinning joint (docs/theory.md, "Steady rotation").
+    enum class About { kInitialState, kSteadyState };
+    About about = About::kInitialState;
     int modes = 0;                 ///< modes reported, lowest first; 0 reports all (dense) or 10 (sparse)
     bool static_first = false;     ///< linearise about the static equilibrium instead of the initial state
     Method method = Method::kAuto; ///< dense below 2000 node and variable unknowns, sparse shift-invert above

@@ -83,6 +83,7 @@ struct LinearisedSystem {
   Eigen::SparseMatrix<double> M;  ///< mass (num_kinematic x num_kinematic); zero on joint variables
   Eigen::SparseMatrix<double> B;  ///< constraint Jacobian (num_multipliers x num_kinematic)
   Eigen::SparseMatrix<double> T;  ///< x = T y: node rotation matrices on translations, identity elsewhere
+  Eigen::VectorXd residual;       ///< at the reference: force rows turned by T^T, then constraint rows
 };
 
 /// The state with accelerations (a_prev, alpha_prev, qddot_prev) and multipliers that satisfy the equations of

@@ -316,6 +316,8 @@ LinearisedSystem Linearise(const Model& model, const State& state, ReferenceMoti
   out.K = Pt * (KP + DP * c.X + MP * c.A0);
   out.B = a.B * c.P;
   out.T = c.P;
+  out.residual = a.residual;
+  out.residual.head(Pt.rows()) = Pt * a.residual.head(Pt.rows());
   out.K.prune(0.0);
   out.D.prune(0.0);
   out.B.prune(0.0);

@@ -15,9 +15,14 @@ std::string Format(const char* format, double value) {
   return buffer;
 }
 
+// A damping ratio above this is the round-off of an undamped root, not an instability: the eigensolvers leave
+// Re s at ~eps of the frequency scale w (theory (E5)), a ratio of ~eps w / |s|, e.g. 2e-11 for the lowest modes
+// of the rotating cantilever (w ~ 5e4 rad/s, |s| ~ 4 rad/s), whose undamped roots were reported as flutter.
+constexpr double kRoundOffDampingRatio = -1.0e-9;
+
 const char* Remark(const Mode& mode) {
   if (mode.rigid_body) return "rigid body";
-  if (mode.damping_ratio < 0) return mode.damped_frequency_hz > 0 ? "unstable (flutter)" : "unstable (divergence)";
+  if (mode.damping_ratio < kRoundOffDampingRatio) return mode.damped_frequency_hz > 0 ? "unstable (flutter)" : "unstable (divergence)";
   if (mode.damped_frequency_hz == 0) return "overdamped (real root)";
   return "";
 }

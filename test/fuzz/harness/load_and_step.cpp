@@ -10,6 +10,7 @@
 #include "flexmbd/ros/param_tree.hpp"
 #include "flexmbd/ros/transform_frames.hpp"
 #include "flexmbd/solver/eigen_analysis.hpp"
+#include "flexmbd/solver/steady_rotation.hpp"
 #include "flexmbd/solver/simulation.hpp"
 #include "param_tree_from_yaml.hpp"
 
@@ -37,6 +38,12 @@ void Run(const FuzzInput& input) {
       EigenOptions options;
       options.num_modes = model.solver().eigen.modes;
       options.shift_hz = model.solver().eigen.shift_hz;
+      if (model.solver().eigen.about == SolverSpec::EigenSettings::About::kSteadyState) {
+        const SteadyRotation spin = SteadyRotationOf(model, model.initial_state());
+        const SteadyResult steady = SolveSteadyRotation(model, model.initial_state(), spin);
+        EigenAnalysisAboutSteadyRotation(model, steady.state, spin, options);
+        return;
+      }
       EigenAnalysis(model, model.initial_state(), options);
       return;
     }

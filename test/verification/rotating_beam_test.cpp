@@ -1,0 +1,200 @@
+// Eigen-analysis about a steady rotation (docs/theory.md, "Steady rotation"), through the runner and YAML: the
+// flap and lag frequencies of a uniform rotating cantilever against the published tables, the spin as a
+// rigid-body mode, and the errors of a model that does not spin steadily.
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <iterator>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "flexmbd/common/error.hpp"
+#include "flexmbd/io/config_loader.hpp"
+#include "flexmbd/model/model.hpp"
+#include "flexmbd/solver/steady_rotation.hpp"
+#include "runner_output.hpp"
+
+namespace flexmbd {
+namespace {
+
+const char kUrdf[] = "test/data/urdf/rotating_cantilever.urdf";
+const char kYaml[] = "test/data/yaml/rotating_cantilever.yaml";
+
+// The blade of kYaml: L = 31.623 m, m = 100 kg/m, EI = 1e8 N m^2; frequencies are made non-dimensional by
+// sqrt(EI / (m L^4)) (= 0.999986 rad/s).
+const double kScale = std::sqrt(1.0e8 / (100.0 * std::pow(31.623, 4)));
+
+// First flap frequency omega / kScale of a uniform cantilever with no hub radius at the speeds lambda = Omega /
+// kScale = 0, 2, ..., 12: Hodges and Rutkowski, AIAA J. 19 (1981) 1459-1466, Table 1, and Wright et al., J. Appl.
+// Mech. 49 (1982) 197-202, as tabulated by Hamza-Cherif and Houmat (ICAS 2004, "Natural frequencies of rotating
+// cantilever flexible beams by using the p-version of the finite element method", Table 2) for lambda 2 to 10;
+// 3.5160 = 1.8751^2 (Euler-Bernoulli); 13.1702 at lambda = 12 (Hodges and Rutkowski).
+const double kSpeeds[] = {0, 2, 4, 6, 8, 10, 12};
+const double kFlap[] = {3.5160, 4.1373, 5.5850, 7.3603, 9.2568, 11.2023, 13.1702};
+
+// The tables' five digits are 1.4e-5 of 3.5160 at most, and 10 cubic elements leave the flap frequencies 1e-5
+// low (7e-6 at lambda 0 against 1.8751^2): 3e-5 on flap, amplified up to 5.9 times on lag (below), so 2e-4. The
+// issue asks for 0.5%; measured 2.1e-5 (flap) and 4.6e-5 (lag) at worst (docs/validation.md).
+constexpr double kTableTolerance = 2.0e-4;
+// Lag of the same blade: the in-plane equation is the flap one plus -m Omega^2 v, so omega_lag^2 = omega_flap^2 -
+// Omega^2 exactly for the inextensible beam of the tables; kYaml's EA puts the first axial mode near 5000 rad/s,
+// so the axial-lag Coriolis coupling changes it by ~Omega^2 / omega_axial^2 < 1e-5. The bound is the flap one; the
+// subtraction amplifies the flap error by omega_flap^2 / omega_lag^2 (5.9 at lambda 12).
+double LagOf(double flap, double lambda) { return std::sqrt(flap * flap - lambda * lambda); }
+
+std::string ReadSource(const std::string& relative) {
+  std::ifstream file(std::string(FLEXMBD_SOURCE_DIR) + "/" + relative);
+  std::stringstream text;
+  text << file.rdbuf();
+  return text.str();
+}
+
+// kYaml's beam with the given joints and solver blocks.
+std::string BladeWith(const std::string& joints_and_solver) {
+  const std::string yaml = ReadSource(kYaml);
+  return yaml.substr(0, yaml.find("\njoints:") + 1) + joints_and_solver;
+}
+
+// The frequencies [Hz] of the fan-plot row of `factor` (the columns f1_Hz ...), empty if there is none.
+std::vector<double> FanRow(const std::string& output, double factor) {
+  std::istringstream lines(output.substr(output.find("velocity_scale f1_Hz")));
+  std::string header;
+  std::getline(lines, header);
+  size_t columns = 0;
+  for (size_t at = header.find(" f"); at != std::string::npos; at = header.find(" f", at + 1)) ++columns;
+  for (std::string line; std::getline(lines, line);) {
+    std::istringstream values(line);
+    double parameter = 0;
+    values >> parameter;
+    if (parameter != factor) continue;
+    std::vector<double> row(columns);
+    for (double& f : row) values >> f;
+    return row;
+  }
+  return {};
+}
+
+// Frequency [Hz], damping ratio and remark of row `index` of a printed mode table.
+struct TableRow {
+  double frequency_hz = std::nan(""), damping_ratio = std::nan("");
+  std::string remark;
+};
+
+TableRow ModeRow(const std::string& table, int index) {
+  char row[16];
+  std::snprintf(row, sizeof(row), "\n%4d  ", index);
+  TableRow out;
+  const size_t at = table.find(row);
+  if (at == std::string::npos) return out;
+  const std::string line = table.substr(at + 1, table.find('\n', at + 1) - at - 1);
+  std::istringstream values(line);
+  int mode = 0;
+  double damped = 0;
+  values >> mode >> out.frequency_hz >> damped >> out.damping_ratio;
+  std::getline(values >> std::ws, out.remark);
+  return out;
+}
+
+double NonDimensional(double hz) { return 2 * M_PI * hz / kScale; }
+
+TEST(RotatingBeam, FlapAndLagFrequenciesMatchPublishedTablesUpToSpeed12) {
+  // Initial hub rate kScale, so that each velocity factor is the table's lambda; each point solves its own
+  // steady state. Columns: the spin (0 Hz), then the lag and flap modes, followed across the speeds.
+  std::string factors;
+  for (double lambda : kSpeeds) factors += (factors.empty() ? "" : ", ") + std::to_string(static_cast<int>(lambda));
+  char joints[128];
+  std::snprintf(joints, sizeof(joints), "joints:\n  spin:\n    initial: {velocity: %.17g}\n", kScale);
+  const std::string output = test::RunnerOutput(
+      kUrdf,
+      BladeWith(std::string(joints) + "solver: {gravity: [0, 0, 0], analysis: eigen, eigen: {about: steady_state, "
+                                      "modes: 3, sweep: {velocity_scale: [" + factors + "]}}}\n"),
+      "rotating_cantilever_sweep");
+  for (size_t k = 0; k < std::size(kSpeeds); ++k) {
+    const double lambda = kSpeeds[k];
+    std::vector<double> row = FanRow(output, lambda);
+    ASSERT_EQ(row.size(), 3u) << "lambda " << lambda << "\n" << output;
+    std::sort(row.begin(), row.end());
+    EXPECT_EQ(row[0], 0.0) << "the spin, a rigid-body mode; lambda " << lambda << "\n" << output;
+    const double lag = NonDimensional(row[1]), flap = NonDimensional(row[2]);
+    EXPECT_NEAR(flap / kFlap[k], 1.0, kTableTolerance) << "flap, lambda " << lambda << "\n" << output;
+    EXPECT_NEAR(lag / LagOf(kFlap[k], lambda), 1.0, kTableTolerance) << "lag, lambda " << lambda << "\n" << output;
+    RecordProperty("flap_lag_error_lambda_" + std::to_string(static_cast<int>(lambda)),
+                   std::to_string(flap / kFlap[k] - 1) + " " + std::to_string(lag / LagOf(kFlap[k], lambda) - 1));
+  }
+}
+
+TEST(RotatingBeam, SpinIsOneRigidBodyModeAndTheBendingModesAreUndamped) {
+  // kYaml as it is: the issue's blade at 6 rad/s (lambda 6.00008), where linearising about the unstretched
+  // initial state gave the first flap mode at 3.5 instead of 7.36 and the spin as a damped mode. A conservative
+  // gyroscopic system has purely imaginary roots: the printed damping ratios are round-off, ~eps w / |s| with the
+  // frequency scale w ~ 5e4 rad/s (measured 1e-12 at most), and the report calls none unstable above -1e-9.
+  const std::string output = test::RunnerOutput(kUrdf, ReadSource(kYaml), "rotating_cantilever_table");
+  EXPECT_NE(output.find("1 rigid-body modes"), std::string::npos) << output;
+  const TableRow spin = ModeRow(output, 1);
+  EXPECT_EQ(spin.remark, "rigid body") << output;
+  EXPECT_EQ(spin.frequency_hz, 0.0) << output;
+  constexpr double kUndamped = 1.0e-9;
+  for (int mode = 2; mode <= 4; ++mode) {
+    const TableRow row = ModeRow(output, mode);
+    EXPECT_LT(std::abs(row.damping_ratio), kUndamped) << "mode " << mode << "\n" << output;
+    EXPECT_EQ(row.remark, "") << "mode " << mode << "\n" << output;
+  }
+  // lambda = 6.00008 moves the table values at 6 by 5e-6 (flap) and 1.2e-5 (lag), inside the bound.
+  EXPECT_NEAR(NonDimensional(ModeRow(output, 2).frequency_hz) / LagOf(kFlap[3], 6.0), 1.0, kTableTolerance) << output;
+  EXPECT_NEAR(NonDimensional(ModeRow(output, 3).frequency_hz) / kFlap[3], 1.0, kTableTolerance) << output;
+}
+
+TEST(RotatingBeam, SteadyStateStretchesTheBladeByItsCentrifugalLoad) {
+  // test/data/yaml/spinning_blade.yaml: a 1 m blade (EA 1e7 N, m 2.5 kg/m, 4 cubic elements) on a free hub at
+  // 10 rad/s, without gravity. Reference: the linear bar under m Omega^2 x, tip displacement
+  // u(L) = m Omega^2 L^3 / (3 EA) = 8.333e-6 m, which the cubic elements represent exactly; the geometric
+  // nonlinearity (tension on the stretched radius, the strain measure) is of the order of the strain, 1.25e-5
+  // (measured 1.0e-5): 1e-4 leaves a margin of 8.
+  const Model model = BuildModel(LoadModelSpec(std::string(FLEXMBD_SOURCE_DIR) + "/test/data/urdf/spinning_hub.urdf",
+                                               std::string(FLEXMBD_SOURCE_DIR) + "/test/data/yaml/spinning_blade.yaml"));
+  const SteadyRotation spin = SteadyRotationOf(model, model.initial_state());
+  const SteadyResult steady = SolveSteadyRotation(model, model.initial_state(), spin);
+  const double tip = steady.state.nodes[model.beams()[0].nodes.back()].x.norm() - 1.0;
+  const double expected = 2.5 * 100.0 / (3 * 1.0e7);
+  RecordProperty("tip_stretch_error", std::to_string(tip / expected - 1));
+  constexpr double kStretchTolerance = 1.0e-4;
+  EXPECT_NEAR(tip / expected, 1.0, kStretchTolerance) << tip;
+  // No load turns the hub: its holding torque is round-off of the root's moments (1e-9 of m Omega^2 L^3 / 2).
+  EXPECT_LT(std::abs(steady.hub_effort), 1.0e-9 * 125.0) << steady.hub_effort;
+}
+
+// The ConfigError of loading and building kUrdf with `yaml`, or "" if there is none.
+std::string BuildError(const std::string& yaml) {
+  try {
+    BuildModel(LoadModelSpecFromStrings(ReadSource(kUrdf), "rotating_cantilever.urdf", YAML::Load(yaml),
+                                        "steady.yaml"));
+  } catch (const ConfigError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(RotatingBeam, SteadyStateSettingsAreCheckedWhenLoaded) {
+  const std::string beam = BladeWith("");
+  EXPECT_NE(BuildError(beam + "solver: {analysis: eigen, eigen: {about: spinning}}")
+                .find("steady.yaml: solver.eigen.about"),
+            std::string::npos);
+  EXPECT_NE(BuildError(beam + "solver: {analysis: eigen, eigen: {about: steady_state, static_first: true}}")
+                .find("steady.yaml: solver.eigen.static_first: true cannot go with about: steady_state"),
+            std::string::npos);
+}
+
+TEST(RotatingBeam, ModelThatDoesNotSpinIsABadInput) {
+  // No initial rate on the hub: the runner exits 2 (bad input) and names the field.
+  const std::string output = test::RunnerOutput(
+      kUrdf, BladeWith("solver: {analysis: eigen, eigen: {about: steady_state}}\n"), "not_spinning", 2);
+  EXPECT_NE(output.find("joints.*.initial.velocity: no joint has a rate"), std::string::npos) << output;
+}
+
+}  // namespace
+}  // namespace flexmbd
