@@ -386,7 +386,7 @@ TEST(EigenSweep, HingedArmFrequencyIsProportionalToHubSpeed) {
 
 TEST(EigenAnalysis, SteadyRotationOfDrivenHubKeepsTheDriveAndAddsNoRigidMode) {
   // Reference as above. The drive holds the hub in the steady solve and in the modes, so the spin is no degree of
-  // freedom and no rigid-body mode is added (docs/theory.md (S2)-(S4)); the arm's radial steady state is the
+  // freedom and no rigid-body mode is added (docs/theory.md (R2)-(R4)); the arm's radial steady state is the
   // initial state, so the frequency is the one about the initial state.
   const double spin = 12.0;
   const Model model = BuildModel(DrivenHingedArm(spin));

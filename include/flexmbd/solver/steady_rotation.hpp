@@ -1,7 +1,7 @@
 #pragma once
 /// @file
 /// Steady rotation (relative equilibrium) of a system whose spinning joint turns at a constant rate, and
-/// eigen-analysis about it (docs/theory.md, "Steady rotation", eqs. (S1)-(S4)). The rotating part turns rigidly
+/// eigen-analysis about it (docs/theory.md, "Steady rotation", eqs. (R1)-(R4)). The rotating part turns rigidly
 /// about a fixed axis at the speed Omega; in the frame turning with it the configuration is still, stretched by
 /// the centrifugal forces and deflected by gravity and steady loads.
 ///
@@ -40,7 +40,7 @@ SteadyRotation SteadyRotationOf(const Model& model, const State& state);
 /// The same rotation `factor` times as fast (a fan plot's speed).
 SteadyRotation ScaleSpeed(const SteadyRotation& rotation, double factor);
 
-/// The state's configuration in steady rotation (theory (S1)): v = Omega x (x - c), w = R^T Omega,
+/// The state's configuration in steady rotation (theory (R1)): v = Omega x (x - c), w = R^T Omega,
 /// v' = Omega x v and w' = 0 on turning nodes, zero on the others; the spinning variable at its rate, every
 /// other joint rate and acceleration zero.
 State WithSteadyMotion(const Model& model, const State& state, const SteadyRotation& rotation);
@@ -52,13 +52,13 @@ struct SteadyResult {
   double hub_effort = 0.0;  ///< torque (or force) that holds the spinning variable's rate [N m or N]; 0 if driven
 };
 
-/// Solves the equations of motion with the motion of (S1) for the configuration and multipliers (theory (S2)),
+/// Solves the equations of motion with the motion of (R1) for the configuration and multipliers (theory (R2)),
 /// from the configuration of `start`, raising the speed in solver.load_steps equal steps. The spinning
 /// variable's angle is held where `start` has it (a motor holding its rate; a drive on it holds it instead).
 /// Throws SolverError naming the worst unknown if Newton does not converge within solver.max_iterations.
 SteadyResult SolveSteadyRotation(const Model& model, const State& start, const SteadyRotation& rotation);
 
-/// Eigen-analysis about a steady state (theory (S3)-(S4)): the equations linearised about it with the rate of
+/// Eigen-analysis about a steady state (theory (R3)-(R4)): the equations linearised about it with the rate of
 /// the spinning variable held (a governed rotor), so that the rigid rotation about the spin axis is one
 /// rigid-body mode of zero frequency, listed first, and the rest are the modes at constant speed.
 EigenResult EigenAnalysisAboutSteadyRotation(const Model& model, const State& steady, const SteadyRotation& rotation,

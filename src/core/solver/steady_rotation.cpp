@@ -1,4 +1,4 @@
-// Steady rotation and eigen-analysis about it (docs/theory.md, "Steady rotation", eqs. (S1)-(S4)).
+// Steady rotation and eigen-analysis about it (docs/theory.md, "Steady rotation", eqs. (R1)-(R4)).
 
 #include "flexmbd/solver/steady_rotation.hpp"
 
@@ -120,7 +120,7 @@ struct Increment {
   int unknown = 0;
 };
 
-// One Newton iteration of (S2): solves [K G^T e_h; B 0 0; e_h^T 0 0] (y, dlambda, tau) = -(r, Phi, 0) with the
+// One Newton iteration of (R2): solves [K G^T e_h; B 0 0; e_h^T 0 0] (y, dlambda, tau) = -(r, Phi, 0) with the
 // hold column e_h on the spinning variable (when held), and applies y and dlambda. `hub_effort` receives tau.
 Increment NewtonIteration(const Model& model, const SteadyRotation& rotation, State* state, double* hub_effort) {
   const LinearisedSystem s = Linearise(model, *state, ReferenceMotion::kFromState);
@@ -199,7 +199,7 @@ EigenResult EigenAnalysisAboutSteadyRotation(const Model& model, const State& st
                                              const EigenOptions& options) {
   LinearisedSystem system = Linearise(model, steady, ReferenceMotion::kFromState);
   if (!Held(model, rotation)) return SolveModes(model, system, options);
-  // (S3): the hold row dq = 0 on the spinning variable joins the constraints.
+  // (R3): the hold row dq = 0 on the spinning variable joins the constraints.
   const int nk = static_cast<int>(system.B.cols()), m = static_cast<int>(system.B.rows());
   Eigen::SparseMatrix<double> B(m + 1, nk);
   Triplets t;
@@ -210,7 +210,7 @@ EigenResult EigenAnalysisAboutSteadyRotation(const Model& model, const State& st
   B.setFromTriplets(t.begin(), t.end());
   system.B = B;
   EigenResult result = SolveModes(model, system, options);
-  // (S4): the rigid rotation about the spin axis, per radian, as the first mode.
+  // (R4): the rigid rotation about the spin axis, per radian, as the first mode.
   Mode rigid;
   rigid.rigid_body = true;
   Eigen::VectorXd shape = Eigen::VectorXd::Zero(nk);
