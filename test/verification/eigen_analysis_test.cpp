@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "case_builders.hpp"
+#include "runner_output.hpp"
 #include "flexmbd/common/error.hpp"
 #include "flexmbd/io/config_loader.hpp"
 #include "flexmbd/solver/sparse_system.hpp"
@@ -554,41 +555,13 @@ TEST(EigenConfig, SolverEigenBlockIsReadFromYaml) {
   }
 }
 
-// Runs flexmbd_run on a URDF of the source tree with the given YAML text; returns its output, which must
-// report exit 0.
-std::string RunnerOutput(const std::string& urdf, const std::string& yaml_text, const std::string& name) {
-  const std::string yaml = testing::TempDir() + name + ".yaml";
-  std::ofstream(yaml) << yaml_text;
-  const std::string out = testing::TempDir() + name + ".txt";
-  const std::string command = std::string(FLEXMBD_RUNNER) + " --urdf " + FLEXMBD_SOURCE_DIR + "/" + urdf +
-                              " --config " + yaml + " > " + out + " 2>&1";
-  const int status = std::system(command.c_str());
-  std::ifstream file(out);
-  std::stringstream text;
-  text << file.rdbuf();
-  EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << text.str();
-  return text.str();
-}
-
-// The frequency [Hz] of mode `index` in a printed mode table, or NaN when the row is missing.
-double TableFrequency(const std::string& table, int index) {
-  char row[16];
-  std::snprintf(row, sizeof(row), "\n%4d  ", index);
-  const size_t at = table.find(row);
-  double frequency = std::nan("");
-  if (at != std::string::npos) std::sscanf(table.c_str() + at, " %*d %lf", &frequency);
-  return frequency;
-}
-
-// The table prints 8 significant digits.
-constexpr double kPrintedTolerance = 1.0e-7;
-
 TEST(EigenRunner, PrintsModeTableOfUrdfPendulum) {
   // Reference: test/data/urdf/pendulum.urdf, m = 2 kg, l = 0.5 m, I_yy = 0.17 kg m^2 about the centre of mass:
   // f = sqrt(m g l / (I + m l^2)) / 2 pi = 0.609 Hz, linearised about the static equilibrium.
-  const std::string table = RunnerOutput("test/data/urdf/pendulum.urdf",
+  const std::string table = test::RunnerOutput("test/data/urdf/pendulum.urdf",
                                          "solver: {analysis: eigen, eigen: {static_first: true}}\n", "eigen_runner");
-  EXPECT_NEAR(TableFrequency(table, 1) / Hz(std::sqrt(2.0 * kG * 0.5 / (0.17 + 2.0 * 0.25))), 1.0, kPrintedTolerance)
+  EXPECT_NEAR(test::TableFrequency(table, 1) / Hz(std::sqrt(2.0 * kG * 0.5 / (0.17 + 2.0 * 0.25))), 1.0,
+              test::kPrintedTolerance)
       << table;
 }
 
@@ -608,12 +581,12 @@ TEST(EigenRunner, DampedFlexibleAntennaKeepsItsDeploymentModesAtDefaultSettings)
   const std::string model = yaml.substr(0, solver + 1) + yaml.substr(output + 1);
   const std::string urdf = "config/antenna/antenna.urdf";
   const std::string in_space = "solver: {gravity: [0, 0, 0], analysis: eigen, eigen: {modes: 4";
-  const std::string dense = RunnerOutput(urdf, model + in_space + "}}\n", "antenna_dense");
-  const std::string sparse = RunnerOutput(urdf, model + in_space + ", method: sparse}}\n", "antenna_sparse");
+  const std::string dense = test::RunnerOutput(urdf, model + in_space + "}}\n", "antenna_dense");
+  const std::string sparse = test::RunnerOutput(urdf, model + in_space + ", method: sparse}}\n", "antenna_sparse");
   EXPECT_NE(dense.find("(dense): 220 degrees of freedom, 0 rigid-body modes"), std::string::npos) << dense;
   constexpr double kDenseTolerance = 3.0e-5;
   for (int mode = 1; mode <= 4; ++mode) {
-    EXPECT_NEAR(TableFrequency(dense, mode) / TableFrequency(sparse, mode), 1.0, kDenseTolerance)
+    EXPECT_NEAR(test::TableFrequency(dense, mode) / test::TableFrequency(sparse, mode), 1.0, kDenseTolerance)
         << "mode " << mode << "\n" << dense << sparse;
   }
 }
