@@ -57,7 +57,7 @@ std::unique_ptr<TypicalSectionAero> MakeAeroSection(const Model& model, const st
     const double alignment = AxisInWorld(model, *joints[k]).dot(directions[k]);
     if (std::abs(std::abs(alignment) - 1.0) > kAlignment) {
       std::ostringstream msg;
-      msg << role_field << ": joint '" << *names[k] << "' moves along/about an axis at cosine " << alignment
+      msg << role_field << ": joint '" << *names[k] << "' moves along/about an axis at cosine " << alignment + 0.0
           << " to the world " << (k == 0 ? "z" : "y") << " axis; expected the " << (k == 0 ? "z" : "y")
           << " axis (free stream along +x, lift along +z)";
       throw ConfigError(msg.str());
