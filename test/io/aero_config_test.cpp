@@ -43,7 +43,7 @@ TEST(AeroConfig, SectionWithDefaults) {
   EXPECT_EQ(s.inflow_states, 6);
   const Model model = BuildModel(spec);
   EXPECT_EQ(model.num_element_states(), 6);
-  EXPECT_EQ(model.DescribeUnknown(model.element_state_unknown(0)), "aero section conner lambda_1");
+  EXPECT_EQ(model.DescribeUnknown(model.element_state_unknown(0)), "aero section conner mu_1");
 }
 
 TEST(AeroConfig, AllKeysRead) {

@@ -2,7 +2,8 @@
 /// @file
 /// The aerodynamic element of a typical section (docs/theory.md, (A6)): the generalised thin-airfoil loads of
 /// ThinAirfoilLoads on the plunge, pitch and flap joint variables, and Peters' inflow states as states of its
-/// own. Positions come from the joint variables; rates and accelerations from the velocities of the three bodies'
+/// own, in the variables mu = lambda - Abar^-1 cbar (w0 + w1/2) that no acceleration drives (A6). Positions come
+/// from the joint variables; rates and accelerations from the velocities of the three bodies'
 /// nodes (the scheme's own, so that the apparent-mass terms act as inertia does in each scheme).
 
 #include <string>
@@ -31,7 +32,7 @@ class TypicalSectionAero : public Element {
 
   int num_states() const override { return inflow_.b.size(); }
   double StateScale(int) const override { return velocity_; }
-  std::string StateName(int k) const override { return "lambda_" + std::to_string(k + 1); }
+  std::string StateName(int k) const override { return "mu_" + std::to_string(k + 1); }
   std::string StateOwnerName() const override { return "aero section " + name_; }
   const std::string& name() const { return name_; }
 
@@ -54,6 +55,8 @@ class TypicalSectionAero : public Element {
     Eigen::Matrix<double, Eigen::Dynamic, 1, 0, kMaxInflowStates, 1> lambda, lambda_rate;
   };
   Motion Evaluate(const StepContext& ctx) const;
+  // lambda0 = bbar^T lambda / 2 with lambda = mu + Abar^-1 cbar ew^T q' (A6).
+  double Lambda0(const Motion& m) const;
   // d(rate)/d(end node rate) and d(acceleration)/d(end node rate) of the scheme in ctx's mode.
   void RateFactors(const StepContext& ctx, double* rate, double* acceleration) const;
 
@@ -63,6 +66,9 @@ class TypicalSectionAero : public Element {
   double velocity_, density_, span_;
   Coordinate coordinates_[3];
   Eigen::Matrix<double, 3, 9> rates_;  ///< rows: the coordinates' rate weights
+  Eigen::VectorXd lag_;                ///< Abar^-1 cbar: lambda - mu per unit ew^T q'
+  double lag0_ = 0;                    ///< bbar^T Abar^-1 cbar / 2: lambda0 - bbar^T mu / 2 per unit ew^T q'
+
 };
 
 }  // namespace flexmbd

@@ -31,6 +31,14 @@ TypicalSectionAero::TypicalSectionAero(const AeroSectionSpec& spec, const int no
     rates_.row(k) = coordinates[k].rate.transpose();
   }
   for (int k = 0; k < spec.inflow_states; ++k) unknowns_.push_back(first_state_unknown + k);
+  if (spec.inflow_states > 0) {
+    lag_ = inflow_.A.partialPivLu().solve(inflow_.c);
+    lag0_ = 0.5 * inflow_.b.dot(lag_);
+  }
+}
+
+double TypicalSectionAero::Lambda0(const Motion& m) const {
+  return num_states() > 0 ? 0.5 * inflow_.b.dot(m.lambda) + lag0_ * loads_.ew.dot(m.qd) : 0.0;
 }
 
 void TypicalSectionAero::RateFactors(const StepContext& ctx, double* rate, double* acceleration) const {
@@ -77,18 +85,20 @@ TypicalSectionAero::Motion TypicalSectionAero::Evaluate(const StepContext& ctx) 
 void TypicalSectionAero::AddResidual(const StepContext& ctx, Eigen::Ref<Eigen::VectorXd> r,
                                      Eigen::Ref<Eigen::VectorXd> magnitude) const {
   const Motion m = Evaluate(ctx);
-  const double lambda0 = num_states() > 0 ? 0.5 * inflow_.b.dot(m.lambda) : 0.0;
-  const Vec3 Q = span_ * loads_.Forces(density_, velocity_, m.q, m.qd, m.qdd, lambda0);
+  const Vec3 Q = span_ * loads_.Forces(density_, velocity_, m.q, m.qd, m.qdd, Lambda0(m));
   for (int k = 0; k < 3; ++k) {
     r[kFirstVariable + k] -= coordinates_[k].sign * Q[k];
     magnitude[kFirstVariable + k] += std::abs(Q[k]);
   }
-  // Peters' inflow (A1): Abar lambda' + (U/b) lambda - cbar (ew^T q'' + U eg^T q') = 0.
-  const double forcing = loads_.ew.dot(m.qdd) + velocity_ * loads_.eg.dot(m.qd);
+  // Peters' inflow (A1) in the states mu = lambda - Abar^-1 cbar ew^T q' (A6):
+  // Abar mu' + (U/b) mu - [cbar U eg - (U/b) Abar^-1 cbar ew]^T q' = 0.
+  const double decay_rate = velocity_ / loads_.semichord;
+  const double slope = velocity_ * loads_.eg.dot(m.qd), rate = decay_rate * loads_.ew.dot(m.qd);
   for (int i = 0; i < num_states(); ++i) {
-    const double lag = inflow_.A.row(i).dot(m.lambda_rate), decay = velocity_ / loads_.semichord * m.lambda[i];
-    r[kFirstState + i] += lag + decay - inflow_.c[i] * forcing;
-    magnitude[kFirstState + i] += std::abs(lag) + std::abs(decay) + std::abs(inflow_.c[i] * forcing);
+    const double lag = inflow_.A.row(i).dot(m.lambda_rate), decay = decay_rate * m.lambda[i];
+    const double forcing = inflow_.c[i] * slope - lag_[i] * rate;
+    r[kFirstState + i] += lag + decay - forcing;
+    magnitude[kFirstState + i] += std::abs(lag) + std::abs(decay) + std::abs(forcing);
   }
 }
 
@@ -114,13 +124,14 @@ void TypicalSectionAero::AddRateParts(const StepContext& ctx, Eigen::Ref<Eigen::
                                       Eigen::Ref<Eigen::MatrixXd> M) const {
   const double U = velocity_, rho = density_, b = loads_.semichord;
   const double circulation = 2.0 * M_PI * rho * U * b;
-  const Mat3 dQdqd = -span_ * (rho * U * loads_.Cnc + circulation * loads_.es * loads_.ew.transpose());
+  const Mat3 dQdqd = -span_ * (rho * U * loads_.Cnc + circulation * (loads_.es - lag0_ * loads_.ef) * loads_.ew.transpose());
   const Mat3 dQdqdd = -span_ * rho * loads_.Ma;
   double rate = 0, acceleration = 0;
   RateFactors(ctx, &rate, &acceleration);
   // Columns of the node rates: through q' = rates_ u and q'' = rates_ u' (or the mean acceleration).
   const Eigen::Matrix<double, 3, 9> dQdu = dQdqd * rates_, dQdud = dQdqdd * rates_;
-  const Eigen::Matrix<double, 1, 9> dFdu = -U * loads_.eg.transpose() * rates_, dFdud = -loads_.ew.transpose() * rates_;
+  const Eigen::Matrix<double, 1, 9> slope = -U * loads_.eg.transpose() * rates_;
+  const Eigen::Matrix<double, 1, 9> decay = U / b * loads_.ew.transpose() * rates_;
   Eigen::Ref<Eigen::MatrixXd> acceleration_part = ctx.mode == AnalysisMode::kDynamic ? D : M;
   const double acceleration_factor = ctx.mode == AnalysisMode::kDynamic ? acceleration : 1.0;
   for (int k = 0; k < 3; ++k) {
@@ -129,8 +140,7 @@ void TypicalSectionAero::AddRateParts(const StepContext& ctx, Eigen::Ref<Eigen::
     acceleration_part.block<1, kNodeColumns>(kFirstVariable + k, 0) -= s * acceleration_factor * dQdud.row(k);
   }
   for (int i = 0; i < num_states(); ++i) {
-    D.block<1, kNodeColumns>(kFirstState + i, 0) += inflow_.c[i] * rate * dFdu;
-    acceleration_part.block<1, kNodeColumns>(kFirstState + i, 0) += inflow_.c[i] * acceleration_factor * dFdud;
+    D.block<1, kNodeColumns>(kFirstState + i, 0) += rate * (inflow_.c[i] * slope + lag_[i] * decay);
     for (int j = 0; j < num_states(); ++j) D(kFirstState + i, kFirstState + j) += inflow_.A(i, j);
   }
 }
@@ -148,8 +158,7 @@ void TypicalSectionAero::AddStepWork(const StepContext& ctx, StepWork* work) con
 
 Vec3 TypicalSectionAero::SectionLoads(const StepContext& ctx) const {
   const Motion m = Evaluate(ctx);
-  const double lambda0 = num_states() > 0 ? 0.5 * inflow_.b.dot(m.lambda) : 0.0;
-  Vec3 Q = span_ * loads_.Forces(density_, velocity_, m.q, m.qd, m.qdd, lambda0);
+  Vec3 Q = span_ * loads_.Forces(density_, velocity_, m.q, m.qd, m.qdd, Lambda0(m));
   Q[0] = -Q[0];  // h is positive down: its generalised force is minus the lift
   return Q;
 }
