@@ -6,7 +6,7 @@ namespace flexmbd {
 namespace io {
 
 const std::vector<std::string>& YamlSectionNames() {
-  static const std::vector<std::string> names{"beams", "joints", "solver", "output", "loads"};
+  static const std::vector<std::string> names{"beams", "joints", "solver", "output", "loads", "aero"};
   return names;
 }
 
@@ -19,6 +19,7 @@ void ApplyYamlOverlay(const YAML::Node& params, const std::string& params_name, 
   ReadOutput(root.Child("output"), &model->spec.output);
   ReadBeamStations(root.Child("output"), *model, &model->spec.output);
   ReadLoads(root.Child("loads"), *model, &model->spec.loads);
+  ReadAero(root.Child("aero"), *model, &model->spec.aero_sections);
 }
 
 }  // namespace io

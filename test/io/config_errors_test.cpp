@@ -289,7 +289,7 @@ TEST(ConfigErrors, PointOnMomentIsRejected) {
 TEST(ConfigErrors, NonMapDocumentIsRejected) {
   EXPECT_CONFIG_ERROR(
       Pendulum("just text"),
-      "pendulum.yaml: 'just text' is not a map; expected a map with keys beams, joints, solver, output, loads");
+      "pendulum.yaml: 'just text' is not a map; expected a map with keys beams, joints, solver, output, loads, aero");
 }
 
 TEST(ConfigErrors, ErrorFloorIsReadAndChecked) {

@@ -76,15 +76,20 @@ inline Eigen::MatrixXd LocalTangent(const Element& e, const StepContext& ctx) {
   return J;
 }
 
-// Central differences of an element's residual with respect to the end rates (v_f, w_f, qdot_f), or with
+// Central differences of an element's residual with respect to the end rates (v_f, w_f, qdot_f, element state
+// rates), or with
 // `accelerations` the end accelerations (vdot_f, wdot_f), of each local unknown, all else held: the reference
 // for Element::AddRateParts. Multiplier columns and variable accelerations are left zero (no element reads them).
 inline Eigen::MatrixXd RateDifferences(const Element& e, StepContext ctx, bool accelerations, double step) {
   std::vector<NodeStep> nodes = ctx.nodes != nullptr ? *ctx.nodes : std::vector<NodeStep>{};
   std::vector<VariableStep> variables = ctx.variables != nullptr ? *ctx.variables : std::vector<VariableStep>{};
+  std::vector<ElementStateStep> states =
+      ctx.element_states != nullptr ? *ctx.element_states : std::vector<ElementStateStep>{};
   ctx.nodes = &nodes;
   ctx.variables = &variables;
+  ctx.element_states = &states;
   const int node_unknowns = 6 * static_cast<int>(nodes.size());
+  const int state_unknowns = node_unknowns + static_cast<int>(variables.size());
   Eigen::MatrixXd differences = Eigen::MatrixXd::Zero(e.num_local(), e.num_local());
   for (int j = 0; j < e.num_local(); ++j) {
     const int u = e.unknowns()[j];
@@ -95,6 +100,8 @@ inline Eigen::MatrixXd RateDifferences(const Element& e, StepContext ctx, bool a
       rate = &moved[u % 3];
     } else if (u - node_unknowns < static_cast<int>(variables.size()) && !accelerations) {
       rate = &variables[u - node_unknowns].qdot_f;
+    } else if (u - state_unknowns >= 0 && u - state_unknowns < static_cast<int>(states.size()) && !accelerations) {
+      rate = &states[u - state_unknowns].rate;
     }
     if (rate == nullptr) continue;
     const double held = *rate;

@@ -569,16 +569,13 @@ TEST(EigenConfig, SolverEigenBlockIsReadFromYaml) {
   }
 }
 
-// The table prints 8 significant digits.
-constexpr double kPrintedTolerance = 1.0e-7;
-
 TEST(EigenRunner, PrintsModeTableOfUrdfPendulum) {
   // Reference: test/data/urdf/pendulum.urdf, m = 2 kg, l = 0.5 m, I_yy = 0.17 kg m^2 about the centre of mass:
   // f = sqrt(m g l / (I + m l^2)) / 2 pi = 0.609 Hz, linearised about the static equilibrium.
-  const std::string table = test::RunnerOutput(
-      "test/data/urdf/pendulum.urdf", "solver: {analysis: eigen, eigen: {static_first: true}}\n", "eigen_runner");
+  const std::string table = test::RunnerOutput("test/data/urdf/pendulum.urdf",
+                                         "solver: {analysis: eigen, eigen: {static_first: true}}\n", "eigen_runner");
   EXPECT_NEAR(test::TableFrequency(table, 1) / Hz(std::sqrt(2.0 * kG * 0.5 / (0.17 + 2.0 * 0.25))), 1.0,
-              kPrintedTolerance)
+              test::kPrintedTolerance)
       << table;
 }
 

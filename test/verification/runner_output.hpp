@@ -41,5 +41,8 @@ inline double TableFrequency(const std::string& table, int index) {
   return frequency;
 }
 
+// The table prints 8 significant digits.
+constexpr double kPrintedTolerance = 1.0e-7;
+
 }  // namespace test
 }  // namespace flexmbd

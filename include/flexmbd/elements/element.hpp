@@ -76,6 +76,16 @@ struct VariableStep {
   double dqdotf_dq = 0;  ///< the scheme's d qdot_f / d dq (kEndPoint only; AddSchemeRateTerms)
 };
 
+/// One element state's start and trial-end values, and the value and rate its equations are evaluated at
+/// (docs/theory.md, "Element states", (S1)-(S3)).
+struct ElementStateStep {
+  double x_i = 0, x_f = 0;  ///< start and trial-end value
+  double value = 0;         ///< where the element's equations read the state: mid-step, or the end
+  double rate = 0;          ///< the state's rate there: (x_f - x_i)/h mid-step, 0 static, the scheme's end rate
+  double drate = 0;         ///< d rate / d increment of the scheme (AddSchemeRateTerms); d value / d increment is
+                            ///< StepContext::mid_rate()
+};
+
 /// What an element may read during one evaluation.
 struct StepContext {
   AnalysisMode mode = AnalysisMode::kDynamic;
@@ -87,6 +97,7 @@ struct StepContext {
   const std::vector<VariableStep>* variables = nullptr;
   const Eigen::VectorXd* lambda = nullptr;  ///< trial multipliers (num_multipliers)
   const std::vector<EffectState>* effects = nullptr;  ///< trial modes of the effects with modes
+  const std::vector<ElementStateStep>* element_states = nullptr;  ///< every element's own states (Model order)
   /// Add the stress-dependent (geometric) terms to the tangent: the second derivatives of constraint forces and
   /// loads, and in a dynamic step the geometric stiffness of beam section forces.
   bool geometric_stiffness = false;
@@ -139,7 +150,7 @@ class Element {
 
   /// Adds the rate parts of the local tangent: D = dr/d(end rates) and M = dr/d(end accelerations), both
   /// num_local x num_local, columns in local order (node translation rates v_f, body-frame rotation rates w_f,
-  /// joint variable rates qdot_f; multiplier columns stay zero). Only called when HasRateParts(ctx.mode).
+  /// joint variable rates qdot_f, element state rates; multiplier columns stay zero). Only called when HasRateParts(ctx.mode).
   virtual void AddRateParts(const StepContext& /*ctx*/, Eigen::Ref<Eigen::MatrixXd> /*D*/,
                             Eigen::Ref<Eigen::MatrixXd> /*M*/) const {}
 
@@ -162,6 +173,20 @@ class Element {
   /// Writes the element's history after the accepted step ctx (only called when history_size() > 0).
   virtual void RecordHistory(const StepContext& /*ctx*/, Eigen::VectorXd* /*history*/) const {}
 
+  /// Number of first-order states the element owns (DESIGN.md "Elements may own states"): unknowns of their own
+  /// whose rows are the element's first-order equations F(rate, value, ...) = 0 (docs/theory.md, (S1)).
+  virtual int num_states() const { return 0; }
+  /// The size at which the element's state k is measured [its units]: the local error test's floor is
+  /// error_tol / 1000 of it (docs/theory.md, (T12)).
+  virtual double StateScale(int /*k*/) const { return 1.0; }
+  /// Name of state k in messages and outputs, e.g. "lambda_0".
+  virtual std::string StateName(int k) const { return "state " + std::to_string(k); }
+  /// Name of the element in messages about its states.
+  virtual std::string StateOwnerName() const { return "element " + std::to_string(index_); }
+  /// Index of the element's first state in State::element_states (set by the model builder; -1: none).
+  int first_state() const { return first_state_; }
+  void set_first_state(int first) { first_state_ = first; }
+
   /// Position in Model::elements(), which indexes State::element_history and StepContext::element_alpha.
   int index() const { return index_; }
   /// Set once by the model builder.
@@ -177,6 +202,7 @@ class Element {
 
  private:
   int index_ = -1;
+  int first_state_ = -1;
 };
 
 /// Adds to J the rate parts of an element combined with the scheme's coefficients of ctx, column by column:

@@ -1,12 +1,14 @@
 #pragma once
 /// @file
 /// Model: what does not change during a run, frozen at build: nodes, elements, the unknown layout and the
-/// initial State. Unknowns are ordered [node increments (6 per node) | joint variables | multipliers].
+/// initial State. Unknowns are ordered [node increments (6 per node) | joint variables | element states |
+/// multipliers] (docs/theory.md, "Unknowns"; element states: (S1)).
 
 #include <memory>
 #include <string>
 #include <vector>
 
+#include "flexmbd/aero/typical_section_aero.hpp"
 #include "flexmbd/effects/friction_effect.hpp"
 #include "flexmbd/effects/joint_stop.hpp"
 #include "flexmbd/effects/modal_effect.hpp"
@@ -65,12 +67,23 @@ class Model {
   const std::string& node_name(int node) const { return node_names_[node]; }
   int num_variables() const { return num_variables_; }
   int num_multipliers() const { return num_multipliers_; }
-  int num_unknowns() const { return 6 * num_nodes_ + num_variables_ + num_multipliers_; }
+  /// Number of states the elements own (Element::num_states(), summed): State::element_states.
+  int num_element_states() const { return num_element_states_; }
+  int num_unknowns() const { return 6 * num_nodes_ + num_variables_ + num_element_states_ + num_multipliers_; }
+  /// Node, joint variable and element state unknowns: the second-order ones (nodes, variables) and the
+  /// first-order ones (element states), everything but the multipliers.
+  int num_kinematic() const { return 6 * num_nodes_ + num_variables_ + num_element_states_; }
   int node_unknown(int node) const { return 6 * node; }
   int variable_unknown(int variable) const { return 6 * num_nodes_ + variable; }
-  int multiplier_unknown(int multiplier) const { return 6 * num_nodes_ + num_variables_ + multiplier; }
-  /// True for rows that are generalised-force balances (node and variable unknowns), false for constraints.
-  bool is_force_row(int unknown) const { return unknown < 6 * num_nodes_ + num_variables_; }
+  int element_state_unknown(int k) const { return 6 * num_nodes_ + num_variables_ + k; }
+  int multiplier_unknown(int multiplier) const { return num_kinematic() + multiplier; }
+  /// True for rows that are equations of motion: generalised-force balances (node and variable unknowns) and the
+  /// elements' first-order state equations; false for constraints.
+  bool is_force_row(int unknown) const { return unknown < num_kinematic(); }
+  /// True for the rows (and unknowns) of element states.
+  bool is_state_row(int unknown) const {
+    return unknown >= 6 * num_nodes_ + num_variables_ && unknown < num_kinematic();
+  }
 
   const std::vector<std::unique_ptr<Element>>& elements() const { return elements_; }
   const std::vector<const Joint*>& joints() const { return joints_; }
@@ -85,6 +98,8 @@ class Model {
   /// Every effect with modes; effect k keeps its mode in State::effects[k].
   const std::vector<const ModalEffect*>& modal_effects() const { return modal_effects_; }
   const std::vector<FrictionInfo>& frictions() const { return frictions_; }
+  /// The aerodynamic sections (aero.sections), in the order given.
+  const std::vector<const TypicalSectionAero*>& aero_sections() const { return aero_sections_; }
   /// The friction elements, in frictions() order.
   const std::vector<const FrictionEffect*>& friction_effects() const { return friction_effects_; }
   /// Name of each joint variable: the joint name, with "/k" appended for the k-th of several.
@@ -108,7 +123,7 @@ class Model {
  private:
   friend Model BuildModel(const ModelSpec& spec);
   friend class VariableEffectsBuilder;  ///< BuildModel's helper for the effects on a joint variable
-  int num_nodes_ = 0, num_variables_ = 0, num_multipliers_ = 0;
+  int num_nodes_ = 0, num_variables_ = 0, num_element_states_ = 0, num_multipliers_ = 0;
   std::vector<std::unique_ptr<Element>> elements_;
   std::vector<const Joint*> joints_;
   std::vector<const RigidBody*> rigid_bodies_;
@@ -120,10 +135,12 @@ class Model {
   std::vector<const ModalEffect*> modal_effects_;
   std::vector<FrictionInfo> frictions_;
   std::vector<const FrictionEffect*> friction_effects_;
+  std::vector<const TypicalSectionAero*> aero_sections_;
   std::vector<std::string> node_names_;  ///< "body <name>" or "beam <name> node <k>", per node
   std::vector<std::string> variable_names_;
   std::vector<bool> driven_;  ///< per variable
   std::vector<std::string> multiplier_names_;
+  std::vector<std::string> element_state_names_;  ///< "<owner> <state name>", per element state
   SolverSpec solver_;
   OutputSpec output_;
   State initial_state_;

@@ -3,7 +3,9 @@
 /// Plain-data description of a mechanism, produced by the loader (URDF + YAML) or written by hand in
 /// tests, and turned into a frozen Model by BuildModel(). No behaviour lives here.
 
+#include <functional>
 #include <map>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -226,6 +228,32 @@ struct OutputSpec {
   bool allow_large_output = false;
 };
 
+/// A typical section carrying unsteady thin-airfoil loads (docs/config.md, "aero"; docs/theory.md, (A1)-(A6)):
+/// three joints give its plunge, pitch and flap; the free stream blows along +x of the world, lift along +z.
+struct AeroSectionSpec {
+  std::string name;
+  std::string plunge, pitch, flap;  ///< joint names: prismatic (plunge), revolutes (pitch, flap)
+  double semichord = 0.0;           ///< b [m]
+  double a = 0.0;                   ///< elastic axis (the pitch joint) at a b aft of mid-chord, -1 < a < 1
+  double c = 0.0;                   ///< flap hinge at c b aft of mid-chord, -1 < c < 1
+  double span = 1.0;                ///< the section's span: the loads are per unit span times this [m]
+  double velocity = 0.0;            ///< free-stream speed U [m/s]
+  double density = 1.225;           ///< air density rho [kg/m^3]
+  int inflow_states = 6;            ///< Peters' induced-flow states N (0: quasi-steady)
+};
+
+class Element;
+class Model;
+
+/// An element written in C++ by a program that embeds the core (and by tests of the element interface): made
+/// once the joints exist, so that it can look up the unknowns of the variables it acts on (Model::FindVariable,
+/// Model::variable_unknown). It may own states (Element::num_states() == num_states); its first one is
+/// Model::element_state_unknown(first_state).
+struct CustomElementSpec {
+  int num_states = 0;
+  std::function<std::unique_ptr<Element>(const Model& model, int first_state)> make;
+};
+
 /// The whole mechanism and its run settings.
 struct ModelSpec {
   std::string source;  ///< where it came from (file names), used in messages
@@ -233,6 +261,8 @@ struct ModelSpec {
   std::vector<BeamSpec> beams;
   std::vector<JointSpec> joints;
   std::vector<LoadSpec> loads;
+  std::vector<AeroSectionSpec> aero_sections;
+  std::vector<CustomElementSpec> custom_elements;
   SolverSpec solver;
   OutputSpec output;
 };

@@ -64,6 +64,11 @@ struct State {
   Eigen::VectorXd dq_prev;          ///< increment of each variable over the last accepted step
   Eigen::VectorXd qacc_alg;         ///< generalized-alpha algorithmic accelerations of the variables
   Eigen::VectorXd lambda;           ///< constraint multipliers [N, N m] (num_multipliers)
+  Eigen::VectorXd element_states;      ///< the elements' own states (Model::num_element_states(); element units)
+  /// Their rates: the mean rate of the last step (energy-consistent schemes, the midpoint rule (S2)), the end
+  /// rate (generalized-alpha), zero after a static analysis.
+  Eigen::VectorXd element_state_rates;
+  Eigen::VectorXd element_state_rates_alg;  ///< generalized-alpha algorithmic rates of the element states
   std::vector<EffectState> effects; ///< per effect with modes (Model::modal_effects())
   std::vector<VariableCommand> commands;  ///< per joint variable (num_variables)
   /// Per element (Model::elements()), what it keeps of past steps (Element::history_size(); mostly empty).
@@ -72,9 +77,11 @@ struct State {
   double h_prev = 0.0;              ///< size of the last accepted step [s]
   std::array<double, 3> recent_h = {0.0, 0.0, 0.0};  ///< sizes of the last three accepted steps, newest first [s]
   std::array<Eigen::VectorXd, 3> mean_qdot;          ///< dq / h of the last three accepted steps, newest first
+  std::array<Eigen::VectorXd, 3> mean_state_rate;    ///< the same for the element states
   double peak_speed = 0.0;          ///< largest node speed so far [m/s]: scales of the local error test
   double peak_spin = 0.0;           ///< largest node angular speed so far [rad/s]
   double peak_joint_rate = 0.0;     ///< largest |qdot| of any joint variable so far [rad/s or m/s]
+  Eigen::VectorXd peak_state_rate;  ///< largest |mean rate| of each element state so far (element units per s)
   double external_work = 0.0;       ///< work of applied loads, drives and commanded efforts since t = 0 [J]
   double dissipated_physical = 0.0; ///< energy dissipated by dampers, friction, stop and beam damping since t = 0 [J]
   double dissipated_numerical = 0.0;///< energy removed by the integrator's dissipation since t = 0 [J]

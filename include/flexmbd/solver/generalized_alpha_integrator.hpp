@@ -43,6 +43,17 @@ struct GeneralizedAlphaCoefficients {
     const V a_next = (vdot_n - alpha_m * a_n) / (1.0 - alpha_m);
     return h * v_n + h * h * ((0.5 - beta) * a_n + beta * a_next);
   }
+  /// First-order states (docs/theory.md, (S4)): the same relations one level down, the state x in the place of
+  /// the velocity and its rate in the place of the acceleration. The algorithmic rate w_{n+1} from the step's
+  /// increment x_{n+1} - x_n = h ((1 - gamma) w_n + gamma w_{n+1}):
+  double AlgorithmicRate(double increment, double w_n, double h) const {
+    return (increment / h - (1.0 - gamma) * w_n) / gamma;
+  }
+  /// The increment predicted on the assumption xdot_{n+1} = xdot_n.
+  double PredictedStateIncrement(double w_n, double xdot_n, double h) const {
+    return h * ((1.0 - gamma) * w_n + gamma * (xdot_n - alpha_m * w_n) / (1.0 - alpha_m));
+  }
+  double state_rate_rate(double h) const { return (1.0 - alpha_m) / (h * gamma * (1.0 - alpha_f)); }  ///< d xdot / d increment
   double velocity_rate(double h) const { return gamma / (h * beta); }                                  ///< d v / d increment
   double acceleration_rate(double h) const { return (1.0 - alpha_m) / (h * h * beta * (1.0 - alpha_f)); }  ///< d vdot / d increment
 };
@@ -58,10 +69,11 @@ class GeneralizedAlphaIntegrator : public TimeIntegrator {
   // The start state with accelerations measured over a short energy-preserving step (first step only).
   State WithInitialAccelerations(const State& start, double h);
   // Sets the end velocities and accelerations of the current context from the total increments.
-  void FillKinematics(const State& start, const std::vector<Vec6>& increments, const Eigen::VectorXd& dq, double h);
+  void FillKinematics(const State& start, const std::vector<Vec6>& increments, const Eigen::VectorXd& dq,
+                      const Eigen::VectorXd& dx, double h);
   // The end state once Newton has converged.
   void Commit(const State& start, const State& iterate, const std::vector<Vec6>& increments,
-              const Eigen::VectorXd& dq, double h, State* end) const;
+              const Eigen::VectorXd& dq, const Eigen::VectorXd& dx, double h, State* end) const;
 
   const Model& model_;
   SparseSystem* system_;

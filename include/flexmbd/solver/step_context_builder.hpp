@@ -30,6 +30,9 @@ class StepContextBuilder {
 
   std::vector<NodeStep>& nodes() { return nodes_; }
   std::vector<VariableStep>& variables() { return variables_; }
+  /// The element states of the last context; EndPoint leaves their rates at the iterate's stored rates, which
+  /// the caller may overwrite.
+  std::vector<ElementStateStep>& element_states() { return states_; }
 
   /// The state itself, as a static evaluation with no increment (for constraint checks and outputs).
   const StepContext& AtState(const State& state);
@@ -58,6 +61,7 @@ class StepContextBuilder {
   const Model& model_;
   std::vector<NodeStep> nodes_;
   std::vector<VariableStep> variables_;
+  std::vector<ElementStateStep> states_;
   Eigen::VectorXd lambda_;
   std::vector<double> variable_alpha_;
   std::vector<double> element_alpha_;

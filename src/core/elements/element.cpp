@@ -64,6 +64,8 @@ void AddSchemeRateTerms(const Element& element, const StepContext& ctx, Eigen::R
   const int node_unknowns = 6 * static_cast<int>(ctx.nodes->size());
   const int num_variables = ctx.variables != nullptr ? static_cast<int>(ctx.variables->size()) : 0;
   const int variable_unknowns = node_unknowns + num_variables;
+  const int num_states = ctx.element_states != nullptr ? static_cast<int>(ctx.element_states->size()) : 0;
+  const int state_unknowns = variable_unknowns + num_states;
   for (int j = 0; j < n; ++j) {
     const int u = element.unknowns()[j];
     double rate = 0.0, acceleration = 0.0;
@@ -73,6 +75,8 @@ void AddSchemeRateTerms(const Element& element, const StepContext& ctx, Eigen::R
       acceleration = s.dacc;
     } else if (u < variable_unknowns) {
       rate = (*ctx.variables)[u - node_unknowns].dqdotf_dq;
+    } else if (u < state_unknowns) {
+      rate = (*ctx.element_states)[u - variable_unknowns].drate;
     }
     if (rate != 0.0) J.col(j) += rate * D.col(j);
     if (acceleration != 0.0) J.col(j) += acceleration * M.col(j);

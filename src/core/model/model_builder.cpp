@@ -11,6 +11,7 @@
 #include "flexmbd/model/output_size.hpp"
 #include "flexmbd/solver/energy_decaying_integrator.hpp"
 #include "flexmbd/solver/step_context_builder.hpp"
+#include "aero_section_builder.hpp"
 #include "variable_effects_builder.hpp"
 
 namespace flexmbd {
@@ -85,7 +86,8 @@ std::string Model::DescribeUnknown(int unknown) const {
   static const char* kNodeDof[6] = {"x", "y", "z", "rot_x", "rot_y", "rot_z"};
   if (unknown < 6 * num_nodes_) return node_names_[unknown / 6] + " " + kNodeDof[unknown % 6];
   if (unknown < 6 * num_nodes_ + num_variables_) return "joint variable " + variable_names_[unknown - 6 * num_nodes_];
-  return multiplier_names_[unknown - 6 * num_nodes_ - num_variables_];
+  if (unknown < num_kinematic()) return element_state_names_[unknown - 6 * num_nodes_ - num_variables_];
+  return multiplier_names_[unknown - num_kinematic()];
 }
 
 int Model::FindVariable(const std::string& name) const {
@@ -236,7 +238,13 @@ Model BuildModel(const ModelSpec& spec) {
     throw ConfigError(Prefix(spec) + "solver.integrator: generalized_alpha does not support stops or friction; "
                       "expected energy_decaying or energy_preserving");
   }
+  for (const AeroSectionSpec& section : spec.aero_sections) model.num_element_states_ += section.inflow_states;
+  for (const CustomElementSpec& custom : spec.custom_elements) model.num_element_states_ += custom.num_states;
   State& state = model.initial_state_;
+  state.element_states = Eigen::VectorXd::Zero(model.num_element_states_);
+  state.element_state_rates = Eigen::VectorXd::Zero(model.num_element_states_);
+  state.element_state_rates_alg = Eigen::VectorXd::Zero(model.num_element_states_);
+  state.peak_state_rate = Eigen::VectorXd::Zero(model.num_element_states_);
   state.q = Eigen::VectorXd::Zero(model.num_variables_);
   state.qdot = Eigen::VectorXd::Zero(model.num_variables_);
   state.lambda = Eigen::VectorXd::Zero(model.num_multipliers_);
@@ -309,6 +317,27 @@ Model BuildModel(const ModelSpec& spec) {
     locate("load on '" + load.body + "'", load.body, load.p_BoP_B, &node, &p_NP);
     model.elements_.push_back(std::make_unique<AppliedLoad>(node, model.node_unknown(node), load, p_NP));
   }
+
+  int first_state = 0;
+  auto add_state_owner = [&](std::unique_ptr<Element> element) {
+    element->set_first_state(first_state);
+    for (int k = 0; k < element->num_states(); ++k) {
+      model.element_state_names_.push_back(element->StateOwnerName() + " " + element->StateName(k));
+    }
+    first_state += element->num_states();
+    model.elements_.push_back(std::move(element));
+  };
+  for (const AeroSectionSpec& section : spec.aero_sections) {
+    auto element = MakeAeroSection(model, Prefix(spec), section, first_state);
+    model.aero_sections_.push_back(element.get());
+    add_state_owner(std::move(element));
+  }
+  for (const CustomElementSpec& custom : spec.custom_elements) {
+    std::unique_ptr<Element> element = custom.make(model, first_state);
+    FLEXMBD_DEMAND(element->num_states() == custom.num_states);
+    add_state_owner(std::move(element));
+  }
+  FLEXMBD_DEMAND(first_state == model.num_element_states_);
 
   model.initial_state_.element_history.resize(model.elements_.size());
   for (size_t k = 0; k < model.elements_.size(); ++k) {

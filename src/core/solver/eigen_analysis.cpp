@@ -7,11 +7,19 @@
 #include <utility>
 
 #include "eigen_internal.hpp"
+#include "flexmbd/common/error.hpp"
 
 namespace flexmbd {
 
 EigenResult SolveModes(const Model& model, const LinearisedSystem& system, const EigenOptions& options) {
   const int nk = static_cast<int>(system.M.rows());
+  if (model.num_element_states() > 0) {
+    if (options.method == EigenMethod::kSparse) {
+      throw SolverError("eigen-analysis: the sparse method does not take element states (" +
+                        model.DescribeUnknown(model.element_state_unknown(0)) + "); expected method dense or auto");
+    }
+    return eigen_internal::SolveDenseWithStates(model, system, options);
+  }
   const bool sparse =
       options.method == EigenMethod::kSparse || (options.method == EigenMethod::kAuto && nk > options.dense_limit);
   return sparse ? eigen_internal::SolveSparse(model, system, options)
@@ -39,6 +47,8 @@ State ScaleVelocities(const State& state, double factor) {
   out.qddot_prev *= f2;
   out.qddot_prev2 *= f2;
   out.qacc_alg *= f2;
+  out.element_state_rates *= factor;
+  out.element_state_rates_alg *= factor;
   out.peak_speed *= std::abs(factor);
   out.peak_spin *= std::abs(factor);
   return out;

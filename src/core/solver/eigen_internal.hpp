@@ -80,6 +80,10 @@ bool IsRigidRoot(const LinearisedSystem& system, const RawMode& mode, double sca
 /// Every mode by null-space elimination and a dense eigensolver.
 EigenResult SolveDense(const Model& model, const LinearisedSystem& system, const EigenOptions& options);
 
+/// Every mode of a model with element states: the second-order motions reduced and mass-normalised as in
+/// SolveDense, the element states as first-order rows, one dense generalized problem (theory (E7)).
+EigenResult SolveDenseWithStates(const Model& model, const LinearisedSystem& system, const EigenOptions& options);
+
 /// The lowest modes (or those near options.shift_hz) by shift-invert Arnoldi on the constrained quadratic
 /// pencil (theory (E6)); by SolveDense when the Krylov space would span most of the constrained space.
 EigenResult SolveSparse(const Model& model, const LinearisedSystem& system, const EigenOptions& options);

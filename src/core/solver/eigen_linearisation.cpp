@@ -119,11 +119,12 @@ Assembled Assemble(const Model& model, const State& state) {
   return out;
 }
 
-// Kinematic velocity vector u = (v, w per node, qdot) of a state.
+// Kinematic velocity vector u = (v, w per node, qdot, element state rates) of a state.
 Eigen::VectorXd Rates(const Model& model, const State& state) {
-  Eigen::VectorXd u(model.num_unknowns() - model.num_multipliers());
+  Eigen::VectorXd u(model.num_kinematic());
   for (int k = 0; k < model.num_nodes(); ++k) u.segment<6>(6 * k) << state.nodes[k].v, state.nodes[k].w;
-  u.tail(model.num_variables()) = state.qdot;
+  u.segment(model.variable_unknown(0), model.num_variables()) = state.qdot;
+  u.tail(model.num_element_states()) = state.element_state_rates;
   return u;
 }
 
@@ -168,7 +169,20 @@ void SetAccelerations(const Model& model, const Eigen::VectorXd& acceleration, S
     state->nodes[k].a_prev = acceleration.segment<3>(6 * k);
     state->nodes[k].alpha_prev = acceleration.segment<3>(6 * k + 3);
   }
-  state->qddot_prev = acceleration.tail(model.num_variables());
+  state->qddot_prev = acceleration.segment(model.variable_unknown(0), model.num_variables());
+}
+
+// The rows and columns of the second-order unknowns (nodes, joint variables): the element states keep their
+// values and stored rates in the reference motion (theory (E2)).
+Assembled SecondOrderPart(const Assembled& a, int nq) {
+  Assembled out;
+  out.residual = a.residual.head(nq);
+  out.K = a.K.topLeftCorner(nq, nq);
+  out.D = a.D.topLeftCorner(nq, nq);
+  out.M = a.M.topLeftCorner(nq, nq);
+  out.B = a.B.leftCols(nq);
+  out.Gt = a.Gt.topRows(nq);
+  return out;
 }
 
 // Solves the saddle-point system [M G^T; B 0] (a, lambda) = (-r0, -gamma) by KLU. Returns false if the matrix
@@ -205,10 +219,10 @@ bool SolveSaddle(const Assembled& a, const Eigen::VectorXd& r0, const Eigen::Vec
 // By KLU on the saddle-point system; by the null space of B when that fails on a small model (dependent
 // constraint rows, or a motion without inertia, which the null-space path names).
 void SolveReferenceMotion(const Model& model, State* state) {
-  const int nk = model.num_unknowns() - model.num_multipliers(), m = model.num_multipliers();
+  const int nk = model.element_state_unknown(0), m = model.num_multipliers();
   SetAccelerations(model, Eigen::VectorXd::Zero(nk), state);
   state->lambda.setZero();
-  const Assembled a = Assemble(model, *state);
+  const Assembled a = SecondOrderPart(Assemble(model, *state), nk);
   const Eigen::VectorXd r0 = a.residual.head(nk);
   const Eigen::VectorXd gamma = m > 0 ? ConstraintCurvature(model, *state) : Eigen::VectorXd();
   Eigen::VectorXd acceleration, lambda;
@@ -301,7 +315,7 @@ LinearisedSystem Linearise(const Model& model, const State& state, ReferenceMoti
       SolveReferenceMotion(model, &ref);
       break;
     case ReferenceMotion::kZeroAcceleration:
-      SetAccelerations(model, Eigen::VectorXd::Zero(model.num_unknowns() - model.num_multipliers()), &ref);
+      SetAccelerations(model, Eigen::VectorXd::Zero(model.element_state_unknown(0)), &ref);
       break;
     case ReferenceMotion::kFromState:
       break;

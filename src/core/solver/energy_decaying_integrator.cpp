@@ -130,6 +130,7 @@ Eigen::VectorXd EnergyDecayingIntegrator::Predict(const State& start, double h) 
   for (int k = 0; k < model_.num_variables(); ++k) {
     x[model_.variable_unknown(k)] = h * start.qdot[k] + (has_rates ? 0.5 * h * h * start.qddot_prev[k] : 0.0);
   }
+  for (int k = 0; k < model_.num_element_states(); ++k) x[model_.element_state_unknown(k)] = h * start.element_state_rates[k];
   x.tail(model_.num_multipliers()) = start.lambda;
   return x;
 }
@@ -297,6 +298,11 @@ void EnergyDecayingIntegrator::Commit(const State& start, const Eigen::VectorXd&
     n.alpha_prev = (s.w_f - s.w_i) / h;
   }
   for (int k = 0; k < model_.num_variables(); ++k) end->q[k] = (*ctx.variables)[k].q_f;
+  for (int k = 0; k < model_.num_element_states(); ++k) {
+    const ElementStateStep& x = (*ctx.element_states)[k];
+    end->element_states[k] = x.x_f;
+    end->element_state_rates[k] = x.rate;
+  }
   for (const auto& element : model_.elements()) {
     if (element->history_size() > 0) element->RecordHistory(ctx, &end->element_history[element->index()]);
   }

@@ -33,6 +33,7 @@ State GeneralizedAlphaIntegrator::WithInitialAccelerations(const State& start, d
     n.alpha_prev = n.alpha_alg = probe.nodes[k].alpha_prev;
   }
   with.qddot_prev = with.qacc_alg = probe.qddot_prev;
+  with.element_state_rates = with.element_state_rates_alg = probe.element_state_rates;
   return with;
 }
 
@@ -44,7 +45,7 @@ Eigen::VectorXd OrZero(const Eigen::VectorXd& v, int size) {
 }  // namespace
 
 void GeneralizedAlphaIntegrator::FillKinematics(const State& start, const std::vector<Vec6>& increments,
-                                                const Eigen::VectorXd& dq, double h) {
+                                                const Eigen::VectorXd& dq, const Eigen::VectorXd& dx, double h) {
   for (int k = 0; k < model_.num_nodes(); ++k) {
     const NodeState& n = start.nodes[k];
     NodeStep& s = builder_.nodes()[k];
@@ -66,6 +67,12 @@ void GeneralizedAlphaIntegrator::FillKinematics(const State& start, const std::v
     v.qdot_f = c_.Velocity<double>(start.qdot[k], acc[k], c_.Acceleration<double>(dq[k], start.qdot[k], acc[k], h), h);
     v.dqdotf_dq = c_.velocity_rate(h);
   }
+  for (int k = 0; k < model_.num_element_states(); ++k) {
+    ElementStateStep& x = builder_.element_states()[k];
+    const double w_n = start.element_state_rates_alg[k];
+    x.rate = c_.TrueAcceleration<double>(c_.AlgorithmicRate(dx[k], w_n, h), w_n, start.element_state_rates[k]);
+    x.drate = c_.state_rate_rate(h);
+  }
 }
 
 StepResult GeneralizedAlphaIntegrator::Step(const State& given_start, double h, State* end) {
@@ -85,6 +92,12 @@ StepResult GeneralizedAlphaIntegrator::Step(const State& given_start, double h, 
   Eigen::VectorXd dq(nv);
   for (int k = 0; k < nv; ++k) dq[k] = c_.PredictedIncrement<double>(start.qdot[k], q_acc[k], q_ddot[k], h);
   iterate.q = start.q + dq;
+  const int ns = model_.num_element_states();
+  Eigen::VectorXd dx(ns);
+  for (int k = 0; k < ns; ++k) {
+    dx[k] = c_.PredictedStateIncrement(start.element_state_rates_alg[k], start.element_state_rates[k], h);
+  }
+  iterate.element_states = start.element_states + dx;
   Eigen::VectorXd unknowns = Eigen::VectorXd::Zero(model_.num_unknowns());
   unknowns.tail(model_.num_multipliers()) = start.lambda;
   const double t_f = start.t + h;
@@ -95,7 +108,7 @@ StepResult GeneralizedAlphaIntegrator::Step(const State& given_start, double h, 
       [&](int iteration, bool with_tangent) -> const StepContext& {
         builder_.set_geometric_stiffness(with_tangent && iteration > 1);
         const StepContext& ctx = builder_.EndPoint(iterate, unknowns, t_f, h);
-        FillKinematics(start, increments, dq, h);
+        FillKinematics(start, increments, dq, dx, h);
         return ctx;
       },
       [&](const Eigen::VectorXd& increment) {
@@ -109,6 +122,9 @@ StepResult GeneralizedAlphaIntegrator::Step(const State& given_start, double h, 
         }
         for (int k = 0; k < nv; ++k) dq[k] += increment[model_.variable_unknown(k)];
         iterate.q = start.q + dq;
+        dx += increment.segment(model_.element_state_unknown(0), ns);
+        iterate.element_states = start.element_states + dx;
+        if (ns > 0) reference = std::max(reference, dx.cwiseAbs().maxCoeff());
         unknowns.tail(model_.num_multipliers()) += increment.tail(model_.num_multipliers());
         return (nv > 0 ? std::max(reference, dq.cwiseAbs().maxCoeff()) : reference) + kMotionFloor;
       });
@@ -119,8 +135,8 @@ StepResult GeneralizedAlphaIntegrator::Step(const State& given_start, double h, 
   }
   iterate.lambda = unknowns.tail(model_.num_multipliers());
   builder_.EndPoint(iterate, unknowns, t_f, h);
-  FillKinematics(start, increments, dq, h);
-  Commit(start, iterate, increments, dq, h, end);
+  FillKinematics(start, increments, dq, dx, h);
+  Commit(start, iterate, increments, dq, dx, h, end);
   result.error = EstimateLocalError(model_, *end);
   const bool too_large = model_.solver().adaptive && result.error.error > 1.0;
   result.status = too_large ? StepStatus::kRejectedError : StepStatus::kAccepted;
@@ -128,7 +144,8 @@ StepResult GeneralizedAlphaIntegrator::Step(const State& given_start, double h, 
 }
 
 void GeneralizedAlphaIntegrator::Commit(const State& start, const State& iterate, const std::vector<Vec6>& increments,
-                                        const Eigen::VectorXd& dq, double h, State* end) const {
+                                        const Eigen::VectorXd& dq, const Eigen::VectorXd& dx, double h,
+                                        State* end) const {
   *end = iterate;
   end->t = start.t + h;
   end->h_prev = h;
@@ -155,6 +172,10 @@ void GeneralizedAlphaIntegrator::Commit(const State& start, const State& iterate
     end->qddot_prev[k] = c_.TrueAcceleration<double>(end->qacc_alg[k], acc[k], qddot[k]);
   }
   end->qdot = JointRates(model_, *end);
+  for (int k = 0; k < model_.num_element_states(); ++k) {
+    end->element_state_rates_alg[k] = c_.AlgorithmicRate(dx[k], start.element_state_rates_alg[k], h);
+    end->element_state_rates[k] = (*builder_.context().element_states)[k].rate;
+  }
   RecordStepHistory(start, end);
 }
 

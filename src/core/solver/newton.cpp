@@ -24,15 +24,19 @@ struct ResidualCheck {
 ResidualCheck CheckResidual(const Model& model, const SparseSystem& system) {
   const Eigen::VectorXd& r = system.residual();
   const Eigen::VectorXd& m = system.magnitude();
-  const int n_force = model.num_unknowns() - model.num_multipliers();
-  const double scale = std::max(m.head(n_force).cwiseAbs().maxCoeff(), kForceFloor);
+  // Element-state rows (first-order equations in the element's own units) are judged against their own scale.
+  const int n_second_order = model.element_state_unknown(0), n_states = model.num_element_states();
+  const double scale = std::max(m.head(n_second_order).cwiseAbs().maxCoeff(), kForceFloor);
+  const double state_scale =
+      n_states > 0 ? std::max(m.segment(n_second_order, n_states).cwiseAbs().maxCoeff(), kForceFloor) : 1.0;
   const double coordinate_round_off = RoundOffFloor(model.length_scale());
   ResidualCheck check;
   double worst_scaled = -1;
   for (int k = 0; k < r.size(); ++k) {
-    const bool force = k < n_force;
+    const bool force = model.is_force_row(k);
     const double beyond_noise = std::max(0.0, std::abs(r[k]) - coordinate_round_off * system.row_abs_sum()[k]);
-    const double scaled = force ? beyond_noise / scale : std::abs(r[k]) / kConstraintTolerance;
+    const double row_scale = model.is_state_row(k) ? state_scale : scale;
+    const double scaled = force ? beyond_noise / row_scale : std::abs(r[k]) / kConstraintTolerance;
     if (force) check.force = std::max(check.force, scaled);
     else check.constraint = std::max(check.constraint, std::abs(r[k]));
     if (scaled > worst_scaled) {

@@ -34,6 +34,7 @@ StaticResult SolveStatic(const Model& model, SparseSystem* system, State* state)
             n.R = n.R * Exp(increment.segment<3>(model.node_unknown(k) + 3));
           }
           for (int k = 0; k < model.num_variables(); ++k) state->q[k] += increment[model.variable_unknown(k)];
+          state->element_states += increment.segment(model.element_state_unknown(0), model.num_element_states());
           state->lambda += increment.tail(model.num_multipliers());
           travelled = std::max(travelled, increment.head(model.num_unknowns() - model.num_multipliers()).cwiseAbs().maxCoeff());
           return travelled + kMotionFloor;
@@ -43,6 +44,7 @@ StaticResult SolveStatic(const Model& model, SparseSystem* system, State* state)
     if (!result.last.converged) return result;
   }
   state->qdot = JointRates(model, *state);
+  state->element_state_rates.setZero();
   result.converged = true;
   return result;
 }

@@ -7,7 +7,9 @@ namespace flexmbd {
 StepContextBuilder::StepContextBuilder(const Model& model) : model_(model) {
   nodes_.resize(model.num_nodes());
   variables_.resize(model.num_variables());
+  states_.resize(model.num_element_states());
   ctx_.nodes = &nodes_;
+  ctx_.element_states = &states_;
   ctx_.variables = &variables_;
   ctx_.lambda = &lambda_;
   ctx_.gravity = model.solver().gravity;
@@ -27,6 +29,15 @@ void StepContextBuilder::Fill(const State& start, const Eigen::VectorXd& unknown
     v.qdot_i = start.qdot[k];
     v.alpha = v.dq_lagged = 0.0;
   }
+  // Element states at the end configuration (S3); a dynamic step moves them to the midpoint (S2).
+  for (int k = 0; k < model_.num_element_states(); ++k) {
+    ElementStateStep& x = states_[k];
+    x.x_f = start.element_states[k] + unknowns[model_.element_state_unknown(k)];
+    x.x_i = mode == AnalysisMode::kDynamic ? start.element_states[k] : x.x_f;
+    x.value = x.x_f;
+    x.rate = mode == AnalysisMode::kEndPoint ? start.element_state_rates[k] : 0.0;
+    x.drate = 0.0;
+  }
   lambda_ = unknowns.tail(model_.num_multipliers());
 }
 
@@ -39,6 +50,11 @@ const StepContext& StepContextBuilder::Dynamic(const State& start, const Eigen::
   for (int k = 0; k < model_.num_variables(); ++k) {
     variables_[k].alpha = k < static_cast<int>(variable_alpha_.size()) ? variable_alpha_[k] : 0.0;
     variables_[k].dq_lagged = has_history ? h / start.h_prev * start.dq_prev[k] : 0.0;
+  }
+  for (ElementStateStep& x : states_) {
+    x.value = 0.5 * (x.x_i + x.x_f);
+    x.rate = (x.x_f - x.x_i) / h;
+    x.drate = 1.0 / h;
   }
   ctx_.t_i = start.t;
   ctx_.t_f = start.t + h;

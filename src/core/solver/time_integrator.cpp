@@ -93,6 +93,16 @@ ErrorEstimate EstimateLocalError(const Model& model, const State& end) {
   for (int k = 0; k < model.num_variables(); ++k) {
     add(weight * std::abs(third_derivative(q[0][k], q[1][k], q[2][k])), joint_scale, model.variable_unknown(k));
   }
+  // Element states: the same estimate on their mean rates (the midpoint rule's local error is h^3 |x'''| / 24,
+  // so the trapezoidal weight errs on the safe side), against the element's own scale.
+  const auto& x = end.mean_state_rate;
+  for (const auto& element : model.elements()) {
+    for (int j = 0; j < element->num_states(); ++j) {
+      const int k = element->first_state() + j;
+      const double scale = kDefaultFloorFraction * rtol * element->StateScale(j) + rtol * h[0] * end.peak_state_rate[k];
+      add(weight * std::abs(third_derivative(x[0][k], x[1][k], x[2][k])), scale, model.element_state_unknown(k));
+    }
+  }
   estimate.error = count > 0 ? std::sqrt(sum / count) : 0.0;
   return estimate;
 }
@@ -112,6 +122,12 @@ void RecordStepHistory(const State& start, State* end) {
   for (Eigen::VectorXd& rates : end->mean_qdot) {
     if (rates.size() != end->q.size()) rates = Eigen::VectorXd::Zero(end->q.size());
   }
+  end->mean_state_rate = {(end->element_states - start.element_states) / h, start.mean_state_rate[0],
+                          start.mean_state_rate[1]};
+  for (Eigen::VectorXd& rates : end->mean_state_rate) {
+    if (rates.size() != end->element_states.size()) rates = Eigen::VectorXd::Zero(end->element_states.size());
+  }
+  if (end->element_states.size() > 0) end->peak_state_rate = end->peak_state_rate.cwiseMax(end->mean_state_rate[0].cwiseAbs());
   if (end->qdot.size() > 0) end->peak_joint_rate = std::max(end->peak_joint_rate, end->qdot.cwiseAbs().maxCoeff());
 }
 
@@ -128,6 +144,7 @@ Eigen::VectorXd CoastingIncrements(const Model& model, const State& start, doubl
     x.segment<3>(model.node_unknown(k) + 3) = h * start.nodes[k].w;
   }
   for (int k = 0; k < model.num_variables(); ++k) x[model.variable_unknown(k)] = h * start.qdot[k];
+  for (int k = 0; k < model.num_element_states(); ++k) x[model.element_state_unknown(k)] = h * start.element_state_rates[k];
   return x;
 }
 
