@@ -16,7 +16,7 @@ void ApplyYamlOverlay(const YAML::Node& params, const std::string& params_name, 
   ReadBeams(root.Child("beams"), model);
   ReadJoints(root.Child("joints"), model);
   ReadSolver(root.Child("solver"), &model->spec.solver);
-  ReadOutput(root.Child("output"), &model->spec.output);
+  ReadOutput(root.Child("output"), model->spec.solver.t_end, &model->spec.output);
   ReadBeamStations(root.Child("output"), *model, &model->spec.output);
   ReadLoads(root.Child("loads"), *model, &model->spec.loads);
   ReadAero(root.Child("aero"), *model, &model->spec.aero_sections);

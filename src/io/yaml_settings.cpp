@@ -11,7 +11,8 @@ const std::vector<std::string> kSolverKeys = {"analysis",       "integrator", "r
 const std::vector<std::string> kEigenKeys = {"modes", "static_first", "method", "shift_hz", "about", "sweep"};
 const std::vector<std::string> kSweepKeys = {"velocity_scale"};
 const std::vector<std::string> kErrorFloorKeys = {"position", "rotation", "joint"};
-const std::vector<std::string> kOutputKeys = {"rate_hz", "csv", "bag", "beam_stations", "allow_large_output"};
+const std::vector<std::string> kOutputKeys = {"rate_hz", "csv", "bag", "beam_stations", "allow_large_output",
+                                              "cycle_from"};
 
 // "0.01", or "0.01 (default)" if the key was not given.
 std::string ValueText(const Field& map, const std::string& key, double value) {
@@ -114,13 +115,21 @@ void ReadSolver(const Field& solver, SolverSpec* spec) {
   CheckStepBounds(solver, *spec);
 }
 
-void ReadOutput(const Field& output, OutputSpec* spec) {
+void ReadOutput(const Field& output, double t_end, OutputSpec* spec) {
   CheckKeys(output, kOutputKeys);
   OverlayNumber(output, "rate_hz", Quantity{"a sample rate (0: every step)", Bound::kNonNegative, "Hz"},
                 &spec->rate_hz);
   OverlayString(output, "csv", "a file path (\"\" for none)", &spec->csv);
   OverlayString(output, "bag", "a file path (\"\" for none)", &spec->bag);
   OverlayBool(output, "allow_large_output", &spec->allow_large_output);
+  const Field cycle = output.Child("cycle_from");
+  if (!cycle.present()) return;
+  OverlayNumber(output, "cycle_from", Quantity{"the start of the cycle report", Bound::kNonNegative, "s"},
+                &spec->cycle_from);
+  if (spec->cycle_from >= t_end) {
+    cycle.Fail(cycle.Text() + " s is not before solver.t_end " + FormatNumber(t_end) + " s; expected a time in [0, t_end)");
+  }
+  if (spec->rate_hz == 0) cycle.Fail("needs equally spaced samples, and output.rate_hz is 0 (every step); expected rate_hz > 0");
 }
 
 }  // namespace io

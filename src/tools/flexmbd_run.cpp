@@ -19,6 +19,7 @@
 #include "flexmbd/io/text_file.hpp"
 #include "flexmbd/ros/transform_frames.hpp"
 #include "flexmbd/solver/eigen_analysis.hpp"
+#include "flexmbd/solver/cycle_statistics.hpp"
 #include "flexmbd/solver/simulation.hpp"
 #include "flexmbd/solver/sparse_system.hpp"
 #include "flexmbd/solver/static_solver.hpp"
@@ -52,6 +53,37 @@ bool Parse(int argc, char** argv, Arguments* args) {
   }
   return !args->urdf.empty();
 }
+
+// output.cycle_from: keeps every joint variable's samples from that time on and reports the settled motion (a
+// limit cycle's amplitude and frequency) at the end of the run.
+class CycleReport {
+ public:
+  explicit CycleReport(const flexmbd::Model& model) : model_(model), samples_(model.num_variables()) {}
+
+  void Add(const flexmbd::OutputSample& sample) {
+    const double from = model_.output().cycle_from;
+    if (from < 0 || sample.t < from) return;
+    if (samples_.empty()) return;  // no joint variable
+    if (samples_.front().empty()) start_ = sample.t;
+    end_ = sample.t;
+    for (int v = 0; v < model_.num_variables(); ++v) samples_[v].push_back(sample.position[v]);
+  }
+
+  void Print() const {
+    for (int v = 0; v < model_.num_variables(); ++v) {
+      if (samples_[v].empty()) continue;
+      const flexmbd::CycleStatistics c = flexmbd::MeasureCycle(samples_[v], 1.0 / model_.output().rate_hz);
+      std::printf("flexmbd_run: cycle of %s over [%.6g, %.6g] s: mean %.6g, amplitude %.6g (half the peak-to-peak), "
+                  "RMS %.6g, frequency %.6g Hz\n",
+                  model_.variable_names()[v].c_str(), start_, end_, c.mean, c.amplitude, c.rms, c.frequency_hz);
+    }
+  }
+
+ private:
+  const flexmbd::Model& model_;
+  std::vector<std::vector<double>> samples_;  ///< per joint variable
+  double start_ = 0, end_ = 0;
+};
 
 // `samples` written in `wall_seconds`, from the first sample to the recordings closed: what the node reports
 // for its run, so that scripts/bench_node.sh compares the two without the runner's start-up and loading.
@@ -179,6 +211,7 @@ int main(int argc, char** argv) {
     flexmbd::ros::SampleFanOut outputs(model, files, flexmbd::ros::DefaultTopicNames(), std::move(static_transforms));
     flexmbd::Simulation simulation(model);
     flexmbd::OutputSample last;
+    CycleReport cycle(model);
     flexmbd::ros::SampleMessages messages;  // refilled for every sample, reusing its storage
     long samples = 0;
     Clock::time_point first_sample_wall;
@@ -187,6 +220,7 @@ int main(int argc, char** argv) {
         if (samples++ == 0) first_sample_wall = Clock::now();
         if (converter) converter->Convert(sample, simulation.state(), &messages);
         outputs.Write(sample, messages);
+        cycle.Add(sample);
         last = sample;
       });
     } catch (const flexmbd::SolverError& e) {
@@ -199,6 +233,7 @@ int main(int argc, char** argv) {
     const double wall_seconds =
         samples > 0 ? std::chrono::duration<double>(Clock::now() - first_sample_wall).count() : 0.0;
     PrintSummary(simulation, last, samples, wall_seconds);
+    cycle.Print();
   } catch (const flexmbd::ConfigError& e) {
     std::fprintf(stderr, "flexmbd_run: %s\n", e.what());
     return flexmbd::kExitBadInput;

@@ -93,6 +93,21 @@ TEST(ConfigErrors, UnknownKeyListsValidKeys) {
                       "pendulum.yaml: output.video: unknown key; valid keys are: rate_hz, csv, bag");
 }
 
+TEST(ConfigErrors, CycleReportAfterTheEndIsRejected) {
+  EXPECT_CONFIG_ERROR(Pendulum("solver: {t_end: 2.0}\noutput: {cycle_from: 2.0}"),
+                      "pendulum.yaml: output.cycle_from: 2.0 s is not before solver.t_end 2 s; expected a time in [0, t_end)");
+}
+
+TEST(ConfigErrors, CycleReportNeedsEquallySpacedSamples) {
+  EXPECT_CONFIG_ERROR(Pendulum("output: {rate_hz: 0, cycle_from: 1.0}"),
+                      "pendulum.yaml: output.cycle_from: needs equally spaced samples, and output.rate_hz is 0 (every step); "
+                      "expected rate_hz > 0");
+}
+
+TEST(ConfigErrors, NegativeCycleReportStartIsRejected) {
+  EXPECT_CONFIG_ERROR(Pendulum("output: {cycle_from: -1.0}"), "pendulum.yaml: output.cycle_from: -1");
+}
+
 TEST(ConfigErrors, KineticAboveStaticFrictionIsRejected) {
   EXPECT_CONFIG_ERROR(Pendulum("joints: {B1: {friction: {mu_s: 0.1, mu_k: 0.2}}}"),
                       "pendulum.yaml: joints.B1.friction.mu_s: 0.1 is below mu_k 0.2; expected mu_s >= mu_k");

@@ -8,11 +8,11 @@
 #include <cmath>
 #include <fstream>
 #include <iterator>
-#include <numeric>
 #include <string>
 #include <vector>
 
 #include "flexmbd/io/config_loader.hpp"
+#include "flexmbd/solver/cycle_statistics.hpp"
 #include "flexmbd/solver/eigen_analysis.hpp"
 #include "flexmbd/solver/simulation.hpp"
 #include "runner_output.hpp"
@@ -156,38 +156,12 @@ TEST(ConnerSection, MotionAboveFlutterGrows) {
   EXPECT_NEAR(run.rate, run.eigen_rate, kRelative * run.eigen_rate);
 }
 
-// The settled motion with flap freeplay (freeplay_lco.yaml) over [kCycleStart, t_end]: RMS of the flap and plunge
-// about their means, and the frequency of the largest Fourier component of the flap.
+// The settled motion with flap freeplay (freeplay_lco.yaml, gap scaled) over [output.cycle_from, t_end] as the
+// runner reports it (MeasureCycle), and over the two halves of that interval.
 struct LimitCycle {
-  double flap_rms = 0, flap_rms_first_half = 0, flap_rms_second_half = 0;  // [rad]
-  double plunge_rms = 0;                                                    // [m]
-  double frequency = 0;                                                     // [Hz]
-  double books = 0, throughput = 0;                                         // as FreeMotion [J]
+  CycleStatistics flap, plunge, flap_first_half, flap_second_half;
+  double books = 0, throughput = 0;  // as FreeMotion [J]
 };
-constexpr double kCycleStart = 30.0;
-
-double Rms(const std::vector<double>& x, size_t begin, size_t end) {
-  double mean = 0, square = 0;
-  for (size_t k = begin; k < end; ++k) mean += x[k];
-  mean /= static_cast<double>(end - begin);
-  for (size_t k = begin; k < end; ++k) square += (x[k] - mean) * (x[k] - mean);
-  return std::sqrt(square / static_cast<double>(end - begin));
-}
-
-// The frequency in [3, 7] Hz (around the flap-pitch coupling, 4-6 Hz) where |sum x_k exp(-i w t_k)| is largest,
-// on a 0.005 Hz grid: finer than the 1/30 Hz resolution of a 30 s record.
-double DominantFrequency(const std::vector<double>& t, const std::vector<double>& x, size_t begin) {
-  double best = 0, best_power = -1;
-  for (double f = 3.0; f <= 7.0; f += 0.005) {
-    double c = 0, s = 0;
-    for (size_t k = begin; k < x.size(); ++k) {
-      c += x[k] * std::cos(2 * M_PI * f * t[k]);
-      s += x[k] * std::sin(2 * M_PI * f * t[k]);
-    }
-    if (c * c + s * s > best_power) best_power = c * c + s * s, best = f;
-  }
-  return best;
-}
 
 LimitCycle FreeplayRun(double gap_scale) {
   ModelSpec spec = Case("freeplay_lco.yaml");
@@ -197,27 +171,24 @@ LimitCycle FreeplayRun(double gap_scale) {
   const Model model = BuildModel(spec);
   Simulation simulation(model);
   const int flap = model.FindVariable("flap_hinge"), plunge = model.FindVariable("plunge");
-  std::vector<double> t, x, h;
+  std::vector<double> x, h;
   LimitCycle cycle;
   double e0 = NAN;
   simulation.Run([&](const OutputSample& s) {
-    t.push_back(s.t);
-    x.push_back(s.position[flap]);
-    h.push_back(s.position[plunge]);
+    if (s.t >= spec.output.cycle_from) {
+      x.push_back(s.position[flap]);
+      h.push_back(s.position[plunge]);
+    }
     if (std::isnan(e0)) e0 = s.total();
     cycle.books = std::max(cycle.books, std::abs(s.total() - e0 + s.numerical_dissipation + s.dissipated - s.external_work));
     cycle.throughput = std::max(cycle.throughput, std::abs(s.external_work));
   });
-  const size_t begin = std::lower_bound(t.begin(), t.end(), kCycleStart) - t.begin();
-  const size_t middle = (begin + t.size()) / 2;
-  cycle.flap_rms = Rms(x, begin, t.size());
-  cycle.flap_rms_first_half = Rms(x, begin, middle);
-  cycle.flap_rms_second_half = Rms(x, middle, t.size());
-  cycle.plunge_rms = Rms(h, begin, t.size());
-  std::vector<double> centred(x.begin(), x.end());
-  const double mean = std::accumulate(x.begin() + begin, x.end(), 0.0) / static_cast<double>(x.size() - begin);
-  for (double& v : centred) v -= mean;
-  cycle.frequency = DominantFrequency(t, centred, begin);
+  const double dt = 1.0 / spec.output.rate_hz;
+  cycle.flap = MeasureCycle(x, dt);
+  cycle.plunge = MeasureCycle(h, dt);
+  const auto middle = x.begin() + static_cast<long>(x.size() / 2);
+  cycle.flap_first_half = MeasureCycle(std::vector<double>(x.begin(), middle), dt);
+  cycle.flap_second_half = MeasureCycle(std::vector<double>(middle, x.end()), dt);
   return cycle;
 }
 
@@ -228,29 +199,51 @@ LimitCycle FreeplayRun(double gap_scale) {
 TEST(ConnerSection, FreeplayLimitCycleAmplitudeScalesWithTheGap) {
   const double gap = 2.12 * M_PI / 180;
   const LimitCycle half = FreeplayRun(0.5), given = FreeplayRun(1.0), twice = FreeplayRun(2.0);
-  for (const LimitCycle* c : {&half, &given, &twice}) {
-    std::printf("flap RMS %.4f deg (%.4f of its gap; halves %.4f, %.4f deg), plunge RMS %.3e m, %.3f Hz; books %.2e "
-                "J of %.2e J\n",
-                c->flap_rms * 180 / M_PI, c->flap_rms / (gap * (c == &half ? 0.5 : c == &given ? 1.0 : 2.0)),
-                c->flap_rms_first_half * 180 / M_PI, c->flap_rms_second_half * 180 / M_PI, c->plunge_rms, c->frequency,
-                c->books, c->throughput);
+  for (const auto& [c, scale] : {std::make_pair(&half, 0.5), std::make_pair(&given, 1.0), std::make_pair(&twice, 2.0)}) {
+    std::printf("flap RMS %.4f deg (%.4f of its gap; halves %.4f, %.4f deg), amplitude %.4f deg, plunge RMS %.3e m, "
+                "%.3f Hz; books %.2e J of %.2e J\n",
+                c->flap.rms * 180 / M_PI, c->flap.rms / (gap * scale), c->flap_first_half.rms * 180 / M_PI,
+                c->flap_second_half.rms * 180 / M_PI, c->flap.amplitude * 180 / M_PI, c->plunge.rms,
+                c->flap.frequency_hz, c->books, c->throughput);
     // Settled: the cycle is irregular (contact at both stops in every period, the pitch and plunge not locked to
     // it), and the RMS of one 15 s half differs from the other's by up to 2% (measured); neither grows nor decays.
-    EXPECT_NEAR(c->flap_rms_second_half / c->flap_rms_first_half, 1.0, 0.05);
+    EXPECT_NEAR(c->flap_second_half.rms / c->flap_first_half.rms, 1.0, 0.05);
     // Energy books as FreeMotion: no dissipation (restitution 1), the air's work balances the rest.
     EXPECT_LT(c->books, 1.0e-2 * c->throughput);
   }
   // Amplitude proportional to the gap: measured flap RMS / gap 0.944, 0.946, 0.955 (1.2% apart) and plunge within
   // 1.7%; 3% allows the 2% window-to-window spread of the irregular cycle.
   constexpr double kScaling = 0.03;
-  EXPECT_NEAR(half.flap_rms * 2 / given.flap_rms, 1.0, kScaling);
-  EXPECT_NEAR(twice.flap_rms / 2 / given.flap_rms, 1.0, kScaling);
-  EXPECT_NEAR(half.plunge_rms * 2 / given.plunge_rms, 1.0, kScaling);
-  EXPECT_NEAR(twice.plunge_rms / 2 / given.plunge_rms, 1.0, kScaling);
-  // The frequency does not depend on the gap (measured 4.733 Hz in all three): within two 1/30 Hz bins.
-  constexpr double kBins = 2.0 / (60.0 - kCycleStart);
-  EXPECT_NEAR(half.frequency, given.frequency, kBins);
-  EXPECT_NEAR(twice.frequency, given.frequency, kBins);
+  EXPECT_NEAR(half.flap.rms * 2 / given.flap.rms, 1.0, kScaling);
+  EXPECT_NEAR(twice.flap.rms / 2 / given.flap.rms, 1.0, kScaling);
+  EXPECT_NEAR(half.plunge.rms * 2 / given.plunge.rms, 1.0, kScaling);
+  EXPECT_NEAR(twice.plunge.rms / 2 / given.plunge.rms, 1.0, kScaling);
+  // The frequency does not depend on the gap (measured 4.73 Hz in all three): within two 1/30 Hz bins.
+  constexpr double kBins = 2.0 / 30.0;
+  EXPECT_NEAR(half.flap.frequency_hz, given.flap.frequency_hz, kBins);
+  EXPECT_NEAR(twice.flap.frequency_hz, given.flap.frequency_hz, kBins);
+}
+
+// The runner reports the cycle of every joint variable over [output.cycle_from, t_end], as computed above.
+TEST(ConnerSection, RunnerReportsTheFreeplayLimitCycle) {
+  std::ifstream file(kDir + "freeplay_lco.yaml");
+  const std::string yaml((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
+  const std::string out = test::RunnerOutput("config/conner_section/conner_section.urdf", yaml, "conner_lco");
+  const LimitCycle given = FreeplayRun(1.0);
+  const std::string prefix = "flexmbd_run: cycle of flap_hinge over [30, 60] s: ";
+  const size_t line = out.find(prefix);
+  ASSERT_NE(line, std::string::npos) << out;
+  double mean = 0, amplitude = 0, rms = 0, frequency = 0;
+  ASSERT_EQ(std::sscanf(out.c_str() + line + prefix.size(),
+                        "mean %lf, amplitude %lf (half the peak-to-peak), RMS %lf, frequency %lf Hz", &mean, &amplitude,
+                        &rms, &frequency),
+            4)
+      << out;
+  // Printed to 6 significant digits.
+  EXPECT_NEAR(amplitude, given.flap.amplitude, 1e-5 * given.flap.amplitude);
+  EXPECT_NEAR(rms, given.flap.rms, 1e-5 * given.flap.rms);
+  EXPECT_NEAR(frequency, given.flap.frequency_hz, 1e-5 * given.flap.frequency_hz);
+  EXPECT_NE(out.find("flexmbd_run: cycle of plunge over [30, 60] s: "), std::string::npos) << out;
 }
 
 }  // namespace

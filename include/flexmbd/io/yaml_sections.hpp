@@ -42,8 +42,8 @@ void ReadBeams(const Field& beams, UrdfModel* model);
 /// `solver:` settings, then the consistency dt_min <= dt <= dt_max.
 void ReadSolver(const Field& solver, SolverSpec* spec);
 
-/// `output:` settings.
-void ReadOutput(const Field& output, OutputSpec* spec);
+/// `output:` settings; `output.cycle_from` must lie before t_end (solver read first).
+void ReadOutput(const Field& output, double t_end, OutputSpec* spec);
 
 /// `output.beam_stations`: beam name -> distances from the root in [0, length] [m] (beams read first).
 void ReadBeamStations(const Field& output, const UrdfModel& model, OutputSpec* spec);

@@ -226,6 +226,9 @@ struct OutputSpec {
   std::map<std::string, std::vector<double>> beam_stations;
   /// Allow a run to write more than kMaxOutputValues values to its CSV or bag (model/output_size.hpp).
   bool allow_large_output = false;
+  /// The runner reports the amplitude and frequency of every joint variable over [cycle_from, t_end] (a limit
+  /// cycle's, docs/config.md) [s]; negative: no report.
+  double cycle_from = -1.0;
 };
 
 /// A typical section carrying unsteady thin-airfoil loads (docs/config.md, "aero"; docs/theory.md, (A1)-(A6)):

@@ -1,0 +1,20 @@
+#pragma once
+/// @file
+/// What the runner reports of a settled oscillation (`output.cycle_from`, docs/config.md): a limit cycle's
+/// amplitude and frequency from one signal sampled at equal intervals.
+
+#include <vector>
+
+namespace flexmbd {
+
+struct CycleStatistics {
+  double mean = 0;          ///< of the samples
+  double amplitude = 0;     ///< half the peak-to-peak range
+  double rms = 0;           ///< root mean square about the mean
+  double frequency_hz = 0;  ///< of the largest Fourier component other than the mean; 0 with fewer than 4 samples
+};
+
+/// The statistics of samples x taken every dt seconds.
+CycleStatistics MeasureCycle(const std::vector<double>& x, double dt);
+
+}  // namespace flexmbd

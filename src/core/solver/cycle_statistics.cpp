@@ -1,0 +1,45 @@
+#include "flexmbd/solver/cycle_statistics.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <complex>
+#include <numeric>
+
+#include <unsupported/Eigen/FFT>
+
+namespace flexmbd {
+
+CycleStatistics MeasureCycle(const std::vector<double>& x, double dt) {
+  CycleStatistics out;
+  const size_t n = x.size();
+  if (n == 0) return out;
+  out.mean = std::accumulate(x.begin(), x.end(), 0.0) / static_cast<double>(n);
+  const auto [low, high] = std::minmax_element(x.begin(), x.end());
+  out.amplitude = 0.5 * (*high - *low);
+  std::vector<double> centred(n);
+  double square = 0;
+  for (size_t k = 0; k < n; ++k) {
+    centred[k] = x[k] - out.mean;
+    square += centred[k] * centred[k];
+  }
+  out.rms = std::sqrt(square / static_cast<double>(n));
+  if (n < 4) return out;
+  Eigen::FFT<double> fft;
+  std::vector<std::complex<double>> spectrum;
+  fft.fwd(spectrum, centred);
+  std::vector<double> magnitude(n / 2 + 1);
+  for (size_t k = 0; k < magnitude.size(); ++k) magnitude[k] = std::abs(spectrum[k]);
+  const size_t peak = std::max_element(magnitude.begin() + 1, magnitude.end()) - magnitude.begin();
+  // The peak between bins: the vertex of the parabola through the peak bin and its neighbours (a record of a
+  // non-integer number of periods spreads a component over neighbouring bins; 1 / (n dt) Hz apart).
+  double shift = 0;
+  if (peak + 1 < magnitude.size()) {
+    const double left = magnitude[peak - 1], centre = magnitude[peak], right = magnitude[peak + 1];
+    const double curvature = left - 2 * centre + right;
+    if (curvature < 0) shift = 0.5 * (left - right) / curvature;
+  }
+  out.frequency_hz = (static_cast<double>(peak) + shift) / (static_cast<double>(n) * dt);
+  return out;
+}
+
+}  // namespace flexmbd
