@@ -99,7 +99,7 @@ TEST(ConfigErrors, CycleReportAfterTheEndIsRejected) {
 }
 
 TEST(ConfigErrors, CycleReportNeedsEquallySpacedSamples) {
-  EXPECT_CONFIG_ERROR(Pendulum("output: {rate_hz: 0, cycle_from: 1.0}"),
+  EXPECT_CONFIG_ERROR(Pendulum("output: {rate_hz: 0, cycle_from: 0.5}"),
                       "pendulum.yaml: output.cycle_from: needs equally spaced samples, and output.rate_hz is 0 (every step); "
                       "expected rate_hz > 0");
 }

@@ -30,13 +30,14 @@ CycleStatistics MeasureCycle(const std::vector<double>& x, double dt) {
   std::vector<double> magnitude(n / 2 + 1);
   for (size_t k = 0; k < magnitude.size(); ++k) magnitude[k] = std::abs(spectrum[k]);
   const size_t peak = std::max_element(magnitude.begin() + 1, magnitude.end()) - magnitude.begin();
-  // The peak between bins: the vertex of the parabola through the peak bin and its neighbours (a record of a
-  // non-integer number of periods spreads a component over neighbouring bins; 1 / (n dt) Hz apart).
+  // The component between bins: a sine a fraction d of a bin above bin k leaks into k and k + 1 in the ratio
+  // |X[k+1]| / |X[k]| = d / (1 - d) (the record is a rectangular window), so d = r / (1 + r) from the larger
+  // neighbour's ratio r; exact for one complex tone, within the leakage of the negative frequency for a real one.
   double shift = 0;
   if (peak + 1 < magnitude.size()) {
-    const double left = magnitude[peak - 1], centre = magnitude[peak], right = magnitude[peak + 1];
-    const double curvature = left - 2 * centre + right;
-    if (curvature < 0) shift = 0.5 * (left - right) / curvature;
+    const bool right = magnitude[peak + 1] >= magnitude[peak - 1];
+    const double ratio = magnitude[right ? peak + 1 : peak - 1] / magnitude[peak];
+    shift = (right ? 1.0 : -1.0) * ratio / (1.0 + ratio);
   }
   out.frequency_hz = (static_cast<double>(peak) + shift) / (static_cast<double>(n) * dt);
   return out;
