@@ -57,6 +57,8 @@ class TypicalSectionAero : public Element {
   Motion Evaluate(const StepContext& ctx) const;
   // lambda0 = bbar^T lambda / 2 with lambda = mu + Abar^-1 cbar ew^T q' (A6).
   double Lambda0(const Motion& m) const;
+  // The forces on (h, alpha, delta) over the span (A4), h positive down.
+  Vec3 GeneralisedForces(const Motion& m) const;
   // d(rate)/d(end node rate) and d(acceleration)/d(end node rate) of the scheme in ctx's mode.
   void RateFactors(const StepContext& ctx, double* rate, double* acceleration) const;
 

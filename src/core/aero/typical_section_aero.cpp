@@ -85,7 +85,7 @@ TypicalSectionAero::Motion TypicalSectionAero::Evaluate(const StepContext& ctx) 
 void TypicalSectionAero::AddResidual(const StepContext& ctx, Eigen::Ref<Eigen::VectorXd> r,
                                      Eigen::Ref<Eigen::VectorXd> magnitude) const {
   const Motion m = Evaluate(ctx);
-  const Vec3 Q = span_ * loads_.Forces(density_, velocity_, m.q, m.qd, m.qdd, Lambda0(m));
+  const Vec3 Q = GeneralisedForces(m);
   for (int k = 0; k < 3; ++k) {
     r[kFirstVariable + k] -= coordinates_[k].sign * Q[k];
     magnitude[kFirstVariable + k] += std::abs(Q[k]);
@@ -147,18 +147,19 @@ void TypicalSectionAero::AddRateParts(const StepContext& ctx, Eigen::Ref<Eigen::
 
 void TypicalSectionAero::AddStepWork(const StepContext& ctx, StepWork* work) const {
   if (ctx.mode != AnalysisMode::kDynamic) return;
-  const Vec3 Q = SectionLoads(ctx);
+  const Vec3 Q = GeneralisedForces(Evaluate(ctx));
   for (int k = 0; k < 3; ++k) {
     const VariableStep& v = (*ctx.variables)[coordinates_[k].variable];
-    // Generalised force Q_k on q_k = sign (q_f - q_i); SectionLoads turns the plunge force into lift.
-    const double generalised = k == 0 ? -Q[0] : Q[k];
-    work->external += generalised * coordinates_[k].sign * (v.q_f - v.q_i);
+    work->external += Q[k] * coordinates_[k].sign * (v.q_f - v.q_i);  // Q_k on q_k = sign (q_f - q_i)
   }
 }
 
+Vec3 TypicalSectionAero::GeneralisedForces(const Motion& m) const {
+  return span_ * loads_.Forces(density_, velocity_, m.q, m.qd, m.qdd, Lambda0(m));
+}
+
 Vec3 TypicalSectionAero::SectionLoads(const StepContext& ctx) const {
-  const Motion m = Evaluate(ctx);
-  Vec3 Q = span_ * loads_.Forces(density_, velocity_, m.q, m.qd, m.qdd, Lambda0(m));
+  Vec3 Q = GeneralisedForces(Evaluate(ctx));
   Q[0] = -Q[0];  // h is positive down: its generalised force is minus the lift
   return Q;
 }
