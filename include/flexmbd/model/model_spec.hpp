@@ -128,6 +128,9 @@ struct JointSpec {
   std::vector<VariableEffectsSpec> effects;     ///< one entry per variable (may be empty)
   bool has_limits = false;                      ///< URDF <limit> given (used by backlash without angles)
   double limit_lower = 0.0, limit_upper = 0.0;  ///< URDF <limit> lower and upper [rad or m]
+  /// A joint of YAML `closures:` that closes a kinematic loop: not part of the tree that places the bodies;
+  /// its initial variables are those that put its child frame where the tree placed it (docs/config.md).
+  bool closes_loop = false;
 };
 
 /// Sectional properties of a beam, in the section frame (x along the beam axis).
