@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <string>
 #include <vector>
 
@@ -41,7 +42,7 @@ TEST(EigenAtTimes, PendulumModeFollowsTheAngleOfTheSwing) {
   // after a quarter of the exact period 4 K(sin 30 deg) sqrt(I / (m g l)) (moving at its fastest, not
   // accelerating) and the far turning point after half of it (at rest, accelerating back). Each table is checked
   // against the frozen linearisation at the angle the CSV reports at that very step, so the phase and amplitude
-  // errors of the integration do not enter. Measured: errors below the table's 8 printed digits.
+  // errors of the integration do not enter. Measured: 4e-10, -1.0e-8, -9e-9 (the table's 8 printed digits).
   const double period = 4 * test::EllipticK(std::sin(kReleaseDeg * M_PI / 360)) * std::sqrt(kInertiaAboutHinge / kG);
   const double times[] = {0.0, period / 4, period / 2};
   const std::string csv_path = testing::TempDir() + "eigen_at_times_pendulum.csv";
@@ -68,8 +69,9 @@ TEST(EigenAtTimes, PendulumModeFollowsTheAngleOfTheSwing) {
     EXPECT_NEAR(mode.frequency_hz / FrozenFrequencyHz(row[angle]), 1.0, kFrozenTolerance) << table;
     EXPECT_LT(std::abs(mode.damping_ratio), kUndamped) << table;
     EXPECT_TRUE(std::isnan(test::TableFrequency(table, 2))) << "one degree of freedom\n" << table;
-    RecordProperty("frequency_error_t_" + std::to_string(t),
-                   std::to_string(mode.frequency_hz / FrozenFrequencyHz(row[angle]) - 1));
+    char error[32];
+    std::snprintf(error, sizeof(error), "%.3g", mode.frequency_hz / FrozenFrequencyHz(row[angle]) - 1);
+    RecordProperty("frequency_error_t_" + std::to_string(t), error);
   }
   // The states are the ones meant: the release and the far turning point at +-60 deg, the bottom at 0, within
   // the integration's amplitude and phase errors (error_tol 1e-4 per step).
