@@ -18,9 +18,10 @@ using Mat3 = Eigen::Matrix3d;
 
 /// A time function f(t), used by drives and applied loads (docs/config.md, "time functions").
 struct TimeFunctionSpec {
-  enum class Kind { kConstant, kLinearRamp, kCosineRamp, kSine, kTable };
+  enum class Kind { kConstant, kLinearRamp, kCosineRamp, kRateRamp, kSine, kTable };
   Kind kind = Kind::kConstant;
-  double value = 0.0;      ///< constant value, or the value reached by a ramp (SI units of the driven quantity)
+  double value = 0.0;      ///< constant value, or the value reached by a ramp (SI units of the driven quantity);
+                           ///< kRateRamp: the rate reached (SI units per second)
   double start = 0.0;      ///< time at which a ramp or sine begins [s]
   double duration = 1.0;   ///< ramp duration [s]
   double offset = 0.0;     ///< value before the ramp starts, and mean of the sine
@@ -216,8 +217,11 @@ struct SolverSpec {
     Method method = Method::kAuto; ///< dense below 2000 node and variable unknowns, sparse shift-invert above
     double shift_hz = 0.0;         ///< sparse: seek the modes nearest this frequency [Hz]; 0 = the lowest
     std::vector<double> sweep_velocity_scale;  ///< fan plot: factors on every initial velocity; empty for none
+    /// A dynamic run lands a step on each of these times and reports the modes about the state there
+    /// (docs/theory.md, "Eigen-analysis at a time of a run") [s]; increasing, in [0, t_end]; empty for none.
+    std::vector<double> at_times;
   };
-  EigenSettings eigen;             ///< used when analysis is kEigen
+  EigenSettings eigen;             ///< used when analysis is kEigen, and at_times by a dynamic run
 };
 
 /// Output settings (docs/config.md, "output").
