@@ -119,5 +119,19 @@ TEST(Closure, RunnerRunsTheSliderCrank) {
   EXPECT_NE(output.find("finished at t = 2.5 s"), std::string::npos) << output;
 }
 
+TEST(Closure, WingAileronBracketsLeaveTheAileronOnlyItsFlap) {
+  // config/wing_aileron (issue 17, case 2), structure only: wing and aileron beams (19 and 7 nodes, the wing
+  // clamped: 108 + 42 freedoms) and two brackets (12) joined by a universal, a revolute, a spherical joint and the
+  // closing prismatic one (4 + 5 + 3 + 5 = 17 constraints): 145 degrees of freedom, of which only the aileron's
+  // rotation in its freeplay (no hinge spring) is a rigid-body mode. A redundant or a missing constraint of the
+  // loop changes either count.
+  std::ifstream file(std::string(FLEXMBD_SOURCE_DIR) + "/config/wing_aileron/wing_aileron_modes.yaml");
+  std::stringstream yaml;
+  yaml << file.rdbuf();
+  const std::string output =
+      test::RunnerOutput("config/wing_aileron/wing_aileron.urdf", yaml.str(), "closure_wing_aileron");
+  EXPECT_NE(output.find("145 degrees of freedom, 1 rigid-body modes"), std::string::npos) << output;
+}
+
 }  // namespace
 }  // namespace flexmbd
