@@ -25,11 +25,14 @@ const std::string kDir = std::string(FLEXMBD_SOURCE_DIR) + "/config/goland_wing/
 
 ModelSpec Case(const std::string& yaml) { return LoadModelSpec(kDir + "goland_wing.urdf", kDir + yaml); }
 
-// Roots above this are the axial, shear and in-plane modes of the stiff section (above 1e5 rad/s), whose real
-// parts carry round-off of ~1e-10 of |s|; the aeroelastic modes lie below 300 rad/s [rad/s].
-constexpr double kHighestRoot = 1000.0;
+// At zero angle of attack the strips neither damp nor drive the in-plane (chordwise) motion: those roots stay on
+// the imaginary axis, their real parts round-off below 1e-6 |s|. A root counts only when its real part is larger;
+// near flutter this ignores the flutter root within 1e-6 x 70 rad/s = 7e-5 1/s of the axis, which moves the
+// speed found by 2e-4 m/s (its real part changes by 0.4 1/s per m/s).
+constexpr double kRoundOff = 1.0e-6;
 
-// The least stable root below kHighestRoot at speed U with N inflow states (real part > 0: unstable) [1/s].
+// The least stable root (largest real part) at speed U with N inflow states, among the rigid-body and the
+// undamped roots left out above (real part > 0: unstable) [1/s].
 std::complex<double> LeastStableRoot(double U, int states) {
   ModelSpec spec = Case("flutter_eigen.yaml");
   spec.aero_flow.free_stream = Vec3(0.0, U, 0.0);
@@ -38,7 +41,8 @@ std::complex<double> LeastStableRoot(double U, int states) {
   const EigenResult result = EigenAnalysis(model, model.initial_state(), EigenOptions{});
   std::complex<double> worst(-1e300, 0.0);
   for (const Mode& mode : result.modes) {
-    if (std::abs(mode.eigenvalue) < kHighestRoot && mode.eigenvalue.real() > worst.real()) worst = mode.eigenvalue;
+    if (mode.rigid_body || std::abs(mode.eigenvalue.real()) < kRoundOff * std::abs(mode.eigenvalue)) continue;
+    if (mode.eigenvalue.real() > worst.real()) worst = mode.eigenvalue;
   }
   return worst;
 }
@@ -124,20 +128,30 @@ FreeMotion FreeRun(const std::string& yaml, double t0) {
   return run;
 }
 
+// Energy books of the free runs: kinetic + strain + numerical dissipation - the air's work stays at its start
+// value; the local error of the steps (error_tol 1e-4 relative per step) bounds what is left, against the energy
+// the air moved.
+constexpr double kBooks = 1.0e-2;
+
 TEST(GolandWing, MotionBelowFlutterDecays) {
+  // From 0.5 s on, after the gust and the faster-decaying modes: the tip twist follows the bending-torsion mode.
   const FreeMotion run = FreeRun("flutter_below.yaml", 0.5);
   std::printf("130 m/s: rate %.4f 1/s, eigen %.4f 1/s; books %.3g J of %.3g J\n", run.rate, run.eigen_rate, run.books,
               run.throughput);
   ASSERT_LT(run.eigen_rate, 0.0);
   EXPECT_LT(run.rate, 0.0);
+  EXPECT_LT(run.books, kBooks * run.throughput);
 }
 
 TEST(GolandWing, MotionAboveFlutterGrows) {
+  // The same 3.5% above flutter: the twist grows (measured 1.62 1/s against the root's 1.80 1/s, see
+  // docs/validation.md: not yet explained, so only the sign is checked).
   const FreeMotion run = FreeRun("flutter_above.yaml", 0.5);
   std::printf("142 m/s: rate %.4f 1/s, eigen %.4f 1/s; books %.3g J of %.3g J\n", run.rate, run.eigen_rate, run.books,
               run.throughput);
   ASSERT_GT(run.eigen_rate, 0.0);
   EXPECT_GT(run.rate, 0.0);
+  EXPECT_LT(run.books, kBooks * run.throughput);
 }
 
 }  // namespace
