@@ -1,4 +1,8 @@
-// `aero:` typical sections carrying unsteady thin-airfoil loads (docs/config.md, "aero").
+// `aero:` typical sections and strips along beams carrying unsteady thin-airfoil loads, and the air they move in
+// (docs/config.md, "aero").
+
+#include <algorithm>
+#include <cmath>
 
 #include "flexmbd/aero/typical_section_aero.hpp"
 #include "flexmbd/io/message_text.hpp"
@@ -7,7 +11,12 @@
 namespace flexmbd {
 namespace io {
 namespace {
-const std::vector<std::string> kAeroKeys = {"sections"};
+const std::vector<std::string> kAeroKeys = {"sections", "strips", "free_stream", "density", "gust"};
+const std::vector<std::string> kStripKeys = {"beam", "semichord", "a", "chord_axis", "normal_axis", "inflow_states"};
+const std::vector<std::string> kGustKeys = {"velocity", "scale"};
+// Chord and normal axes count as perpendicular (to each other and to the beam axis) when their cosines are below
+// this: axes written to six figures are.
+constexpr double kPerpendicular = 1.0e-6;
 const std::vector<std::string> kSectionKeys = {"plunge", "pitch", "flap", "semichord", "a", "c",
                                                "span", "velocity", "density", "inflow_states"};
 
@@ -19,6 +28,15 @@ std::string ReadJointName(const Field& field, const UrdfModel& model, const std:
     names.push_back(joint.name);
   }
   field.Fail(NotFoundMessage("joint", "joints", name, model.name, names));
+}
+
+void ReadInflowStates(const Field& entry, int* states) {
+  OverlayInteger(entry, "inflow_states", Quantity{"a number of inflow states", Bound::kNonNegative, ""}, states);
+  if (*states > kMaxInflowStates) {
+    entry.Child("inflow_states")
+        .Fail(entry.Child("inflow_states").Text() + " is too many; expected 0 <= inflow_states <= " +
+              std::to_string(kMaxInflowStates) + " (8 reproduce Theodorsen's function within 1% up to k = 1)");
+  }
 }
 
 // A position along the chord in semichords from mid-chord, strictly inside the chord.
@@ -46,24 +64,78 @@ AeroSectionSpec ReadSection(const Field& entry, const std::string& name, const U
   section.velocity = ReadNumber(entry.Child("velocity"), Quantity{"a free-stream speed", Bound::kNonNegative, "m/s"});
   OverlayNumber(entry, "span", Quantity{"a span", Bound::kPositive, "m"}, &section.span);
   OverlayNumber(entry, "density", Quantity{"an air density", Bound::kPositive, "kg/m^3"}, &section.density);
-  OverlayInteger(entry, "inflow_states", Quantity{"a number of inflow states", Bound::kNonNegative, ""},
-                 &section.inflow_states);
-  if (section.inflow_states > kMaxInflowStates) {
-    entry.Child("inflow_states")
-        .Fail(entry.Child("inflow_states").Text() + " is too many; expected 0 <= inflow_states <= " +
-              std::to_string(kMaxInflowStates) + " (8 reproduce Theodorsen's function within 1% up to k = 1)");
-  }
+  ReadInflowStates(entry, &section.inflow_states);
   return section;
+}
+
+// A unit axis in the beam's section frame (x along the beam), perpendicular to the beam; normalised.
+Vec3 ReadSectionAxis(const Field& field, const std::string& what) {
+  const Vec3 axis = ReadVec3(field, Quantity{what, Bound::kAny, ""});
+  if (!(axis.norm() > 0.0) || std::abs(axis.x()) > kPerpendicular * axis.norm()) {
+    field.Fail(field.Text() + " is not a direction across the beam; expected " + what +
+               " [0, y, z] in the beam's section frame (x runs along the beam)");
+  }
+  return axis.normalized();
+}
+
+AeroStripSpec ReadStrip(const Field& entry, const std::string& name, const UrdfModel& model) {
+  CheckKeys(entry, kStripKeys);
+  AeroStripSpec strip;
+  strip.name = name;
+  for (const char* key : {"beam", "semichord", "a"}) {
+    RequireKey(entry, key, "the strip's " + std::string(key) + " (docs/config.md, \"aero\")");
+  }
+  const Field beam = entry.Child("beam");
+  strip.beam = ReadString(beam, "the name of a beam (a link under beams:)");
+  std::vector<std::string> beams;
+  for (const BeamSpec& spec : model.spec.beams) beams.push_back(spec.name);
+  if (std::find(beams.begin(), beams.end(), strip.beam) == beams.end()) {
+    beam.Fail(NotFoundMessage("beam", "beams", strip.beam, model.name, beams));
+  }
+  strip.semichord = ReadNumber(entry.Child("semichord"), Quantity{"a semichord", Bound::kPositive, "m"});
+  strip.a = ReadChordPosition(entry.Child("a"), "the elastic axis (beam axis) a");
+  if (entry.Child("chord_axis").present()) {
+    strip.chord_axis = ReadSectionAxis(entry.Child("chord_axis"), "a chord axis (leading to trailing edge)");
+  }
+  if (entry.Child("normal_axis").present()) {
+    strip.normal_axis = ReadSectionAxis(entry.Child("normal_axis"), "a chord normal (the lift direction)");
+  }
+  if (std::abs(strip.chord_axis.dot(strip.normal_axis)) > kPerpendicular) {
+    const Field field = entry.Child("normal_axis").present() ? entry.Child("normal_axis") : entry.Child("chord_axis");
+    field.Fail(field.Text() + " is not perpendicular to the chord axis; expected chord_axis and normal_axis at " +
+               "right angles in the section frame");
+  }
+  ReadInflowStates(entry, &strip.inflow_states);
+  return strip;
+}
+
+void ReadFlow(const Field& aero, AeroFlowSpec* flow) {
+  OverlayVec3(aero, "free_stream", Quantity{"a free-stream velocity in the world frame", Bound::kAny, "m/s"},
+              &flow->free_stream);
+  OverlayNumber(aero, "density", Quantity{"an air density", Bound::kPositive, "kg/m^3"}, &flow->density);
+  const Field gust = aero.Child("gust");
+  if (!gust.present()) return;
+  CheckKeys(gust, kGustKeys);
+  RequireKey(gust, "velocity", "the gust's velocity in the world frame (docs/config.md, \"aero\")");
+  flow->gust = ReadVec3(gust.Child("velocity"), Quantity{"a gust velocity in the world frame", Bound::kAny, "m/s"});
+  if (gust.Child("scale").present()) {
+    flow->gust_scale = ReadTimeFunction(gust.Child("scale"), "", Measure{false, "a gust scale factor"});
+  }
 }
 }  // namespace
 
-void ReadAero(const Field& aero, const UrdfModel& model, std::vector<AeroSectionSpec>* sections) {
+void ReadAero(const Field& aero, UrdfModel* model) {
   if (!aero.present()) return;
   CheckKeys(aero, kAeroKeys);
-  const Field map = aero.Child("sections");
-  for (const std::string& name : MapKeys(map, "a map from section names to typical sections")) {
-    sections->push_back(ReadSection(map.Child(name), name, model));
+  const Field sections = aero.Child("sections");
+  for (const std::string& name : MapKeys(sections, "a map from section names to typical sections")) {
+    model->spec.aero_sections.push_back(ReadSection(sections.Child(name), name, *model));
   }
+  const Field strips = aero.Child("strips");
+  for (const std::string& name : MapKeys(strips, "a map from strip names to strips along beams")) {
+    model->spec.aero_strips.push_back(ReadStrip(strips.Child(name), name, *model));
+  }
+  ReadFlow(aero, &model->spec.aero_flow);
 }
 
 }  // namespace io

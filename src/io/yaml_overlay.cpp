@@ -20,7 +20,7 @@ void ApplyYamlOverlay(const YAML::Node& params, const std::string& params_name, 
   ReadOutput(root.Child("output"), model->spec.solver.t_end, &model->spec.output);
   ReadBeamStations(root.Child("output"), *model, &model->spec.output);
   ReadLoads(root.Child("loads"), *model, &model->spec.loads);
-  ReadAero(root.Child("aero"), *model, &model->spec.aero_sections);
+  ReadAero(root.Child("aero"), model);
 }
 
 }  // namespace io

@@ -40,21 +40,6 @@ Section ConnerSection() {
   return s;
 }
 
-// Central differences of the element's residual over its unknowns, contexts from `context(unknowns)`.
-template <class Context>
-Eigen::MatrixXd Differences(const Section& s, const Eigen::VectorXd& unknowns, const Context& context) {
-  const Element& e = *s.element;
-  Eigen::MatrixXd out(e.num_local(), e.num_local());
-  for (int j = 0; j < e.num_local(); ++j) {
-    Eigen::VectorXd moved = unknowns;
-    moved[e.unknowns()[j]] += kStep;
-    const Eigen::VectorXd plus = test::LocalResidual(e, context(moved));
-    moved[e.unknowns()[j]] -= 2 * kStep;
-    out.col(j) = (plus - test::LocalResidual(e, context(moved))) / (2 * kStep);
-  }
-  return out;
-}
-
 Eigen::VectorXd SomeIncrements(const Model& model) {
   Eigen::VectorXd u = Eigen::VectorXd::Zero(model.num_unknowns());
   test::Random random(7);
@@ -69,7 +54,7 @@ TEST(AeroTangent, MidStepSchemeTangentMatchesDifferences) {
   const double h = 1.0e-3;
   auto context = [&](const Eigen::VectorXd& u) -> const StepContext& { return builder.Dynamic(s.start, u, h, trapezoidal); };
   const Eigen::VectorXd u = SomeIncrements(s.model);
-  const Eigen::MatrixXd expected = Differences(s, u, context);
+  const Eigen::MatrixXd expected = test::UnknownDifferences(*s.element, u, context, kStep);
   const Eigen::MatrixXd actual = test::LocalTangent(*s.element, context(u));
   EXPECT_LT(test::MaxAbs(actual - expected), kTolerance * test::MaxAbs(expected)) << "analytic\n"
                                                                                   << actual << "\ndifferences\n"
@@ -94,7 +79,7 @@ TEST(AeroTangent, EndPointStiffnessAndRatePartsMatchDifferences) {
   const StepContext& ctx = context(u);
   Eigen::MatrixXd stiffness = Eigen::MatrixXd::Zero(s.element->num_local(), s.element->num_local());
   s.element->AddTangent(ctx, stiffness);
-  const Eigen::MatrixXd expected = Differences(s, u, context);
+  const Eigen::MatrixXd expected = test::UnknownDifferences(*s.element, u, context, kStep);
   EXPECT_LT(test::MaxAbs(stiffness - expected), kTolerance * test::MaxAbs(expected));
   const test::RateParts parts = test::LocalRateParts(*s.element, context(u));
   for (bool accelerations : {false, true}) {

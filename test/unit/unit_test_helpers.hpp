@@ -114,6 +114,22 @@ inline Eigen::MatrixXd RateDifferences(const Element& e, StepContext ctx, bool a
   return differences;
 }
 
+// Central differences of an element's residual over its local unknowns, moving the global unknown vector
+// `unknowns` and taking the context from `context(moved unknowns)`: the reference for a whole tangent.
+template <class Context>
+Eigen::MatrixXd UnknownDifferences(const Element& e, const Eigen::VectorXd& unknowns, const Context& context,
+                                   double step) {
+  Eigen::MatrixXd out(e.num_local(), e.num_local());
+  for (int j = 0; j < e.num_local(); ++j) {
+    Eigen::VectorXd moved = unknowns;
+    moved[e.unknowns()[j]] += step;
+    const Eigen::VectorXd plus = LocalResidual(e, context(moved));
+    moved[e.unknowns()[j]] -= 2 * step;
+    out.col(j) = (plus - LocalResidual(e, context(moved))) / (2 * step);
+  }
+  return out;
+}
+
 // An element's rate parts (AddRateParts), from zero.
 struct RateParts {
   Eigen::MatrixXd D, M;

@@ -15,6 +15,7 @@
 #include "flexmbd/solver/cycle_statistics.hpp"
 #include "flexmbd/solver/eigen_analysis.hpp"
 #include "flexmbd/solver/simulation.hpp"
+#include "peak_rate.hpp"
 #include "runner_output.hpp"
 
 namespace flexmbd {
@@ -79,28 +80,6 @@ TEST(ConnerSection, FlutterSpeedMatchesConnersTheory) {
   EXPECT_LT(quasi_steady, (1 - kRelative) * kTheory);
 }
 
-// Decay (or growth) rate of the pitch motion over [t0, t1] from its successive peaks: the slope of log|peak|
-// against time by least squares [1/s].
-double PeakRate(const std::vector<double>& t, const std::vector<double>& x, double t0, double t1) {
-  std::vector<double> pt, px;
-  for (size_t k = 1; k + 1 < x.size(); ++k) {
-    if (t[k] < t0 || t[k] > t1) continue;
-    if (std::abs(x[k]) > std::abs(x[k - 1]) && std::abs(x[k]) >= std::abs(x[k + 1])) {
-      pt.push_back(t[k]);
-      px.push_back(std::log(std::abs(x[k])));
-    }
-  }
-  const double n = pt.size();
-  double st = 0, sx = 0, stt = 0, stx = 0;
-  for (size_t k = 0; k < pt.size(); ++k) {
-    st += pt[k];
-    sx += px[k];
-    stt += pt[k] * pt[k];
-    stx += pt[k] * px[k];
-  }
-  return (n * stx - st * sx) / (n * stt - st * st);
-}
-
 struct FreeMotion {
   double rate = 0;           // of the pitch peaks [1/s]
   double eigen_rate = 0;     // real part of the least stable root at the same speed [1/s]
@@ -123,7 +102,7 @@ FreeMotion FreeRun(const std::string& yaml, double t0, double t1) {
     run.books = std::max(run.books, std::abs(s.total() - e0 + s.numerical_dissipation + s.dissipated - s.external_work));
     run.throughput = std::max(run.throughput, std::abs(s.external_work));
   });
-  run.rate = PeakRate(t, x, t0, t1);
+  run.rate = test::PeakRate(t, x, t0, t1);
   run.eigen_rate = LeastStableRoot(spec.aero_sections.at(0).velocity, spec.aero_sections.at(0).inflow_states);
   return run;
 }

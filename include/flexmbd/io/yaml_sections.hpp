@@ -59,8 +59,9 @@ void ReadBeamStations(const Field& output, const UrdfModel& model, OutputSpec* s
 /// `loads:` a list of forces and moments on bodies of `model`.
 void ReadLoads(const Field& loads, const UrdfModel& model, std::vector<LoadSpec>* specs);
 
-/// `aero:` the typical sections that carry unsteady thin-airfoil loads, on joints of `model`.
-void ReadAero(const Field& aero, const UrdfModel& model, std::vector<AeroSectionSpec>* sections);
+/// `aero:` the typical sections (on joints of `model`) and the strips along its beams that carry unsteady
+/// thin-airfoil loads, and the free stream, density and gust the strips move in (beams read first).
+void ReadAero(const Field& aero, UrdfModel* model);
 
 /// A time function: `law` (required) and the keys that law takes. Values are in `unit` (SI; "" for a plain
 /// factor) or, if `measure` is angular, in degrees under `<key>_deg`; `phase_deg` is always allowed.

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "flexmbd/aero/beam_strip_aero.hpp"
 #include "flexmbd/aero/typical_section_aero.hpp"
 #include "flexmbd/effects/friction_effect.hpp"
 #include "flexmbd/effects/joint_stop.hpp"
@@ -100,6 +101,8 @@ class Model {
   const std::vector<FrictionInfo>& frictions() const { return frictions_; }
   /// The aerodynamic sections (aero.sections), in the order given.
   const std::vector<const TypicalSectionAero*>& aero_sections() const { return aero_sections_; }
+  /// The strips of aero.strips, strip by strip in the order given, each root to tip.
+  const std::vector<const BeamStripAero*>& aero_strips() const { return aero_strips_; }
   /// The friction elements, in frictions() order.
   const std::vector<const FrictionEffect*>& friction_effects() const { return friction_effects_; }
   /// Name of each joint variable: the joint name, with "/k" appended for the k-th of several.
@@ -136,6 +139,7 @@ class Model {
   std::vector<FrictionInfo> frictions_;
   std::vector<const FrictionEffect*> friction_effects_;
   std::vector<const TypicalSectionAero*> aero_sections_;
+  std::vector<const BeamStripAero*> aero_strips_;
   std::vector<std::string> node_names_;  ///< "body <name>" or "beam <name> node <k>", per node
   std::vector<std::string> variable_names_;
   std::vector<bool> driven_;  ///< per variable

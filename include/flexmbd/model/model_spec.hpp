@@ -252,6 +252,28 @@ struct AeroSectionSpec {
   int inflow_states = 6;            ///< Peters' induced-flow states N (0: quasi-steady)
 };
 
+/// Strips of thin-airfoil loads along a beam (docs/config.md, "aero"; docs/theory.md, (A7)-(A9)): one strip per
+/// node of the beam, as long as the node's lumped length, in the air of AeroFlowSpec. The beam axis is the
+/// elastic axis and lies on the chord line.
+struct AeroStripSpec {
+  std::string name;
+  std::string beam;                       ///< the beam (a link under beams:) carrying the strips
+  double semichord = 0.0;                 ///< b [m]
+  double a = 0.0;                         ///< the beam axis (elastic axis) at a b aft of mid-chord, -1 < a < 1
+  Vec3 chord_axis = Vec3::UnitY();        ///< unit vector from leading to trailing edge, in the section frame
+  Vec3 normal_axis = Vec3::UnitZ();       ///< unit normal of the chord (the lift direction), in the section frame
+  int inflow_states = 6;                  ///< Peters' induced-flow states N per strip (0: quasi-steady)
+};
+
+/// The air the strips move in (docs/config.md, "aero").
+struct AeroFlowSpec {
+  Vec3 free_stream = Vec3::Zero();  ///< velocity of the air far from the wing, in W [m/s]
+  double density = 1.225;           ///< rho [kg/m^3]
+  Vec3 gust = Vec3::Zero();         ///< uniform gust velocity in W, added to the free stream times gust_scale [m/s]
+  TimeFunctionSpec gust_scale;      ///< constant 1 by default
+  AeroFlowSpec() { gust_scale.value = 1.0; }
+};
+
 class Element;
 class Model;
 
@@ -272,6 +294,8 @@ struct ModelSpec {
   std::vector<JointSpec> joints;
   std::vector<LoadSpec> loads;
   std::vector<AeroSectionSpec> aero_sections;
+  std::vector<AeroStripSpec> aero_strips;
+  AeroFlowSpec aero_flow;
   std::vector<CustomElementSpec> custom_elements;
   SolverSpec solver;
   OutputSpec output;

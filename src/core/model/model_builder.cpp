@@ -12,6 +12,7 @@
 #include "flexmbd/solver/energy_decaying_integrator.hpp"
 #include "flexmbd/solver/step_context_builder.hpp"
 #include "aero_section_builder.hpp"
+#include "aero_strip_builder.hpp"
 #include "variable_effects_builder.hpp"
 
 namespace flexmbd {
@@ -239,6 +240,9 @@ Model BuildModel(const ModelSpec& spec) {
                       "expected energy_decaying or energy_preserving");
   }
   for (const AeroSectionSpec& section : spec.aero_sections) model.num_element_states_ += section.inflow_states;
+  for (const AeroStripSpec& strip : spec.aero_strips) {
+    model.num_element_states_ += strip.inflow_states * StripBeam(model, Prefix(spec), strip).nodes.size();
+  }
   for (const CustomElementSpec& custom : spec.custom_elements) model.num_element_states_ += custom.num_states;
   State& state = model.initial_state_;
   state.element_states = Eigen::VectorXd::Zero(model.num_element_states_);
@@ -331,6 +335,12 @@ Model BuildModel(const ModelSpec& spec) {
     auto element = MakeAeroSection(model, Prefix(spec), section, first_state);
     model.aero_sections_.push_back(element.get());
     add_state_owner(std::move(element));
+  }
+  for (const AeroStripSpec& strip : spec.aero_strips) {
+    for (auto& element : MakeAeroStrips(model, Prefix(spec), strip, spec.aero_flow, first_state)) {
+      model.aero_strips_.push_back(element.get());
+      add_state_owner(std::move(element));
+    }
   }
   for (const CustomElementSpec& custom : spec.custom_elements) {
     std::unique_ptr<Element> element = custom.make(model, first_state);

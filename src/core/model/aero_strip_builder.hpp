@@ -1,0 +1,22 @@
+#pragma once
+// BuildModel's helper for `aero.strips` (docs/config.md, "aero"): one strip element per node of the beam.
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "flexmbd/aero/beam_strip_aero.hpp"
+#include "flexmbd/model/model.hpp"
+
+namespace flexmbd {
+
+/// The beam that `strip` names; throws ConfigError (after `prefix`, the source) if there is none.
+const BeamInfo& StripBeam(const Model& model, const std::string& prefix, const AeroStripSpec& strip);
+
+/// The strips of `strip` on every node of its beam, root to tip, over the nodes' lumped lengths; the first
+/// one's inflow states start at `first_state`, each strip owning strip.inflow_states.
+std::vector<std::unique_ptr<BeamStripAero>> MakeAeroStrips(const Model& model, const std::string& prefix,
+                                                           const AeroStripSpec& strip, const AeroFlowSpec& flow,
+                                                           int first_state);
+
+}  // namespace flexmbd

@@ -1,0 +1,113 @@
+// `aero.strips`, `aero.free_stream`, `aero.density`, `aero.gust` (src/io/yaml_aero.cpp, docs/config.md "aero"):
+// strips read from YAML with their defaults, one strip element per beam node, and the messages of bad input.
+// Reference: the values written in the inline documents below and config/goland_wing/goland_wing.urdf.
+
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <iterator>
+
+#include "flexmbd/io/config_loader.hpp"
+#include "flexmbd/model/model.hpp"
+#include "io_test_util.hpp"
+
+namespace flexmbd {
+namespace {
+
+std::string GolandUrdf() {
+  std::ifstream in(std::string(FLEXMBD_SOURCE_DIR) + "/config/goland_wing/goland_wing.urdf");
+  return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+}
+
+const std::string kBeam =
+    "beams: {wing: {length: 6.0, elements: 2, section: {EA: 1.0e9, GA2: 1.0e9, GA3: 1.0e9, GJ: 1.0e6, EI2: 1.0e7, "
+    "EI3: 1.0e8, m: 35.0, m_ii: [8.0, 0.1, 8.0]}}}\n";
+
+ModelSpec Load(const std::string& aero) { return test::LoadInline(GolandUrdf(), kBeam + "aero: {" + aero + "}"); }
+
+ModelSpec LoadStrip(const std::string& strip) { return Load("strips: {wing_strips: {" + strip + "}}"); }
+
+const std::string kValid = "beam: wing, semichord: 0.9, a: -0.34";
+
+TEST(AeroConfig, StripWithDefaults) {
+  const ModelSpec spec = LoadStrip(kValid);
+  ASSERT_EQ(spec.aero_strips.size(), 1u);
+  const AeroStripSpec& s = spec.aero_strips[0];
+  EXPECT_EQ(s.name, "wing_strips");
+  EXPECT_EQ(s.beam, "wing");
+  EXPECT_EQ(s.semichord, 0.9);
+  EXPECT_EQ(s.a, -0.34);
+  EXPECT_EQ(s.chord_axis, Vec3::UnitY());
+  EXPECT_EQ(s.normal_axis, Vec3::UnitZ());
+  EXPECT_EQ(s.inflow_states, 6);
+  EXPECT_EQ(spec.aero_flow.free_stream, Vec3::Zero());
+  EXPECT_EQ(spec.aero_flow.density, 1.225);
+  EXPECT_EQ(spec.aero_flow.gust, Vec3::Zero());
+  // Two cubic elements: seven nodes, a strip with six states on each.
+  const Model model = BuildModel(spec);
+  ASSERT_EQ(model.aero_strips().size(), 7u);
+  EXPECT_EQ(model.num_element_states(), 42);
+  EXPECT_EQ(model.DescribeUnknown(model.element_state_unknown(6)), "aero strip wing_strips node 1 mu_1");
+}
+
+TEST(AeroConfig, AllStripAndFlowKeysRead) {
+  const ModelSpec spec = Load(
+      "free_stream: [1.0, 100.0, 0.0], density: 0.9, gust: {velocity: [0, 0, 2.0], scale: {law: constant, value: "
+      "0.5}}, strips: {wing_strips: {" +
+      kValid + ", chord_axis: [0, 0, -2], normal_axis: [0, 1, 0], inflow_states: 0}}");
+  const AeroStripSpec& s = spec.aero_strips.at(0);
+  EXPECT_EQ(s.chord_axis, -Vec3::UnitZ());  // normalised
+  EXPECT_EQ(s.normal_axis, Vec3::UnitY());
+  EXPECT_EQ(s.inflow_states, 0);
+  EXPECT_EQ(spec.aero_flow.free_stream, Vec3(1.0, 100.0, 0.0));
+  EXPECT_EQ(spec.aero_flow.density, 0.9);
+  EXPECT_EQ(spec.aero_flow.gust, Vec3(0.0, 0.0, 2.0));
+  EXPECT_EQ(spec.aero_flow.gust_scale.value, 0.5);
+}
+
+TEST(AeroConfig, StripUnknownKeyIsRejected) {
+  EXPECT_CONFIG_ERROR(LoadStrip(kValid + ", chord: 1.8"), "test.yaml: aero.strips.wing_strips.chord: unknown key");
+  EXPECT_CONFIG_ERROR(Load("gust: {speed: [0, 0, 1]}"), "test.yaml: aero.gust.speed: unknown key");
+}
+
+TEST(AeroConfig, StripMissingKeyIsRejected) {
+  EXPECT_CONFIG_ERROR(LoadStrip("beam: wing, a: -0.34"), "test.yaml: aero.strips.wing_strips: missing key 'semichord'");
+  EXPECT_CONFIG_ERROR(Load("gust: {scale: {law: constant, value: 1}}"), "test.yaml: aero.gust: missing key 'velocity'");
+}
+
+TEST(AeroConfig, StripOnAnUnknownBeamIsRejected) {
+  EXPECT_CONFIG_ERROR(LoadStrip("beam: wig, semichord: 0.9, a: -0.34"),
+                      "test.yaml: aero.strips.wing_strips.beam: no beam 'wig' in test.urdf");
+}
+
+TEST(AeroConfig, StripOnAnUnknownBeamIsRejectedAtBuild) {
+  ModelSpec spec = LoadStrip(kValid);
+  spec.aero_strips[0].beam = "tail";
+  EXPECT_CONFIG_ERROR(BuildModel(spec), "aero.strips.wing_strips.beam: no beam 'tail'; expected a link under beams: (wing)");
+}
+
+TEST(AeroConfig, StripAxesMustCrossTheBeamAtRightAngles) {
+  EXPECT_CONFIG_ERROR(LoadStrip(kValid + ", chord_axis: [1, 1, 0]"),
+                      "test.yaml: aero.strips.wing_strips.chord_axis: [1, 1, 0] is not a direction across the beam; "
+                      "expected a chord axis (leading to trailing edge) [0, y, z] in the beam's section frame");
+  EXPECT_CONFIG_ERROR(LoadStrip(kValid + ", normal_axis: [0, 0, 0]"),
+                      "test.yaml: aero.strips.wing_strips.normal_axis: [0, 0, 0] is not a direction across the beam");
+  EXPECT_CONFIG_ERROR(LoadStrip(kValid + ", normal_axis: [0, 1, 1]"),
+                      "test.yaml: aero.strips.wing_strips.normal_axis: [0, 1, 1] is not perpendicular to the chord "
+                      "axis; expected chord_axis and normal_axis at right angles in the section frame");
+}
+
+TEST(AeroConfig, StripNonphysicalValuesAreRejected) {
+  EXPECT_CONFIG_ERROR(LoadStrip("beam: wing, semichord: 0, a: -0.34"),
+                      "test.yaml: aero.strips.wing_strips.semichord: 0 is zero; expected a semichord > 0 [m]");
+  EXPECT_CONFIG_ERROR(LoadStrip("beam: wing, semichord: 0.9, a: 1"),
+                      "test.yaml: aero.strips.wing_strips.a: 1 is off the chord; expected the elastic axis (beam "
+                      "axis) a with -1 < value < 1 (semichords aft of mid-chord)");
+  EXPECT_CONFIG_ERROR(LoadStrip(kValid + ", inflow_states: 11"),
+                      "test.yaml: aero.strips.wing_strips.inflow_states: 11 is too many; expected 0 <= inflow_states <= 10");
+  EXPECT_CONFIG_ERROR(Load("density: -1"), "test.yaml: aero.density: -1 is negative; expected an air density > 0 [kg/m^3]");
+  EXPECT_CONFIG_ERROR(Load("free_stream: [0, 100]"), "test.yaml: aero.free_stream:");
+}
+
+}  // namespace
+}  // namespace flexmbd

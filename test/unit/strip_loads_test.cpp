@@ -1,0 +1,85 @@
+// The strip's loads (docs/theory.md, (A7)-(A9)) against the typical section's generalised loads (A4), which
+// PetersSection.* checks against Theodorsen: a strip with chord along +y and lift along +z in a stream U along
+// +y, pitched by alpha and plunging by h, must carry the lift -Q_h and the moment Q_alpha of ThinAirfoilLoads
+// to first order in the motion.
+
+#include <gtest/gtest.h>
+
+#include <vector>
+
+#include "flexmbd/aero/beam_strip_aero.hpp"
+#include "flexmbd/aero/thin_airfoil_loads.hpp"
+
+namespace flexmbd {
+namespace {
+
+constexpr double kRho = 1.225, kU = 30.0, kB = 0.5, kA = -0.3;
+// Motions of relative size 1e-6 (angles, and rates per U/b): the strip's exact kinematics (cos alpha, the
+// rotated normal) differ from the linear theory's by terms 1e-6 times smaller; 1e-5 of the largest load leaves
+// room for the sum of several.
+constexpr double kSmall = 1.0e-6, kTolerance = 1.0e-5;
+
+struct Comparison {
+  Eigen::Vector2d strip, section;  // (lift, moment) per unit span
+};
+
+Comparison Compare(int states) {
+  AeroStripSpec spec;
+  spec.name = "test";
+  spec.semichord = kB;
+  spec.a = kA;
+  spec.inflow_states = states;
+  AeroFlowSpec flow;
+  flow.free_stream = Vec3(0.0, kU, 0.0);
+  flow.density = kRho;
+  BeamStripAero strip(spec, flow, 0, 0, 1.0, 6);
+  strip.set_first_state(0);
+  // h down, alpha nose up about e = n x c = -x, and their rates; the inflow states of a wake that lags.
+  const double alpha = kSmall, alpha_rate = 3 * kSmall * kU / kB, alpha_acc = 4 * kSmall * kU * kU / (kB * kB);
+  const double h_rate = -2 * kSmall * kU, h_acc = 5 * kSmall * kU * kU / kB;
+  const Vec3 e = -Vec3::UnitX();
+  NodeState pitched;
+  pitched.R = Exp(alpha * e);
+  NodeStep node = MakeNodeStep(pitched, Vec6::Zero(), AnalysisMode::kEndPoint);
+  node.v_f = -h_rate * Vec3::UnitZ();
+  node.vdot_f = -h_acc * Vec3::UnitZ();
+  node.w_f = alpha_rate * e;
+  node.wdot_f = alpha_acc * e;
+  const std::vector<NodeStep> nodes = {node};
+  std::vector<ElementStateStep> inflow(states);
+  for (int k = 0; k < states; ++k) inflow[k].value = kSmall * kU * (0.5 - 0.2 * k);
+  StepContext ctx;
+  ctx.mode = AnalysisMode::kEndPoint;
+  ctx.nodes = &nodes;
+  ctx.element_states = &inflow;
+  Comparison out;
+  out.strip = strip.StripLoads(ctx);
+  // lambda0 of (A9) from the same states: (1/2) bbar^T mu + lag0 w34.
+  double lambda0 = 0.0;
+  if (states > 0) {
+    const PetersInflow peters(states);
+    const Eigen::VectorXd lag = peters.A.partialPivLu().solve(peters.c);
+    const double w34 = h_rate + kU * alpha + kB * (0.5 - kA) * alpha_rate;
+    for (int k = 0; k < states; ++k) lambda0 += 0.5 * peters.b[k] * (inflow[k].value + lag[k] * w34);
+  }
+  const ThinAirfoilLoads loads(kB, kA, 0.5);
+  const Vec3 Q = loads.Forces(kRho, kU, Vec3(0.0, alpha, 0.0), Vec3(h_rate, alpha_rate, 0.0),
+                              Vec3(h_acc, alpha_acc, 0.0), lambda0);
+  out.section = Eigen::Vector2d(-Q[0], Q[1]);
+  return out;
+}
+
+TEST(StripLoads, QuasiSteadySmallMotionMatchesTheTypicalSection) {
+  const Comparison c = Compare(0);
+  EXPECT_LT((c.strip - c.section).cwiseAbs().maxCoeff(), kTolerance * c.section.cwiseAbs().maxCoeff())
+      << "strip " << c.strip.transpose() << ", section " << c.section.transpose();
+}
+
+TEST(StripLoads, WakeInflowMatchesTheTypicalSection) {
+  const Comparison c = Compare(6);
+  EXPECT_LT((c.strip - c.section).cwiseAbs().maxCoeff(), kTolerance * c.section.cwiseAbs().maxCoeff())
+      << "strip " << c.strip.transpose() << ", section " << c.section.transpose();
+}
+
+}  // namespace
+}  // namespace flexmbd

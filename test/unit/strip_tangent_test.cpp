@@ -1,0 +1,108 @@
+// The beam strip's analytic tangent (docs/theory.md, (A7)-(A9)) against central differences of its residual: the
+// whole scheme tangent of a mid-step (energy-decaying) step, and at the end point its stiffness part and its
+// rate parts; on a Goland wing strip moving in every direction, in a gust.
+
+#include <gtest/gtest.h>
+
+#include "flexmbd/io/config_loader.hpp"
+#include "flexmbd/model/model.hpp"
+#include "flexmbd/solver/step_context_builder.hpp"
+#include "unit_test_helpers.hpp"
+
+namespace flexmbd {
+namespace {
+
+// The residual is at most quadratic in the rates (u times the downwash) and smooth in the rotations: central
+// differences with steps of 1e-6 are good to ~1e-16 |r| / 1e-6 plus (1e-6)^2 times the third derivative
+// through the rotations, ~1e-10 of the largest entry; 1e-7 leaves room.
+constexpr double kStep = 1.0e-6, kTolerance = 1.0e-7;
+// The residual is at most quadratic in the end rates and linear in the accelerations, for which central
+// differences are exact: a larger step keeps the round-off of the ~1e4 N residual at 1e-16 * 1e4 / 1e-3 = 1e-9.
+constexpr double kRateStep = 1.0e-3;
+
+struct Strip {
+  Model model;
+  const BeamStripAero* element;
+  State start;
+};
+
+Strip GolandStrip() {
+  const std::string dir = std::string(FLEXMBD_SOURCE_DIR) + "/config/goland_wing/";
+  ModelSpec spec = LoadModelSpec(dir + "goland_wing.urdf", dir + "flutter_below.yaml");
+  spec.aero_strips.at(0).inflow_states = 4;
+  // A steady gust across the span axis too, so that every component of the relative air velocity is nonzero.
+  spec.aero_flow.gust = Vec3(3.0, -4.0, 5.0);
+  spec.aero_flow.gust_scale = TimeFunctionSpec();
+  spec.aero_flow.gust_scale.kind = TimeFunctionSpec::Kind::kSine;
+  spec.aero_flow.gust_scale.amplitude = 1.0;
+  spec.aero_flow.gust_scale.frequency = 2.0;
+  Strip s{BuildModel(spec), nullptr, State()};
+  s.element = s.model.aero_strips().at(5);
+  s.start = s.model.initial_state();
+  test::Random random(7);
+  for (NodeState& n : s.start.nodes) {
+    n.R = n.R * Exp(random.Vector(0.2));
+    n.v = random.Vector(5.0);
+    n.w = random.Vector(2.0);
+  }
+  s.start.element_states = Eigen::VectorXd::LinSpaced(s.model.num_element_states(), 0.3, -0.2);
+  s.start.element_state_rates = Eigen::VectorXd::LinSpaced(s.model.num_element_states(), 1.0, 2.0);
+  return s;
+}
+
+Eigen::VectorXd SomeIncrements(const Model& model) {
+  Eigen::VectorXd u = Eigen::VectorXd::Zero(model.num_unknowns());
+  test::Random random(7);
+  u.head(model.num_kinematic()) = random.VectorX(model.num_kinematic(), 1.0e-3);
+  return u;
+}
+
+TEST(StripTangent, MidStepSchemeTangentMatchesDifferences) {
+  const Strip s = GolandStrip();
+  StepContextBuilder builder(s.model);
+  const std::vector<NodeSchemeCoefficients> trapezoidal(s.model.num_nodes());
+  const double h = 1.0e-3;
+  auto context = [&](const Eigen::VectorXd& u) -> const StepContext& { return builder.Dynamic(s.start, u, h, trapezoidal); };
+  const Eigen::VectorXd u = SomeIncrements(s.model);
+  const Eigen::MatrixXd expected = test::UnknownDifferences(*s.element, u, context, kStep);
+  const Eigen::MatrixXd actual = test::LocalTangent(*s.element, context(u));
+  EXPECT_LT(test::MaxAbs(actual - expected), kTolerance * test::MaxAbs(expected)) << "analytic\n"
+                                                                                  << actual << "\ndifferences\n"
+                                                                                  << expected;
+}
+
+TEST(StripTangent, EndPointStiffnessAndRatePartsMatchDifferences) {
+  const Strip s = GolandStrip();
+  StepContextBuilder builder(s.model);
+  auto context = [&](const Eigen::VectorXd& u) -> const StepContext& {
+    StepContext& ctx = builder.EndPoint(s.start, u, 0.3, 1.0e-3);
+    test::Random random(7);
+    for (NodeStep& n : builder.nodes()) {
+      n.v_f = random.Vector(5.0);
+      n.w_f = random.Vector(2.0);
+      n.vdot_f = random.Vector(10.0);
+      n.wdot_f = random.Vector(30.0);
+    }
+    return ctx;
+  };
+  // About the iterate itself: the end point's tangent is the derivative at zero increment (where a rotation
+  // increment turns the frame by itself; about a nonzero increment theta it turns it by T(theta) dtheta).
+  const Eigen::VectorXd u = Eigen::VectorXd::Zero(s.model.num_unknowns());
+  const StepContext& ctx = context(u);
+  Eigen::MatrixXd stiffness = Eigen::MatrixXd::Zero(s.element->num_local(), s.element->num_local());
+  s.element->AddTangent(ctx, stiffness);
+  const Eigen::MatrixXd expected = test::UnknownDifferences(*s.element, u, context, kStep);
+  EXPECT_LT(test::MaxAbs(stiffness - expected), kTolerance * test::MaxAbs(expected)) << "analytic\n"
+                                                                                     << stiffness << "\ndifferences\n"
+                                                                                     << expected;
+  const test::RateParts parts = test::LocalRateParts(*s.element, context(u));
+  for (bool accelerations : {false, true}) {
+    const Eigen::MatrixXd differences = test::RateDifferences(*s.element, context(u), accelerations, kRateStep);
+    const Eigen::MatrixXd& analytic = accelerations ? parts.M : parts.D;
+    EXPECT_LT(test::MaxAbs(analytic - differences), kTolerance * test::MaxAbs(differences))
+        << (accelerations ? "M" : "D") << "\nanalytic\n" << analytic << "\ndifferences\n" << differences;
+  }
+}
+
+}  // namespace
+}  // namespace flexmbd
