@@ -66,5 +66,12 @@ void ReadAero(const Field& aero, const UrdfModel& model, std::vector<AeroSection
   }
 }
 
+void CheckAirspeedSweep(const Field& root, const ModelSpec& spec) {
+  if (spec.solver.eigen.sweep_airspeed.empty() || !spec.aero_sections.empty()) return;
+  root.Child("solver").Child("eigen").Child("sweep").Child("airspeed").Fail(
+      "sweeps the free-stream speed of the aero sections, but there are none; expected aero.sections (docs/config.md, "
+      "\"aero\") or a sweep of velocity_scale");
+}
+
 }  // namespace io
 }  // namespace flexmbd

@@ -54,6 +54,9 @@ void ReadLoads(const Field& loads, const UrdfModel& model, std::vector<LoadSpec>
 /// `aero:` the typical sections that carry unsteady thin-airfoil loads, on joints of `model`.
 void ReadAero(const Field& aero, const UrdfModel& model, std::vector<AeroSectionSpec>* sections);
 
+/// Fails at solver.eigen.sweep.airspeed if it is given and the model has no aero sections to blow on.
+void CheckAirspeedSweep(const Field& root, const ModelSpec& spec);
+
 /// A time function: `law` (required) and the keys that law takes. Values are in `unit` (SI; "" for a plain
 /// factor) or, if `measure` is angular, in degrees under `<key>_deg`; `phase_deg` is always allowed.
 TimeFunctionSpec ReadTimeFunction(const Field& map, const std::string& unit, const Measure& measure);

@@ -213,6 +213,9 @@ struct SolverSpec {
     Method method = Method::kAuto; ///< dense below 2000 node and variable unknowns, sparse shift-invert above
     double shift_hz = 0.0;         ///< sparse: seek the modes nearest this frequency [Hz]; 0 = the lowest
     std::vector<double> sweep_velocity_scale;  ///< fan plot: factors on every initial velocity; empty for none
+    /// Fan plot over the free-stream speed of every aero section, increasing [m/s]; empty for none. The runner
+    /// locates where a mode's damping ratio changes sign (docs/theory.md, "Flutter speed" (E8)).
+    std::vector<double> sweep_airspeed;
   };
   EigenSettings eigen;             ///< used when analysis is kEigen
 };
