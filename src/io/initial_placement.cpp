@@ -18,6 +18,7 @@ class Placer {
     for (size_t i = 0; i < spec->bodies.size(); ++i) body_index_[spec->bodies[i].name] = i;
     for (size_t i = 0; i < spec->beams.size(); ++i) beam_index_[spec->beams[i].name] = i;
     for (const JointSpec& joint : spec->joints) {
+      if (joint.closes_loop) continue;  // CloseLoops attaches it to its placed child
       FLEXMBD_DEMAND(body_index_.count(joint.child) + beam_index_.count(joint.child) == 1 &&
                      mount_of_.count(joint.child) == 0);
       mount_of_[joint.child] = Mount{&joint, nullptr};

@@ -59,13 +59,6 @@ urdf::ModelInterfaceSharedPtr ParseUrdf(const std::string& urdf_xml, const std::
   return model;
 }
 
-// Where a link's frame sits: on a body (empty name: the ground), at pose X_body_link.
-struct LinkFrame {
-  std::string body;
-  Mat3 R = Mat3::Identity();
-  Vec3 p = Vec3::Zero();
-};
-
 // Builds the model by walking the URDF tree from its root.
 class UrdfWalker {
  public:
@@ -90,12 +83,12 @@ class UrdfWalker {
       return;
     }
     if (root.name == "world" || !root.inertial) {
-      frames_[root.name] = LinkFrame{};
+      model_.link_frames[root.name] = LinkFrame{};
       return;
     }
     model_.spec.bodies.push_back(MakeBody(root));
     model_.free_bodies.push_back(BodyMount{root.name, "", Mat3::Identity(), Vec3::Zero()});
-    frames_[root.name] = LinkFrame{root.name};
+    model_.link_frames[root.name] = LinkFrame{root.name};
   }
 
   // Depth first, each link's joints in URDF order (the order of the joints, and of their CSV columns), with a
@@ -112,7 +105,7 @@ class UrdfWalker {
       const urdf::Joint& joint = *to_add.back();
       to_add.pop_back();
       const urdf::Link& child = *urdf_.links_.at(joint.child_link_name);
-      AddJoint(joint, child, frames_.at(joint.parent_link_name));
+      AddJoint(joint, child, model_.link_frames.at(joint.parent_link_name));
       push_children(child);
     }
   }
@@ -132,7 +125,7 @@ class UrdfWalker {
                                 parent.p + parent.R * ToVec3(origin.position)};
     const bool beam = beam_links_.count(child.name) > 0;
     if (joint.type == urdf::Joint::FIXED && !child.inertial && !beam) {
-      frames_[child.name] = joint_frame;
+      model_.link_frames[child.name] = joint_frame;
       model_.frame_joints[joint.name] = "it fixes link '" + child.name + "', which has no <inertial>, as a frame on " +
                                         (parent.body.empty() ? "the ground" : "body '" + parent.body + "'");
       return;
@@ -145,7 +138,7 @@ class UrdfWalker {
       AddBeam(child);
     } else {
       model_.spec.bodies.push_back(MakeBody(child));
-      frames_[child.name] = LinkFrame{child.name};
+      model_.link_frames[child.name] = LinkFrame{child.name};
     }
     if (joint.type == urdf::Joint::FLOATING) {
       model_.free_bodies.push_back(BodyMount{child.name, parent.body, joint_frame.R, joint_frame.p});
@@ -160,7 +153,7 @@ class UrdfWalker {
     BeamSpec beam;
     beam.name = link.name;
     model_.spec.beams.push_back(beam);
-    frames_[link.name] = LinkFrame{link.name};
+    model_.link_frames[link.name] = LinkFrame{link.name};
   }
 
   BodySpec MakeBody(const urdf::Link& link) const {
@@ -263,7 +256,6 @@ class UrdfWalker {
   const urdf::ModelInterface& urdf_;
   const std::set<std::string>& beam_links_;
   UrdfModel model_;
-  std::map<std::string, LinkFrame> frames_;
 };
 }  // namespace
 

@@ -9,9 +9,6 @@
 
 namespace flexmbd {
 namespace io {
-namespace {
-
-// Why `name` cannot head a CSV column (the CSV header is "joint.<name>.position,..."), or "".
 std::string CsvNameProblem(const std::string& name) {
   for (const char c : name) {
     if (c == ',') return "a comma";
@@ -20,6 +17,8 @@ std::string CsvNameProblem(const std::string& name) {
   }
   return "";
 }
+
+namespace {
 
 void CheckName(const std::string& kind, const std::string& name, const std::string& urdf_name) {
   const std::string problem = CsvNameProblem(name);

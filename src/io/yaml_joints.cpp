@@ -164,8 +164,22 @@ void ReadInitial(const Field& initial, const Field& drive, const VariableUnits& 
   velocity = EvaluateRate(f, 0.0);
 }
 
+// A loop's closing joint starts where the tree puts its child (docs/config.md, "closures").
+void CheckNotSetOnClosure(const std::vector<Field>& sources, const JointSpec& joint) {
+  if (!joint.closes_loop) return;
+  for (const char* key : {"initial", "drive"}) {
+    const Field field = Pick(sources, key);
+    if (field.present()) {
+      field.Fail("the " + JointLabel(joint) + " closes a loop (closures." + joint.name +
+                 "): its motion follows from the joints of the tree; expected the initial motion or a drive on "
+                 "a joint of the URDF");
+    }
+  }
+}
+
 // Effects and initial motion of one variable, each key taken from whichever of `sources` gives it.
 void ReadVariable(const std::vector<Field>& sources, int variable, JointSpec* joint) {
+  CheckNotSetOnClosure(sources, *joint);
   const VariableUnits units = UnitsOf(*joint, variable);
   VariableEffectsSpec& effects = joint->effects[variable];
   const Field spring = Pick(sources, "spring");
@@ -221,6 +235,21 @@ void ReadVariables(const Field& field, JointSpec* joint) {
 
 void ReadJoint(const Field& field, JointSpec* joint) {
   CheckKeys(field, kJointKeys);
+  if (joint->closes_loop) {
+    for (const char* key : {"type", "axis", "axis2", "pitch"}) {
+      if (field.Child(key).present()) {
+        field.Child(key).Fail("the " + JointLabel(*joint) + " is a closure: its geometry is given under closures." +
+                              joint->name + "; expected only effects here");
+      }
+    }
+  } else {
+    ReadJointGeometry(field, joint);
+  }
+  ReadVariables(field, joint);
+}
+}  // namespace
+
+void ReadJointGeometry(const Field& field, JointSpec* joint) {
   ReadJointType(field, joint);
   OverlayVec3(field, "axis", Quantity{"a joint axis in the joint frame", Bound::kAny, ""}, &joint->axis_J);
   joint->axis2_J = DefaultSecondAxis(joint->axis_J);  // URDF has no second axis: only the YAML sets one
@@ -228,9 +257,7 @@ void ReadJoint(const Field& field, JointSpec* joint) {
   CheckSecondAxis(field, *joint);
   CheckKinematics(field, *joint);
   ResizeJointVariables(joint);
-  ReadVariables(field, joint);
 }
-}  // namespace
 
 void ReadJoints(const Field& joints, UrdfModel* model) {
   for (const std::string& name : MapKeys(joints, "a map from URDF joint names to joint settings")) {

@@ -6,7 +6,7 @@ namespace flexmbd {
 namespace io {
 
 const std::vector<std::string>& YamlSectionNames() {
-  static const std::vector<std::string> names{"beams", "joints", "solver", "output", "loads", "aero"};
+  static const std::vector<std::string> names{"beams", "joints", "solver", "output", "loads", "aero", "closures"};
   return names;
 }
 
@@ -14,6 +14,7 @@ void ApplyYamlOverlay(const YAML::Node& params, const std::string& params_name, 
   const Field root(params, params_name);
   CheckKeys(root, YamlSectionNames());
   ReadBeams(root.Child("beams"), model);
+  ReadClosures(root.Child("closures"), model);
   ReadJoints(root.Child("joints"), model);
   ReadSolver(root.Child("solver"), &model->spec.solver);
   ReadOutput(root.Child("output"), model->spec.solver.t_end, &model->spec.output);

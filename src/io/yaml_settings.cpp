@@ -8,7 +8,8 @@ const std::vector<std::string> kSolverKeys = {"analysis",       "integrator", "r
                                               "dt_min",         "dt_max",     "adaptive",     "tol",    "error_tol",
                                               "error_floor",    "max_iterations", "load_steps", "static_first", "gravity",
                                               "eigen"};
-const std::vector<std::string> kEigenKeys = {"modes", "static_first", "method", "shift_hz", "about", "sweep"};
+const std::vector<std::string> kEigenKeys = {"modes", "static_first", "method", "shift_hz", "about", "sweep",
+                                             "at_times"};
 const std::vector<std::string> kSweepKeys = {"velocity_scale", "airspeed"};
 const std::vector<std::string> kErrorFloorKeys = {"position", "rotation", "joint"};
 const std::vector<std::string> kOutputKeys = {"rate_hz", "csv", "bag", "beam_stations", "allow_large_output",
@@ -69,6 +70,9 @@ void ReadEigen(const Field& eigen, SolverSpec::EigenSettings* spec) {
     eigen.Child("static_first").Fail("true cannot go with about: steady_state (the steady state includes gravity "
                                      "and loads); expected false");
   }
+  if (eigen.Child("at_times").present()) {
+    spec->at_times = ReadNumberList(eigen.Child("at_times"), Quantity{"a time", Bound::kNonNegative, "s"});
+  }
   const Field sweep = eigen.Child("sweep");
   if (!sweep.present()) return;
   CheckKeys(sweep, kSweepKeys);
@@ -92,6 +96,35 @@ void ReadEigen(const Field& eigen, SolverSpec::EigenSettings* spec) {
   if (spec->static_first) {
     eigen.Child("static_first").Fail(
         "true cannot go with a sweep of velocities (the static solution is at rest); expected false");
+  }
+}
+
+// `solver.eigen.at_times`: the times of a dynamic run whose state is analysed. Checked once the analysis, the
+// end time and the rest of solver.eigen are known.
+void CheckEigenTimes(const Field& solver, const SolverSpec& spec) {
+  const Field eigen = solver.Child("eigen");
+  const Field times = eigen.Child("at_times");
+  if (!times.present()) return;
+  if (spec.analysis != SolverSpec::Analysis::kDynamic) {
+    times.Fail("applies to analysis: dynamic (the modes about the state at times of the run); expected no at_times "
+               "with another analysis");
+  }
+  for (const char* key : {"about", "sweep", "static_first"}) {
+    if (eigen.Child(key).present()) {
+      eigen.Child(key).Fail(std::string("cannot go with at_times (the state analysed is the run's); expected no ") +
+                            key);
+    }
+  }
+  const std::vector<double>& t = spec.eigen.at_times;
+  for (size_t i = 0; i < t.size(); ++i) {
+    if (t[i] > spec.t_end) {
+      times.Entry(i).Fail(times.Entry(i).Text() + " s is after solver.t_end " + FormatNumber(spec.t_end) +
+                          " s; expected times in [0, t_end]");
+    }
+    if (i > 0 && !(t[i] > t[i - 1])) {
+      times.Entry(i).Fail(times.Entry(i).Text() + " s is not after the previous time " + FormatNumber(t[i - 1]) +
+                          " s; expected increasing times [s]");
+    }
   }
 }
 }  // namespace
@@ -138,6 +171,7 @@ void ReadSolver(const Field& solver, SolverSpec* spec) {
   OverlayVec3(solver, "gravity", Quantity{"a gravity acceleration", Bound::kAny, "m/s^2"}, &spec->gravity);
   if (solver.Child("eigen").present()) ReadEigen(solver.Child("eigen"), &spec->eigen);
   CheckStepBounds(solver, *spec);
+  CheckEigenTimes(solver, *spec);
 }
 
 void ReadOutput(const Field& output, double t_end, OutputSpec* spec) {

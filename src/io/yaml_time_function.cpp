@@ -10,7 +10,7 @@ namespace {
 using Kind = TimeFunctionSpec::Kind;
 
 // What a scalar key of a time function measures.
-enum class KeyUnit { kValue, kAngle, kTime, kFrequency };
+enum class KeyUnit { kValue, kRate, kAngle, kTime, kFrequency };
 
 struct ScalarKey {
   const char* name;
@@ -22,6 +22,7 @@ struct ScalarKey {
 
 const ScalarKey kScalarKeys[] = {
     {"value", &TimeFunctionSpec::value, KeyUnit::kValue, Bound::kAny, "a value"},
+    {"rate", &TimeFunctionSpec::value, KeyUnit::kRate, Bound::kAny, "a rate"},
     {"offset", &TimeFunctionSpec::offset, KeyUnit::kValue, Bound::kAny, "an offset"},
     {"amplitude", &TimeFunctionSpec::amplitude, KeyUnit::kValue, Bound::kAny, "an amplitude"},
     {"start", &TimeFunctionSpec::start, KeyUnit::kTime, Bound::kAny, "a start time"},
@@ -41,18 +42,19 @@ const std::vector<Law>& Laws() {
       {"constant", Kind::kConstant, {"value"}},
       {"linear_ramp", Kind::kLinearRamp, {"value", "offset", "start", "duration"}},
       {"cosine_ramp", Kind::kCosineRamp, {"value", "offset", "start", "duration"}},
+      {"rate_ramp", Kind::kRateRamp, {"rate", "offset", "start", "duration"}},
       {"sine", Kind::kSine, {"offset", "amplitude", "frequency", "phase", "start"}},
       {"table", Kind::kTable, {"times", "values"}},
   };
   return laws;
 }
 
-// Keys that may also be written in degrees: the values of the function (in the driven variable's unit) and
-// the phase.
+// Keys that may also be written in degrees: the values of the function (in the driven variable's unit), its
+// rate (deg/s) and the phase.
 bool HasDegreeForm(const std::string& key) {
   if (key == "values") return true;
   for (const ScalarKey& scalar : kScalarKeys) {
-    if (key == scalar.name) return scalar.unit == KeyUnit::kValue || scalar.unit == KeyUnit::kAngle;
+    if (key == scalar.name) return scalar.unit != KeyUnit::kTime && scalar.unit != KeyUnit::kFrequency;
   }
   return false;
 }
@@ -92,6 +94,7 @@ void CheckLawKeys(const Field& map, const Law& law) {
 std::pair<std::string, Measure> UnitOf(const ScalarKey& key, const std::string& unit, const Measure& measure) {
   switch (key.unit) {
     case KeyUnit::kValue: return {unit, measure};
+    case KeyUnit::kRate: return {unit + "/s", measure};
     case KeyUnit::kAngle: return {"rad", Measure{true, "a phase"}};
     case KeyUnit::kTime: return {"s", Measure{false, key.quantity}};
     case KeyUnit::kFrequency: return {"Hz", Measure{false, key.quantity}};

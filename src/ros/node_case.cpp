@@ -70,6 +70,11 @@ NodeCase LoadNodeCase(const ::ros::NodeHandle& node, const ::ros::NodeHandle& pr
                       ": solver.analysis: eigen is not a run the node can publish; expected dynamic or static "
                       "(flexmbd_run prints eigen-analyses)");
   }
+  if (!spec.solver.eigen.at_times.empty()) {
+    throw ConfigError(private_node.getNamespace() +
+                      ": solver.eigen.at_times: the node publishes no mode tables; expected no at_times "
+                      "(flexmbd_run prints them)");
+  }
   if (settings.rate_hz) spec.output.rate_hz = *settings.rate_hz;
   // the node's ~bag counts in BuildModel's bound on the output size
   if (settings.bag) spec.output.bag = *settings.bag;

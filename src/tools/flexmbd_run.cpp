@@ -113,6 +113,38 @@ void PrintSummary(const flexmbd::Simulation& simulation, const flexmbd::OutputSa
   }
 }
 
+// The settings of solver.eigen as the eigen-analysis takes them.
+flexmbd::EigenOptions EigenOptionsOf(const flexmbd::SolverSpec::EigenSettings& settings) {
+  using Method = flexmbd::SolverSpec::EigenSettings::Method;
+  flexmbd::EigenOptions options;
+  options.num_modes = settings.modes;
+  options.shift_hz = settings.shift_hz;
+  options.method = settings.method == Method::kDense    ? flexmbd::EigenMethod::kDense
+                   : settings.method == Method::kSparse ? flexmbd::EigenMethod::kSparse
+                                                        : flexmbd::EigenMethod::kAuto;
+  return options;
+}
+
+// The mode table of an eigen-analysis about the state at time t, with its heading line.
+void PrintModesAt(double t, const flexmbd::EigenResult& result) {
+  std::printf("flexmbd_run: eigen-analysis at t = %.6g s (%s): %d degrees of freedom, %d rigid-body modes\n", t,
+              result.method.c_str(), result.num_dof, result.num_rigid_body);
+  std::fputs(flexmbd::FormatModeTable(result).c_str(), stdout);
+}
+
+// solver.eigen.at_times of a dynamic run: the modes about the state the run has reached at each time, its
+// accelerations and multipliers solved from the equations of motion there (docs/theory.md, "Eigen-analysis at
+// a time of a run"). A failure names the time.
+void PrintModesOfRunState(const flexmbd::Model& model, const flexmbd::State& state) {
+  try {
+    PrintModesAt(state.t, flexmbd::EigenAnalysis(model, state, EigenOptionsOf(model.solver().eigen)));
+  } catch (const flexmbd::SolverError& e) {
+    char when[64];
+    std::snprintf(when, sizeof(when), "eigen-analysis at t = %.6g s: ", state.t);
+    throw flexmbd::SolverError(when + std::string(e.what()));
+  }
+}
+
 // solver.eigen.about: steady_state. The mode table about the steady rotation at the initial hub rate, or a fan
 // plot with the steady state solved at each speed factor.
 void RunEigenAboutSteadyRotation(const flexmbd::Model& model, const flexmbd::EigenOptions& options) {
@@ -205,14 +237,8 @@ void RunAirspeedSweep(const flexmbd::ModelSpec& spec, const flexmbd::EigenOption
 // solver.analysis: eigen. Linearises about the initial state (or its static equilibrium, or the steady rotation)
 // and prints the mode table, or a fan-plot table for a sweep of velocity factors or airspeeds.
 void RunEigen(const flexmbd::ModelSpec& spec, const flexmbd::Model& model) {
-  using Method = flexmbd::SolverSpec::EigenSettings::Method;
   const flexmbd::SolverSpec::EigenSettings& settings = model.solver().eigen;
-  flexmbd::EigenOptions options;
-  options.num_modes = settings.modes;
-  options.shift_hz = settings.shift_hz;
-  options.method = settings.method == Method::kDense    ? flexmbd::EigenMethod::kDense
-                   : settings.method == Method::kSparse ? flexmbd::EigenMethod::kSparse
-                                                        : flexmbd::EigenMethod::kAuto;
+  const flexmbd::EigenOptions options = EigenOptionsOf(settings);
   if (settings.about == flexmbd::SolverSpec::EigenSettings::About::kSteadyState) {
     RunEigenAboutSteadyRotation(model, options);
     return;
@@ -231,10 +257,7 @@ void RunEigen(const flexmbd::ModelSpec& spec, const flexmbd::Model& model) {
     std::fputs(flexmbd::FormatFanPlot(points, "velocity_scale", settings.modes).c_str(), stdout);
     return;
   }
-  const flexmbd::EigenResult result = flexmbd::EigenAnalysis(model, state, options);
-  std::printf("flexmbd_run: eigen-analysis at t = %.6g s (%s): %d degrees of freedom, %d rigid-body modes\n",
-              state.t, result.method.c_str(), result.num_dof, result.num_rigid_body);
-  std::fputs(flexmbd::FormatModeTable(result).c_str(), stdout);
+  PrintModesAt(state.t, flexmbd::EigenAnalysis(model, state, options));
 }
 
 }  // namespace
@@ -281,13 +304,15 @@ int main(int argc, char** argv) {
     long samples = 0;
     Clock::time_point first_sample_wall;
     try {
-      simulation.Run([&](const flexmbd::OutputSample& sample) {
-        if (samples++ == 0) first_sample_wall = Clock::now();
-        if (converter) converter->Convert(sample, simulation.state(), &messages);
-        outputs.Write(sample, messages);
-        cycle.Add(sample);
-        last = sample;
-      });
+      simulation.Run(
+          [&](const flexmbd::OutputSample& sample) {
+            if (samples++ == 0) first_sample_wall = Clock::now();
+            if (converter) converter->Convert(sample, simulation.state(), &messages);
+            outputs.Write(sample, messages);
+            cycle.Add(sample);
+            last = sample;
+          },
+          model.solver().eigen.at_times, [&](const flexmbd::State& state) { PrintModesOfRunState(model, state); });
     } catch (const flexmbd::SolverError& e) {
       std::fprintf(stderr, "flexmbd_run: run failed: %s\n", e.what());
       std::printf("flexmbd_run: %s\n", simulation.statistics().Summary(simulation.model()).c_str());

@@ -68,7 +68,7 @@ TEST(NodeExit, MisspeltNodeSettingExitsWithTwoListingTheSettings) {
                      "'real_time_factor'? expected a node setting (urdf_file, real_time_factor, bag, "
                      "bag_compression, publish, rate_hz, keep_alive, wait_for_subscribers, clock_rate_hz, paused, "
                      "setpoint_time_constant) "
-                     "or a section of the case (beams, joints, solver, output, loads, aero, docs/config.md)");
+                     "or a section of the case (beams, joints, solver, output, loads, aero, closures, docs/config.md)");
 }
 
 TEST(NodeExit, MissingUrdfFileExitsWithTwoNamingTheFile) {

@@ -108,6 +108,34 @@ TEST(ConfigErrors, NegativeCycleReportStartIsRejected) {
   EXPECT_CONFIG_ERROR(Pendulum("output: {cycle_from: -1.0}"), "pendulum.yaml: output.cycle_from: -1");
 }
 
+TEST(ConfigErrors, EigenTimesNeedADynamicRun) {
+  EXPECT_CONFIG_ERROR(Pendulum("solver: {analysis: static, eigen: {at_times: [0.5]}}"),
+                      "pendulum.yaml: solver.eigen.at_times: applies to analysis: dynamic (the modes about the state "
+                      "at times of the run); expected no at_times with another analysis");
+}
+
+TEST(ConfigErrors, EigenTimeAfterTheEndIsRejected) {
+  EXPECT_CONFIG_ERROR(Pendulum("solver: {t_end: 2.0, eigen: {at_times: [1.0, 2.5]}}"),
+                      "pendulum.yaml: solver.eigen.at_times[1]: 2.5 s is after solver.t_end 2 s; expected times in "
+                      "[0, t_end]");
+}
+
+TEST(ConfigErrors, EigenTimesOutOfOrderAreRejected) {
+  EXPECT_CONFIG_ERROR(Pendulum("solver: {t_end: 2.0, eigen: {at_times: [1.0, 1.0]}}"),
+                      "pendulum.yaml: solver.eigen.at_times[1]: 1.0 s is not after the previous time 1 s; expected "
+                      "increasing times [s]");
+}
+
+TEST(ConfigErrors, NegativeEigenTimeIsRejected) {
+  EXPECT_CONFIG_ERROR(Pendulum("solver: {eigen: {at_times: [-0.5]}}"), "pendulum.yaml: solver.eigen.at_times[0]: -0.5");
+}
+
+TEST(ConfigErrors, EigenTimesCannotGoWithASteadyState) {
+  EXPECT_CONFIG_ERROR(Pendulum("solver: {eigen: {about: steady_state, at_times: [0.5]}}"),
+                      "pendulum.yaml: solver.eigen.about: cannot go with at_times (the state analysed is the run's); "
+                      "expected no about");
+}
+
 TEST(ConfigErrors, KineticAboveStaticFrictionIsRejected) {
   EXPECT_CONFIG_ERROR(Pendulum("joints: {B1: {friction: {mu_s: 0.1, mu_k: 0.2}}}"),
                       "pendulum.yaml: joints.B1.friction.mu_s: 0.1 is below mu_k 0.2; expected mu_s >= mu_k");
@@ -172,7 +200,7 @@ TEST(ConfigErrors, VectorOfWrongLengthIsRejected) {
 TEST(ConfigErrors, UnknownChoiceSuggestsClosest) {
   EXPECT_CONFIG_ERROR(Pendulum("joints: {B1: {drive: {law: sinus}}}"),
                       "pendulum.yaml: joints.B1.drive.law: 'sinus' is not a valid law; expected one of constant, "
-                      "linear_ramp, cosine_ramp, sine, table; did you mean 'sine'?");
+                      "linear_ramp, cosine_ramp, rate_ramp, sine, table; did you mean 'sine'?");
 }
 
 TEST(ConfigErrors, DegreesOnPrismaticVariableAreRejected) {

@@ -170,6 +170,23 @@ TEST(YamlOverlay, TableDriveRead) {
   EXPECT_NEAR(drive.values[2], M_PI, kTolerance);
 }
 
+TEST(YamlOverlay, RateRampDriveReadInDegreesPerSecond) {
+  const ModelSpec spec = test::LoadInline(kHingeUrdf, R"(
+    joints: {hinge: {drive: {law: rate_ramp, rate_deg: 180.0, start: 1.0, duration: 2.0}}})");
+  const TimeFunctionSpec& drive = spec.joints.at(0).effects.at(0).drives.at(0);
+  EXPECT_EQ(drive.kind, TimeFunctionSpec::Kind::kRateRamp);
+  EXPECT_NEAR(drive.value, M_PI, kTolerance);
+  EXPECT_EQ(drive.start, 1.0);
+  EXPECT_EQ(drive.duration, 2.0);
+}
+
+TEST(YamlOverlay, EigenTimesOfADynamicRunRead) {
+  const ModelSpec spec =
+      test::LoadInline(kHingeUrdf, "solver: {t_end: 2.0, eigen: {modes: 2, at_times: [0.0, 0.5, 2.0]}}");
+  EXPECT_EQ(spec.solver.eigen.at_times, std::vector<double>({0.0, 0.5, 2.0}));
+  EXPECT_EQ(spec.solver.eigen.modes, 2);
+}
+
 TEST(YamlOverlay, UniversalTakesSecondAxis) {
   const ModelSpec spec = test::LoadInline(kHingeUrdf, "joints: {hinge: {type: universal, axis2: [0, 1, 0]}}");
   EXPECT_EQ(spec.joints.at(0).type, JointType::kUniversal);

@@ -135,6 +135,29 @@ TEST(TimeFunction, CosineRampIsSmoothAtItsEnds) {
   EXPECT_NEAR(Evaluate(f, 3.0 - 1.0e-9), 2.5, kContinuity);
 }
 
+TEST(TimeFunction, RateRampMatchesHandValues) {
+  // Reference: the rate f' = value (1 - cos(pi s))/2 over the ramp, value after it; f = offset +
+  // value duration (s/2 - sin(pi s)/(2 pi)) on the ramp, then offset + value (t - start - duration/2);
+  // f'' = value (pi/duration) sin(pi s)/2. Ramp(): offset 0.5, rate 2.5, start 1, duration 2.
+  const TimeFunctionSpec f = Ramp(Kind::kRateRamp);
+  EXPECT_NEAR(Evaluate(f, -5.0), 0.5, kHandValue);
+  EXPECT_NEAR(Evaluate(f, 1.0), 0.5, kHandValue);
+  EXPECT_NEAR(Evaluate(f, 2.0), 0.5 + 2.5 * 2.0 * (0.25 - 1.0 / (2.0 * M_PI)), kHandValue);
+  EXPECT_NEAR(Evaluate(f, 3.0), 0.5 + 2.5 * 1.0, kHandValue);
+  EXPECT_NEAR(Evaluate(f, 13.0), 0.5 + 2.5 * 11.0, kHandValue);
+  EXPECT_NEAR(EvaluateRate(f, 2.0), 2.5 / 2.0, kHandValue);
+  EXPECT_NEAR(EvaluateRate(f, 7.0), 2.5, kHandValue);
+  EXPECT_NEAR(EvaluateSecondRate(f, 2.0), 2.5 * (M_PI / 2.0) / 2.0, kHandValue);
+  for (double t : {0.0, 3.5}) EXPECT_EQ(EvaluateSecondRate(f, t), 0.0) << "t " << t;
+  EXPECT_EQ(EvaluateRate(f, 0.0), 0.0);
+}
+
+TEST(TimeFunction, RateRampRatesMatchFiniteDifferences) {
+  // Reference: central differences inside the ramp and on the holds; f and f' are continuous at both ends.
+  const TimeFunctionSpec f = Ramp(Kind::kRateRamp);
+  for (double t : {0.3, 1.2, 1.7, 2.0, 2.6, 2.95, 4.5}) ExpectRatesMatchFiniteDifferences(f, t);
+}
+
 TEST(TimeFunction, SineMatchesHandValues) {
   // Reference: f = offset + A sin(2 pi nu (t - start) + phase) from start; offset + A sin(phase) before it,
   // with zero rates there.

@@ -31,15 +31,39 @@ inline std::string RunnerOutput(const std::string& urdf, const std::string& yaml
   return text.str();
 }
 
-/// The frequency [Hz] of mode `index` in a printed mode table, or NaN when the row is missing.
-inline double TableFrequency(const std::string& table, int index) {
+// Frequency [Hz], damping ratio and remark of row `index` of a printed mode table.
+struct TableRow {
+  double frequency_hz = std::nan(""), damping_ratio = std::nan("");
+  std::string remark;
+};
+
+inline TableRow ModeRow(const std::string& table, int index) {
   char row[16];
   std::snprintf(row, sizeof(row), "\n%4d  ", index);
+  TableRow out;
   const size_t at = table.find(row);
-  double frequency = std::nan("");
-  if (at != std::string::npos) std::sscanf(table.c_str() + at, " %*d %lf", &frequency);
-  return frequency;
+  if (at == std::string::npos) return out;
+  const std::string line = table.substr(at + 1, table.find('\n', at + 1) - at - 1);
+  std::istringstream values(line);
+  int mode = 0;
+  double damped = 0;
+  values >> mode >> out.frequency_hz >> damped >> out.damping_ratio;
+  std::getline(values >> std::ws, out.remark);
+  return out;
 }
+
+/// The mode table the runner printed for the state at time `t` of a dynamic run (solver.eigen.at_times), from its
+/// heading "eigen-analysis at t = <t> s" (t printed as %.6g) to the next line of the runner; "" if there is none.
+inline std::string ModeTableAt(const std::string& output, double t) {
+  char heading[64];
+  std::snprintf(heading, sizeof(heading), "eigen-analysis at t = %.6g s", t);
+  const size_t at = output.find(heading);
+  if (at == std::string::npos) return "";
+  return output.substr(at, output.find("\nflexmbd_run:", at) - at);
+}
+
+/// The frequency [Hz] of mode `index` in a printed mode table, or NaN when the row is missing.
+inline double TableFrequency(const std::string& table, int index) { return ModeRow(table, index).frequency_hz; }
 
 // The table prints 8 significant digits.
 constexpr double kPrintedTolerance = 1.0e-7;

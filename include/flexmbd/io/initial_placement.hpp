@@ -33,7 +33,8 @@ FrameMotion ChildMotion(const FrameMotion& P, const JointSpec& joint);
 
 /// Sets p_WB, R_WB, v_WBo_W and w_WB_W of every body from the world outwards: a body that is the child of
 /// a joint by ChildMotion, a body in `free_bodies` by CarryRigidly from its mount.
-/// @pre every body is placed by exactly one joint or mount, and the joints form a tree.
+/// Joints that close loops (`closes_loop`) are left out: CloseLoops attaches them afterwards.
+/// @pre every body is placed by exactly one joint (not closing a loop) or mount, and those joints form a tree.
 void PlaceBodies(const std::vector<BodyMount>& free_bodies, ModelSpec* spec);
 
 }  // namespace io

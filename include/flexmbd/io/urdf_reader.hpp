@@ -22,6 +22,13 @@ struct BodyMount {
   Vec3 p_PB = Vec3::Zero();      ///< body origin in the parent frame [m]
 };
 
+/// Where a link's frame sits: on a body or beam (empty name: the ground), at pose X_body_link.
+struct LinkFrame {
+  std::string body;
+  Mat3 R = Mat3::Identity();
+  Vec3 p = Vec3::Zero();
+};
+
 /// What a URDF contributes to a model, and what the YAML overlay needs to know about it.
 struct UrdfModel {
   std::string name;  ///< the URDF's file name, for messages
@@ -30,6 +37,7 @@ struct UrdfModel {
   /// URDF joints that have no JointSpec, with the reason (a fixed joint to a link without <inertial>, which
   /// becomes a frame of its parent body, or a floating joint).
   std::map<std::string, std::string> frame_joints;
+  std::map<std::string, LinkFrame> link_frames;  ///< every link of the URDF
 };
 
 /// Reads a URDF. The links named in `beam_links` become beams (BeamSpec with only name and frame set; their

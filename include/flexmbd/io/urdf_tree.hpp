@@ -13,6 +13,10 @@
 namespace flexmbd {
 namespace io {
 
+/// Why `name` cannot head a CSV column (the CSV header is "joint.<name>.position,..."): "a comma", ...; "" if
+/// it can.
+std::string CsvNameProblem(const std::string& name);
+
 /// Checks that every link and joint name can head a CSV column (no comma, double quote or control
 /// character), that each link is the child of at most one joint, and that every link is reached from the
 /// root (so the joints have no cycle). Iterative: a chain of any depth is checked without recursion.

@@ -30,6 +30,14 @@ std::vector<StopSpec> ReadBacklash(const Field& backlash, const JointSpec& joint
 /// `friction:` of one joint variable: Coulomb friction with sticking (or the regularised law).
 FrictionSpec ReadFriction(const Field& friction, const VariableUnits& units);
 
+/// A joint's `type`, `axis`, `axis2` and `pitch` (each overwriting what the joint has), checked, and its
+/// per-variable vectors sized to the type.
+void ReadJointGeometry(const Field& field, JointSpec* joint);
+
+/// `closures:` joints that close kinematic loops, appended to model->spec.joints (read before `joints:`, which
+/// may configure their effects); their child side is set once the bodies are placed (CloseLoops).
+void ReadClosures(const Field& closures, UrdfModel* model);
+
 /// `joints:` a map from URDF joint names to joint settings (type, axes, pitch, effects, initial motion).
 void ReadJoints(const Field& joints, UrdfModel* model);
 

@@ -18,9 +18,10 @@ using Mat3 = Eigen::Matrix3d;
 
 /// A time function f(t), used by drives and applied loads (docs/config.md, "time functions").
 struct TimeFunctionSpec {
-  enum class Kind { kConstant, kLinearRamp, kCosineRamp, kSine, kTable };
+  enum class Kind { kConstant, kLinearRamp, kCosineRamp, kRateRamp, kSine, kTable };
   Kind kind = Kind::kConstant;
-  double value = 0.0;      ///< constant value, or the value reached by a ramp (SI units of the driven quantity)
+  double value = 0.0;      ///< constant value, or the value reached by a ramp (SI units of the driven quantity);
+                           ///< kRateRamp: the rate reached (SI units per second)
   double start = 0.0;      ///< time at which a ramp or sine begins [s]
   double duration = 1.0;   ///< ramp duration [s]
   double offset = 0.0;     ///< value before the ramp starts, and mean of the sine
@@ -128,6 +129,9 @@ struct JointSpec {
   std::vector<VariableEffectsSpec> effects;     ///< one entry per variable (may be empty)
   bool has_limits = false;                      ///< URDF <limit> given (used by backlash without angles)
   double limit_lower = 0.0, limit_upper = 0.0;  ///< URDF <limit> lower and upper [rad or m]
+  /// A joint of YAML `closures:` that closes a kinematic loop: not part of the tree that places the bodies;
+  /// its initial variables are those that put its child frame where the tree placed it (docs/config.md).
+  bool closes_loop = false;
 };
 
 /// Sectional properties of a beam, in the section frame (x along the beam axis).
@@ -216,8 +220,11 @@ struct SolverSpec {
     /// Fan plot over the free-stream speed of every aero section, increasing [m/s]; empty for none. The runner
     /// locates where a mode's damping ratio changes sign (docs/theory.md, "Flutter speed" (E8)).
     std::vector<double> sweep_airspeed;
+    /// A dynamic run lands a step on each of these times and reports the modes about the state there
+    /// (docs/theory.md, "Eigen-analysis at a time of a run") [s]; increasing, in [0, t_end]; empty for none.
+    std::vector<double> at_times;
   };
-  EigenSettings eigen;             ///< used when analysis is kEigen
+  EigenSettings eigen;             ///< used when analysis is kEigen, and at_times by a dynamic run
 };
 
 /// Output settings (docs/config.md, "output").

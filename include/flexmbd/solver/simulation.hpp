@@ -5,6 +5,7 @@
 
 #include <functional>
 #include <memory>
+#include <vector>
 
 #include "flexmbd/model/model.hpp"
 #include "flexmbd/solver/effect_events.hpp"
@@ -19,12 +20,17 @@ namespace flexmbd {
 class Simulation {
  public:
   using SampleSink = std::function<void(const OutputSample&)>;
+  using StateSink = std::function<void(const State&)>;
 
   explicit Simulation(const Model& model);
 
   /// Runs what the model's solver settings ask for (static, or dynamic with an optional static start),
   /// passing every output sample to `sink`. Throws SolverError when the run cannot go on.
   void Run(const SampleSink& sink);
+
+  /// As Run, and a dynamic run also lands a step on each of `instants` (increasing, in [0, t_end] [s]) and
+  /// passes the state there to `at_instant` before it goes on (solver.eigen.at_times).
+  void Run(const SampleSink& sink, const std::vector<double>& instants, const StateSink& at_instant);
 
   /// Static equilibrium from the current state. Throws SolverError if Newton fails.
   StaticResult SolveStaticEquilibrium();

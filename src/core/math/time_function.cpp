@@ -24,6 +24,17 @@ double Derivative(const TimeFunctionSpec& f, double t, int order) {
       if (order == 1) return 0.5 * span * w * std::sin(M_PI * s);
       return 0.5 * span * w * w * std::cos(M_PI * s);
     }
+    case Kind::kRateRamp: {
+      // The rate follows a cosine ramp from 0 to `value`; f is its integral from `start`, plus `offset`.
+      const double s = (t - f.start) / f.duration;
+      if (s < 0.0) return order == 0 ? f.offset : 0.0;
+      if (s >= 1.0) {
+        return order == 0 ? f.offset + f.value * (t - f.start - 0.5 * f.duration) : order == 1 ? f.value : 0.0;
+      }
+      if (order == 0) return f.offset + f.value * f.duration * (0.5 * s - std::sin(M_PI * s) / (2.0 * M_PI));
+      if (order == 1) return 0.5 * f.value * (1.0 - std::cos(M_PI * s));
+      return 0.5 * f.value * (M_PI / f.duration) * std::sin(M_PI * s);
+    }
     case Kind::kSine: {
       const double w = 2.0 * M_PI * f.frequency;
       const double arg = t < f.start ? f.phase : w * (t - f.start) + f.phase;

@@ -86,7 +86,9 @@ StaticResult Simulation::SolveStaticEquilibrium() {
   return result;
 }
 
-void Simulation::Run(const SampleSink& sink) {
+void Simulation::Run(const SampleSink& sink) { Run(sink, {}, nullptr); }
+
+void Simulation::Run(const SampleSink& sink, const std::vector<double>& instants, const StateSink& at_instant) {
   const SolverSpec& solver = model_.solver();
   if (solver.analysis == SolverSpec::Analysis::kStatic) {
     const StaticResult result = SolveStaticEquilibrium();
@@ -94,7 +96,12 @@ void Simulation::Run(const SampleSink& sink) {
     return;
   }
   if (solver.static_first) SolveStaticEquilibrium();
-  Integrate(solver.t_end, sink);
+  Begin(sink);
+  for (double t : instants) {
+    AdvanceTo(t, t, sink);  // with t as the end, the last step is cut to land on it
+    at_instant(state_);
+  }
+  AdvanceTo(solver.t_end, solver.t_end, sink);
 }
 
 void Simulation::SetEffort(int variable, double effort) {
