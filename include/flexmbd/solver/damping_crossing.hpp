@@ -1,6 +1,6 @@
 #pragma once
 /// @file
-/// Where a mode of a fan plot changes stability (docs/theory.md, "Flutter speed" (E8)): between two neighbouring
+/// Where a mode of a fan plot changes stability (docs/theory.md, "Flutter speed" (E9)): between two neighbouring
 /// points of a sweep whose tracked mode is stable at one and unstable at the other, the parameter of the change
 /// is bisected on the eigen-analysis itself (not interpolated from the table).
 

@@ -1,4 +1,4 @@
-// Bisection of a fan plot's changes of stability (docs/theory.md, (E8)).
+// Bisection of a fan plot's changes of stability (docs/theory.md, (E9)).
 
 #include "flexmbd/solver/damping_crossing.hpp"
 
