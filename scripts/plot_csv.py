@@ -10,6 +10,8 @@ The CSV's first row is a header and its first column is `t` (time, s). Columns a
   joint.<name>.<other>   -> <stem>_joint_<other>.png
   stop.<joint>.<stop>.<q> -> <stem>_stop_<q>.png      (in_contact, force [N], torque, approach [m])
   friction.<joint>.<q>   -> <stem>_friction_<q>.png     (sticking, torque, normal_force [N], slip_velocity, work)
+  aero.<section>.<load>  -> <stem>_aero_<load>.png      (lift [N], moment, hinge_moment [N m])
+  aero.<section>.mu_<k>  -> <stem>_aero_inflow.png      (Peters' inflow states [m/s])
   energy.<kind>          -> <stem>_energy.png           (energy [J])
   solver.dt              -> <stem>_solver_dt.png        (step size [s], log scale)
   solver.iterations      -> <stem>_solver_iterations.png (Newton iterations per step)
@@ -53,14 +55,19 @@ KNOWN_GROUPS = {
     "friction_normal_force": ("Friction normal forces", "force [N]", False),
     "friction_slip_velocity": ("Slip velocities at the races", "velocity [m/s]", False),
     "friction_work": ("Energy dissipated by friction", "energy [J]", False),
+    "aero_lift": ("Aero section lift (up)", "lift [N]", False),
+    "aero_moment": ("Aero section moment about the elastic axis (nose up)", "moment [N m]", False),
+    "aero_hinge_moment": ("Aero section hinge moment (trailing edge down)", "moment [N m]", False),
+    "aero_inflow": ("Aero section inflow states", "mu [m/s]", False),
     "energy": ("Energy", "energy [J]", False),
     "solver_dt": ("Solver step size", "step size [s]", True),
     "solver_iterations": ("Newton iterations per step", "iterations", False),
 }
 
 
-def read_csv(path):
-    """Returns (header, columns) where columns[i] is the list of floats of header[i]."""
+def read_csv(path, first=("t", "time, s")):
+    """Returns (header, columns) where columns[i] is the list of floats of header[i]; the first column must be
+    named first[0] (first[1] says what it is), or anything if first is None."""
     if not os.path.exists(path):
         raise CsvError("%s: no such file" % path)
     if not os.path.isfile(path):
@@ -74,12 +81,12 @@ def read_csv(path):
     rows = [(number, row) for number, row in enumerate(rows, start=1)
             if row and any(cell.strip() for cell in row)]
     if not rows:
-        raise CsvError("%s: empty file (expected a header row starting with 't')" % path)
+        raise CsvError("%s: empty file (expected a header row)" % path)
     header = [name.strip() for name in rows[0][1]]
-    if header[0] != "t":
-        raise CsvError("%s: header: first column is %r, expected 't' (time, s)" % (path, header[0]))
+    if first and header[0] != first[0]:
+        raise CsvError("%s: header: first column is %r, expected '%s' (%s)" % (path, header[0], first[0], first[1]))
     if len(header) < 2:
-        raise CsvError("%s: header: only a time column, nothing to plot" % path)
+        raise CsvError("%s: header: only a '%s' column, nothing to plot" % (path, header[0]))
     empty = [i + 1 for i, name in enumerate(header) if not name]
     if empty:
         raise CsvError("%s: header: empty column name in column(s) %s" % (path, empty))
@@ -115,6 +122,10 @@ def group_key(name):
         return parts[0] + "_" + parts[-1], ".".join(parts[1:-1])
     if parts[0] == "beam" and len(parts) >= 4:  # beam.<beam>.s<k>.<quantity>: one plot per quantity
         return "beam_" + parts[-1], ".".join(parts[1:-1])
+    if parts[0] == "aero" and len(parts) >= 3:  # one plot per load, one for all inflow states
+        if re.fullmatch(r"mu_\d+", parts[-1]):
+            return "aero_inflow", ".".join(parts[1:])
+        return "aero_" + parts[-1], ".".join(parts[1:-1])
     if parts[0] == "energy" and len(parts) >= 2:
         return "energy", ".".join(parts[1:])
     if parts[0] == "solver" and len(parts) >= 2:

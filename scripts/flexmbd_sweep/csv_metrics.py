@@ -52,6 +52,16 @@ class FinalAbsMax(_Kind):
         return float(np.max(np.abs(x[0][final]))) * self.option(entry, 'scale')
 
 
+class CycleAmplitude(_Kind):
+    """Half the peak-to-peak range of x over the last `window` seconds, times `scale`: a limit cycle's amplitude
+    about its own mean, as flexmbd_run's cycle report (output.cycle_from) gives it."""
+    numbers = {'window': 20.0, 'scale': 1.0}
+
+    def compute(self, t, x, entry):
+        final = x[0][t >= t[-1] - self.option(entry, 'window')]
+        return 0.5 * float(np.max(final) - np.min(final)) * self.option(entry, 'scale')
+
+
 class DecayTime(_Kind):
     """The last sample time at which any |x_c| exceeds `fraction` of its own peak: from then on every column
     stays within that band. inf when that time lies within `hold` seconds of the run's end (the motion has not
@@ -109,6 +119,7 @@ class LongestStickingStart(_Kind):
 METRIC_KINDS = {
     'peak_abs': PeakAbs(),
     'final_abs_max': FinalAbsMax(),
+    'cycle_amplitude': CycleAmplitude(),
     'decay_time': DecayTime(),
     'sticking_time': StickingTime(),
     'sticking_intervals': StickingIntervals(),

@@ -53,6 +53,10 @@ CsvSink::CsvSink(const Model& model, const std::string& path) : path_(path), fil
       out_ << ",beam." << station.beam << ".s" << station.index << "." << column;
     }
   }
+  for (const TypicalSectionAero* section : model.aero_sections()) {
+    for (const char* column : {"lift", "moment", "hinge_moment"}) out_ << ",aero." << section->name() << '.' << column;
+    for (int k = 0; k < section->num_states(); ++k) out_ << ",aero." << section->name() << '.' << section->StateName(k);
+  }
   out_ << ",energy.kinetic,energy.potential,energy.total,energy.external_work,energy.dissipated,"
           "energy.numerical_dissipation,solver.dt,solver.iterations\n";
   if (!out_) ThrowWriteError();
@@ -80,6 +84,10 @@ void CsvSink::Write(const OutputSample& s) {
     for (int k = 0; k < 6; ++k) PutField(out_, b.strain[k]);
     for (int k = 0; k < 3; ++k) PutField(out_, b.displacement[k]);
     for (int k = 0; k < 3; ++k) PutField(out_, b.rotation[k]);
+  }
+  for (const AeroSectionSample& a : s.aero_sections) {
+    for (double value : {a.lift, a.moment, a.hinge_moment}) PutField(out_, value);
+    for (int k = 0; k < a.inflow.size(); ++k) PutField(out_, a.inflow[k]);
   }
   for (double value : {s.kinetic, s.potential, s.total(), s.external_work, s.dissipated, s.numerical_dissipation, s.dt}) {
     PutField(out_, value);

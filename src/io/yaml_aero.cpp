@@ -138,5 +138,12 @@ void ReadAero(const Field& aero, UrdfModel* model) {
   ReadFlow(aero, &model->spec.aero_flow);
 }
 
+void CheckAirspeedSweep(const Field& root, const ModelSpec& spec) {
+  if (spec.solver.eigen.sweep_airspeed.empty() || !spec.aero_sections.empty()) return;
+  root.Child("solver").Child("eigen").Child("sweep").Child("airspeed").Fail(
+      "sweeps the free-stream speed of the aero sections, but there are none; expected aero.sections (docs/config.md, "
+      "\"aero\") or a sweep of velocity_scale");
+}
+
 }  // namespace io
 }  // namespace flexmbd

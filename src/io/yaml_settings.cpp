@@ -10,7 +10,7 @@ const std::vector<std::string> kSolverKeys = {"analysis",       "integrator", "r
                                               "eigen"};
 const std::vector<std::string> kEigenKeys = {"modes", "static_first", "method", "shift_hz", "about", "sweep",
                                              "at_times"};
-const std::vector<std::string> kSweepKeys = {"velocity_scale"};
+const std::vector<std::string> kSweepKeys = {"velocity_scale", "airspeed"};
 const std::vector<std::string> kErrorFloorKeys = {"position", "rotation", "joint"};
 const std::vector<std::string> kOutputKeys = {"rate_hz", "csv", "bag", "beam_stations", "allow_large_output",
                                               "cycle_from"};
@@ -33,6 +33,20 @@ void CheckStepBounds(const Field& solver, const SolverSpec& spec) {
   if (spec.dt < spec.dt_min) {
     solver.Child("dt").Fail(ValueText(solver, "dt", spec.dt) + " is less than dt_min " +
                             ValueText(solver, "dt_min", spec.dt_min) + range);
+  }
+}
+
+// `solver.eigen.sweep.airspeed:` free-stream speeds in increasing order, so that neighbouring speeds bracket a
+// change of stability.
+void ReadAirspeedSweep(const Field& list, SolverSpec::EigenSettings* spec) {
+  // Positive: Peters' states decay at U/b, and at rest nothing fixes them.
+  spec->sweep_airspeed = ReadNumberList(list, Quantity{"a free-stream speed", Bound::kPositive, "m/s"});
+  if (spec->sweep_airspeed.empty()) list.Fail("an empty list; expected at least one free-stream speed [m/s]");
+  for (size_t k = 1; k < spec->sweep_airspeed.size(); ++k) {
+    if (!(spec->sweep_airspeed[k] > spec->sweep_airspeed[k - 1])) {
+      list.Entry(k).Fail(list.Entry(k).Text() + " does not exceed the speed before it, " + list.Entry(k - 1).Text() +
+                         "; expected speeds in increasing order [m/s]");
+    }
   }
 }
 
@@ -62,7 +76,18 @@ void ReadEigen(const Field& eigen, SolverSpec::EigenSettings* spec) {
   const Field sweep = eigen.Child("sweep");
   if (!sweep.present()) return;
   CheckKeys(sweep, kSweepKeys);
-  RequireKey(sweep, "velocity_scale", "the factors on the initial velocities, e.g. [0.0, 0.5, 1.0]");
+  if (sweep.Child("velocity_scale").present() == sweep.Child("airspeed").present()) {
+    sweep.Fail("expected exactly one of velocity_scale (factors on the initial velocities, e.g. [0.0, 0.5, 1.0]) "
+               "and airspeed (free-stream speeds of the aero sections [m/s], e.g. [10, 20, 30])");
+  }
+  if (sweep.Child("airspeed").present()) {
+    ReadAirspeedSweep(sweep.Child("airspeed"), spec);
+    if (spec->about == About::kSteadyState) {
+      eigen.Child("about").Fail("steady_state cannot go with an airspeed sweep (linearised about the initial state "
+                                "or its static aeroelastic equilibrium); expected initial_state");
+    }
+    return;
+  }
   spec->sweep_velocity_scale =
       ReadNumberList(sweep.Child("velocity_scale"), Quantity{"a velocity factor", Bound::kAny, ""});
   if (spec->sweep_velocity_scale.empty()) {

@@ -8,6 +8,7 @@
 
 #include <chrono>
 #include <cstdio>
+#include <fstream>
 #include <optional>
 #include <string>
 #include <vector>
@@ -18,12 +19,14 @@
 #include "flexmbd/ros/sample_fan_out.hpp"
 #include "flexmbd/io/text_file.hpp"
 #include "flexmbd/ros/transform_frames.hpp"
+#include "flexmbd/solver/damping_crossing.hpp"
 #include "flexmbd/solver/eigen_analysis.hpp"
 #include "flexmbd/solver/cycle_statistics.hpp"
 #include "flexmbd/solver/simulation.hpp"
 #include "flexmbd/solver/sparse_system.hpp"
 #include "flexmbd/solver/static_solver.hpp"
 #include "flexmbd/solver/steady_rotation.hpp"
+#include "flexmbd/solver/time_integrator.hpp"
 
 namespace {
 
@@ -73,6 +76,15 @@ class CycleReport {
     for (int v = 0; v < model_.num_variables(); ++v) {
       if (samples_[v].empty()) continue;
       const flexmbd::CycleStatistics c = flexmbd::MeasureCycle(samples_[v], 1.0 / model_.output().rate_hz);
+      // Motion smaller than the step error test's absolute floor is not resolved by the steps (they grow against
+      // that floor), so its spectrum is noise: the variable is at rest, and has no frequency to report.
+      const double floor = flexmbd::JointErrorFloor(model_.solver());
+      if (c.amplitude < floor) {
+        std::printf("flexmbd_run: cycle of %s over [%.6g, %.6g] s: none, at rest at %.6g (amplitude %.3g below the "
+                    "step error floor %.3g)\n",
+                    model_.variable_names()[v].c_str(), start_, end_, c.mean, c.amplitude, floor);
+        continue;
+      }
       std::printf("flexmbd_run: cycle of %s over [%.6g, %.6g] s: mean %.6g, amplitude %.6g (half the peak-to-peak), "
                   "RMS %.6g, frequency %.6g Hz\n",
                   model_.variable_names()[v].c_str(), start_, end_, c.mean, c.amplitude, c.rms, c.frequency_hz);
@@ -158,31 +170,84 @@ void RunEigenAboutSteadyRotation(const flexmbd::Model& model, const flexmbd::Eig
   std::fputs(flexmbd::FormatModeTable(result).c_str(), stdout);
 }
 
+// The state an eigen-analysis linearises about: the initial one, or its static equilibrium (solver.eigen.
+// static_first).
+flexmbd::State LinearisationState(const flexmbd::Model& model) {
+  flexmbd::State state = model.initial_state();
+  if (!model.solver().eigen.static_first) return state;
+  // From consistent multipliers: with zero ones the first static tangent of a hanging body has no joint
+  // geometric stiffness and is singular.
+  state = flexmbd::WithConsistentMotion(model, state);
+  flexmbd::SparseSystem system(model);
+  const flexmbd::StaticResult result = flexmbd::SolveStatic(model, &system, &state);
+  if (!result.converged) {
+    std::string what = "static analysis failed in load step " + std::to_string(result.load_steps) + " of " +
+                       std::to_string(model.solver().load_steps);
+    if (result.last.worst_unknown >= 0) what += "; worst residual at " + model.DescribeUnknown(result.last.worst_unknown);
+    throw flexmbd::SolverError(what);
+  }
+  return state;
+}
+
+// A fan-plot table as CSV at output.csv (or --csv), for scripts/plot_fan.py.
+void WriteFanPlotCsv(const std::string& path, const std::string& table) {
+  std::ofstream file(path);
+  file << table;
+  if (!file.good()) throw flexmbd::OutputError("output.csv: writing the fan-plot table to '" + path + "' failed");
+}
+
+// Bracket width at which the flutter speed is taken, relative to the speed: ten times finer than the 0.1% the
+// issue asks, so that the middle of the bracket is within 0.005%.
+constexpr double kFlutterTolerance = 1.0e-4;
+
+// solver.eigen.sweep.airspeed: a fan plot over the free-stream speed of every aero section, each speed about
+// its own initial state or static aeroelastic equilibrium, then where a mode's damping ratio changes sign.
+void RunAirspeedSweep(const flexmbd::ModelSpec& spec, const flexmbd::EigenOptions& options) {
+  const flexmbd::SolverSpec::EigenSettings& settings = spec.solver.eigen;
+  const auto case_at = [&](double speed) {
+    flexmbd::ModelSpec at = spec;
+    for (flexmbd::AeroSectionSpec& section : at.aero_sections) section.velocity = speed;
+    flexmbd::Model model = flexmbd::BuildModel(at);
+    flexmbd::State state = LinearisationState(model);
+    return flexmbd::SweepCase{std::move(model), std::move(state)};
+  };
+  const std::vector<flexmbd::SweepPoint> points = flexmbd::EigenSweep(settings.sweep_airspeed, case_at, options);
+  std::printf("flexmbd_run: eigen-analysis sweep of %zu airspeeds [m/s] about the %s (%s)\n", points.size(),
+              settings.static_first ? "static aeroelastic equilibrium" : "initial state",
+              points.front().result.method.c_str());
+  std::fputs(flexmbd::FormatFanPlot(points, "airspeed", settings.modes).c_str(), stdout);
+  if (!spec.output.csv.empty()) WriteFanPlotCsv(spec.output.csv, flexmbd::FormatFanPlot(points, "airspeed", settings.modes, ','));
+  const std::vector<flexmbd::DampingCrossing> crossings = flexmbd::LocateDampingCrossings(
+      points,
+      [&](double speed) {
+        const flexmbd::SweepCase at = case_at(speed);
+        return flexmbd::EigenAnalysis(at.model, at.state, options);
+      },
+      kFlutterTolerance);
+  if (crossings.empty()) {
+    std::printf("flexmbd_run: flutter: no mode changes stability between %.6g and %.6g m/s\n", points.front().parameter,
+                points.back().parameter);
+  }
+  for (const flexmbd::DampingCrossing& c : crossings) {
+    const char* kind = !c.destabilising ? "stable again" : c.oscillating ? "flutter" : "divergence";
+    std::printf("flexmbd_run: %s: mode %d at U = %.6g m/s (%.4g Hz)\n", kind, c.mode + 1, c.parameter, c.frequency_hz);
+  }
+}
+
 // solver.analysis: eigen. Linearises about the initial state (or its static equilibrium, or the steady rotation)
-// and prints the mode table, or a fan-plot table for a sweep of velocity factors.
-void RunEigen(const flexmbd::Model& model) {
+// and prints the mode table, or a fan-plot table for a sweep of velocity factors or airspeeds.
+void RunEigen(const flexmbd::ModelSpec& spec, const flexmbd::Model& model) {
   const flexmbd::SolverSpec::EigenSettings& settings = model.solver().eigen;
   const flexmbd::EigenOptions options = EigenOptionsOf(settings);
   if (settings.about == flexmbd::SolverSpec::EigenSettings::About::kSteadyState) {
     RunEigenAboutSteadyRotation(model, options);
     return;
   }
-  flexmbd::State state = model.initial_state();
-  if (settings.static_first) {
-    // From consistent multipliers: with zero ones the first static tangent of a hanging body has no joint
-    // geometric stiffness and is singular.
-    state = flexmbd::WithConsistentMotion(model, state);
-    flexmbd::SparseSystem system(model);
-    const flexmbd::StaticResult result = flexmbd::SolveStatic(model, &system, &state);
-    if (!result.converged) {
-      std::string what = "static analysis failed in load step " + std::to_string(result.load_steps) + " of " +
-                         std::to_string(model.solver().load_steps);
-      if (result.last.worst_unknown >= 0) {
-        what += "; worst residual at " + model.DescribeUnknown(result.last.worst_unknown);
-      }
-      throw flexmbd::SolverError(what);
-    }
+  if (!settings.sweep_airspeed.empty()) {
+    RunAirspeedSweep(spec, options);
+    return;
   }
+  const flexmbd::State state = LinearisationState(model);
   if (!settings.sweep_velocity_scale.empty()) {
     const std::vector<flexmbd::SweepPoint> points =
         flexmbd::EigenSweep(model, settings.sweep_velocity_scale,
@@ -214,7 +279,7 @@ int main(int argc, char** argv) {
     }
     if (model.solver().analysis == flexmbd::SolverSpec::Analysis::kEigen) {
       try {
-        RunEigen(model);
+        RunEigen(spec, model);
       } catch (const flexmbd::SolverError& e) {
         std::fprintf(stderr, "flexmbd_run: eigen-analysis failed: %s\n", e.what());
         return flexmbd::kExitRunFailed;

@@ -101,5 +101,43 @@ TEST(AeroConfig, JointOfTheWrongTypeOrAxisIsRejectedAtBuild) {
                       "axis; expected the z axis");
 }
 
+// solver.eigen.sweep.airspeed (docs/config.md, "solver.eigen"): read in order, and refused when it cannot bracket a
+// change of stability or has no section to blow on.
+ModelSpec LoadSweep(const std::string& sweep, const std::string& eigen_extra = "") {
+  return test::LoadInline(ConnerUrdf(), "aero: {sections: {conner: {" + kValid + "velocity: 20.0}}}\n"
+                                        "solver: {analysis: eigen, eigen: {" + eigen_extra + "sweep: {" + sweep + "}}}");
+}
+
+TEST(AeroConfig, AirspeedSweepIsRead) {
+  const ModelSpec spec = LoadSweep("airspeed: [10, 20.5, 30]", "static_first: true, ");
+  EXPECT_EQ(spec.solver.eigen.sweep_airspeed, std::vector<double>({10.0, 20.5, 30.0}));
+  EXPECT_TRUE(spec.solver.eigen.static_first);
+  EXPECT_TRUE(spec.solver.eigen.sweep_velocity_scale.empty());
+}
+
+TEST(AeroConfig, BadAirspeedSweepIsRejected) {
+  EXPECT_CONFIG_ERROR(LoadSweep("airspeed: []"),
+                      "test.yaml: solver.eigen.sweep.airspeed: an empty list; expected at least one free-stream speed "
+                      "[m/s]");
+  EXPECT_CONFIG_ERROR(LoadSweep("airspeed: [10, -5]"),
+                      "test.yaml: solver.eigen.sweep.airspeed[1]: -5 is negative; expected a free-stream speed > 0 "
+                      "[m/s]");
+  EXPECT_CONFIG_ERROR(LoadSweep("airspeed: [10, 30, 20]"),
+                      "test.yaml: solver.eigen.sweep.airspeed[2]: 20 does not exceed the speed before it, 30; expected "
+                      "speeds in increasing order [m/s]");
+  EXPECT_CONFIG_ERROR(LoadSweep("airspeed: [10, 10.0]"),
+                      "test.yaml: solver.eigen.sweep.airspeed[1]: 10.0 does not exceed the speed before it, 10;");
+  EXPECT_CONFIG_ERROR(LoadSweep("airspeed: [10], velocity_scale: [1]"),
+                      "test.yaml: solver.eigen.sweep: expected exactly one of velocity_scale");
+  EXPECT_CONFIG_ERROR(LoadSweep("airspeed: [10]", "about: steady_state, "),
+                      "test.yaml: solver.eigen.about: steady_state cannot go with an airspeed sweep");
+}
+
+TEST(AeroConfig, AirspeedSweepWithoutSectionsIsRejected) {
+  EXPECT_CONFIG_ERROR(test::LoadInline(ConnerUrdf(), "solver: {analysis: eigen, eigen: {sweep: {airspeed: [10]}}}"),
+                      "test.yaml: solver.eigen.sweep.airspeed: sweeps the free-stream speed of the aero sections, but "
+                      "there are none; expected aero.sections");
+}
+
 }  // namespace
 }  // namespace flexmbd

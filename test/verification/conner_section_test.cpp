@@ -15,6 +15,7 @@
 #include "flexmbd/solver/cycle_statistics.hpp"
 #include "flexmbd/solver/eigen_analysis.hpp"
 #include "flexmbd/solver/simulation.hpp"
+#include "../integration/helpers/csv_table.hpp"
 #include "peak_rate.hpp"
 #include "runner_output.hpp"
 
@@ -24,6 +25,12 @@ namespace {
 const std::string kDir = std::string(FLEXMBD_SOURCE_DIR) + "/config/conner_section/";
 
 ModelSpec Case(const std::string& yaml) { return LoadModelSpec(kDir + "conner_section.urdf", kDir + yaml); }
+
+// The text of one of the case's YAML files.
+std::string CaseText(const std::string& yaml) {
+  std::ifstream file(kDir + yaml);
+  return std::string((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
+}
 
 // Largest real part of the roots at speed U with N inflow states [1/s] (> 0: unstable).
 double LeastStableRoot(double U, int states) {
@@ -37,22 +44,9 @@ double LeastStableRoot(double U, int states) {
   return worst;
 }
 
-// The flutter speed by bisection on the sign of the least stable root, to 0.01% (the issue asks 0.1%).
-double FlutterSpeed(int states) {
-  double stable = 10.0, unstable = 40.0;
-  EXPECT_LT(LeastStableRoot(stable, states), 0.0);
-  EXPECT_GT(LeastStableRoot(unstable, states), 0.0);
-  while (unstable - stable > 1.0e-4 * unstable) {
-    const double mid = 0.5 * (stable + unstable);
-    (LeastStableRoot(mid, states) > 0 ? unstable : stable) = mid;
-  }
-  return 0.5 * (stable + unstable);
-}
-
 TEST(ConnerSection, StructuralFrequenciesMatchPublished) {
   // flexmbd_run on the case's own files.
-  std::ifstream file(kDir + "structure_modes.yaml");
-  const std::string yaml((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
+  const std::string yaml = CaseText("structure_modes.yaml");
   const std::string table = test::RunnerOutput("config/conner_section/conner_section.urdf", yaml, "conner_modes");
   // Published 4.443, 9.221 and 19.433 Hz, given to four figures and measured on the rig: 0.2% covers both
   // the rounding of the paper's data and of its frequencies.
@@ -64,20 +58,162 @@ TEST(ConnerSection, StructuralFrequenciesMatchPublished) {
   EXPECT_TRUE(std::isnan(test::TableFrequency(table, 4))) << table;
 }
 
+// `text` with its one occurrence of `from` replaced by `to`.
+std::string Replaced(std::string text, const std::string& from, const std::string& to) {
+  const size_t at = text.find(from);
+  EXPECT_NE(at, std::string::npos) << from;
+  return at == std::string::npos ? text : text.replace(at, from.size(), to);
+}
+
+// The flutter speed the runner prints for flutter_sweep.yaml with `states` inflow states [m/s] (NaN if none), and
+// the runner's output.
+struct RunnerFlutter {
+  double speed = NAN, frequency_hz = NAN;
+  int mode = 0;
+  std::string output;
+};
+
+RunnerFlutter RunnerFlutterSpeed(const std::string& yaml, const std::string& name) {
+  RunnerFlutter flutter;
+  flutter.output = test::RunnerOutput("config/conner_section/conner_section.urdf", yaml, name);
+  const std::string prefix = "flexmbd_run: flutter: mode ";
+  const size_t line = flutter.output.find(prefix);
+  if (line != std::string::npos) {
+    std::sscanf(flutter.output.c_str() + line + prefix.size(), "%d at U = %lf m/s (%lf Hz)", &flutter.mode,
+                &flutter.speed, &flutter.frequency_hz);
+  }
+  return flutter;
+}
+
+RunnerFlutter RunnerFlutterSpeed(int states) {
+  const std::string yaml = Replaced(CaseText("flutter_sweep.yaml"), "inflow_states: 4",
+                                    "inflow_states: " + std::to_string(states));
+  return RunnerFlutterSpeed(yaml, "conner_flutter_" + std::to_string(states));
+}
+
+// The runner bisects the sweep's change of stability to a bracket of 0.01% of the speed; its printed speed (6
+// digits) must be within the 0.1% the issue asks of the speed this test's own bisection on the sign of the least
+// stable root found to 0.01% before the runner did it (23.954 m/s with four states, 18.475 m/s quasi-steady).
+TEST(ConnerSection, RunnerLocatesTheFlutterSpeed) {
+  constexpr double kRelative = 1.0e-3;
+  const RunnerFlutter four = RunnerFlutterSpeed(4);
+  EXPECT_NEAR(four.speed, 23.954, kRelative * 23.954) << four.output;
+  // The pitch-flap mode, between the pitch (9.2 Hz) and plunge (4.4 Hz) frequencies of the structure.
+  EXPECT_GT(four.frequency_hz, 4.443) << four.output;
+  EXPECT_LT(four.frequency_hz, 9.221) << four.output;
+  const RunnerFlutter quasi_steady = RunnerFlutterSpeed(0);
+  EXPECT_NEAR(quasi_steady.speed, 18.475, kRelative * 18.475) << quasi_steady.output;
+}
+
+// The same sweep about the static aeroelastic equilibrium under gravity: the section sags and pitches nose up by
+// S_alpha g / K_alpha = 1.3 deg, which changes the linearised equations only through the rigid kinematics (the
+// gravity stiffness S_alpha g sin(alpha) ~ 5e-4 K_alpha, the plunge-pitch coupling S_alpha cos(alpha) by 3e-4),
+// so the flutter speed moves by that order (measured 0.04%): within 0.1% of the unloaded one.
+TEST(ConnerSection, FlutterSpeedAboutTheStaticAeroelasticEquilibrium) {
+  std::string yaml = Replaced(CaseText("flutter_sweep.yaml"), "gravity: [0.0, 0.0, 0.0]", "gravity: [0.0, 0.0, -9.81]");
+  yaml = Replaced(yaml, "modes: 0", "modes: 0\n    static_first: true");
+  const RunnerFlutter loaded = RunnerFlutterSpeed(yaml, "conner_flutter_static");
+  EXPECT_NE(loaded.output.find("about the static aeroelastic equilibrium"), std::string::npos) << loaded.output;
+  const double unloaded = RunnerFlutterSpeed(4).speed;
+  EXPECT_NE(loaded.speed, unloaded) << loaded.output;  // linearised about another state
+  EXPECT_NEAR(loaded.speed, unloaded, 1.0e-3 * unloaded) << loaded.output;
+}
+
+TEST(ConnerSection, RunnerSaysWhenNoModeChangesStability) {
+  const std::string below = Replaced(CaseText("flutter_sweep.yaml"), "22, 24, 26, 28, 30]", "22]");
+  const RunnerFlutter none = RunnerFlutterSpeed(below, "conner_no_flutter");
+  EXPECT_TRUE(std::isnan(none.speed)) << none.output;
+  EXPECT_NE(none.output.find("flexmbd_run: flutter: no mode changes stability between 2 and 22 m/s"),
+            std::string::npos)
+      << none.output;
+}
+
+// The fan-plot table as CSV (output.csv): one row per speed, frequencies and damping ratios of the six modes (three
+// structural, the inflow states' real roots and their damped pair); the flutter mode's damping ratio changes sign
+// between 22 and 24 m/s.
+TEST(ConnerSection, AirspeedSweepTableGoesToTheCsv) {
+  const std::string csv = testing::TempDir() + "conner_fan.csv";
+  const RunnerFlutter flutter =
+      RunnerFlutterSpeed(CaseText("flutter_sweep.yaml") + "output: {csv: " + csv + "}\n", "conner_fan_csv");
+  const test::CsvTable table = test::ReadCsv(csv);
+  EXPECT_EQ(table.header, std::vector<std::string>({"airspeed", "f1_Hz", "f2_Hz", "f3_Hz", "f4_Hz", "f5_Hz", "f6_Hz",
+                                                    "zeta1", "zeta2", "zeta3", "zeta4", "zeta5", "zeta6"}))
+      << flutter.output;
+  ASSERT_EQ(table.rows.size(), 15u);
+  EXPECT_EQ(table.rows.front()[0], 2.0);
+  EXPECT_EQ(table.rows.back()[0], 30.0);
+  const size_t zeta = table.Column("zeta" + std::to_string(flutter.mode));
+  EXPECT_GT(table.rows[10][zeta], 0.0);  // 22 m/s
+  EXPECT_LT(table.rows[11][zeta], 0.0);  // 24 m/s
+}
+
+// output.cycle_from on a motion that has decayed to rest: 22 m/s, below flutter, released with 1 deg of pitch; its
+// least damped root decays at about 1.5/s, so by 14 s the pitch is below 1e-8 rad, under the step error test's
+// floor (1e-7 rad by default), and the runner says there is no cycle instead of a frequency of noise.
+TEST(ConnerSection, RunnerReportsNoCycleAtRest) {
+  std::string yaml = Replaced(CaseText("flutter_below.yaml"), "t_end: 4.0", "t_end: 18.0");
+  yaml = Replaced(yaml, "output: {rate_hz: 200}", "output: {rate_hz: 200, cycle_from: 14.0}");
+  const std::string out = test::RunnerOutput("config/conner_section/conner_section.urdf", yaml, "conner_rest");
+  for (const std::string variable : {"plunge", "pitch", "flap_hinge"}) {
+    EXPECT_NE(out.find("flexmbd_run: cycle of " + variable + " over [14, 18] s: none, at rest at "), std::string::npos)
+        << out;
+  }
+  EXPECT_EQ(out.find("Hz"), std::string::npos) << out;
+}
+
+// Aero outputs in the CSV: at the static aeroelastic equilibrium (the run's first sample) the flow is steady, the
+// inflow states are zero and the lift is the steady thin-airfoil lift 2 pi q (2b) span (alpha + T10 delta / pi),
+// T10 = sqrt(1 - c^2) + acos(c) (Theodorsen's flap term; REFERENCES section 5.3). The pitch spring rests at 3 deg.
+TEST(ConnerSection, CsvCarriesTheSteadySectionLoads) {
+  const std::string csv = testing::TempDir() + "conner_steady.csv";
+  std::string yaml = Replaced(CaseText("flutter_below.yaml"), "pitch: {spring: {k: 37.34}, initial: {position_deg: 1.0}}",
+                              "pitch: {spring: {k: 37.34, rest_deg: 3.0}}");
+  yaml = Replaced(yaml, "t_end: 4.0", "t_end: 0.01\n  static_first: true");
+  yaml = Replaced(yaml, "output: {rate_hz: 200}", "output: {rate_hz: 200, csv: " + csv + "}");
+  const std::string out = test::RunnerOutput("config/conner_section/conner_section.urdf", yaml, "conner_steady");
+  const test::CsvTable table = test::ReadCsv(csv);
+  ASSERT_FALSE(table.rows.empty()) << out;
+  const std::vector<double>& first = table.rows.front();
+  for (const std::string name : {"aero.conner.lift", "aero.conner.moment", "aero.conner.hinge_moment"}) {
+    EXPECT_NE(std::find(table.header.begin(), table.header.end(), name), table.header.end()) << name << "\n" << out;
+  }
+  for (int k = 1; k <= 6; ++k) EXPECT_EQ(first.at(table.Column("aero.conner.mu_" + std::to_string(k))), 0.0) << k;
+  const double alpha = first.at(table.Column("joint.pitch.position"));
+  const double delta = first.at(table.Column("joint.flap_hinge.position"));
+  const double computed = first.at(table.Column("aero.conner.lift"));
+  const double rho = 1.225, U = 22.0, b = 0.127, c = 0.5;
+  const double t10 = std::sqrt(1 - c * c) + std::acos(c);
+  const double lift = 2 * M_PI * 0.5 * rho * U * U * 2 * b * (alpha + t10 / M_PI * delta);
+  std::printf("alpha %.6f rad, delta %.6f rad: lift %.6f N (steady thin airfoil %.6f N)\n", alpha, delta, computed,
+              lift);
+  EXPECT_GT(alpha, 0.01);
+  // The lift is evaluated at the sample's own alpha and delta, so the closed form holds to the flap series' cut
+  // (6e-8 relative, docs/theory.md (A4)) and round-off, whatever the static solution's tolerance.
+  constexpr double kRelative = 1.0e-6;
+  EXPECT_NEAR(computed, lift, kRelative * lift);
+  // At the equilibrium each load holds its spring: lift K_h h (h = plunge up), moment K_alpha (alpha - 3 deg),
+  // hinge moment K_beta delta; to the static solution's Newton tolerance (1e-6 relative; measured 4e-15).
+  const double moment = first.at(table.Column("aero.conner.moment"));
+  const double hinge = first.at(table.Column("aero.conner.hinge_moment"));
+  EXPECT_NEAR(computed, 2818.8 * first.at(table.Column("joint.plunge.position")), kRelative * lift);
+  EXPECT_NEAR(moment, 37.34 * (alpha - 3.0 * M_PI / 180), kRelative * std::abs(moment));
+  EXPECT_NEAR(hinge, 3.9 * delta, kRelative * std::abs(hinge));
+}
+
 TEST(ConnerSection, FlutterSpeedMatchesConnersTheory) {
   // Conner's theory gives about 23.9 m/s (the rig 24.3): with four or more inflow states the finite-state model
   // is within 2% of it (its C(k) within 1% at the flutter reduced frequency k = w b / U ~ 0.2, plus the
   // rounding of the section's data).
   constexpr double kTheory = 23.9, kRelative = 0.02;
   for (int states : {4, 6, 8}) {
-    const double speed = FlutterSpeed(states);
-    std::printf("N = %d: flutter at %.3f m/s\n", states, speed);
-    EXPECT_NEAR(speed, kTheory, kRelative * kTheory) << states << " states";
+    const RunnerFlutter flutter = RunnerFlutterSpeed(states);
+    std::printf("N = %d: flutter at %.4f m/s, %.3f Hz\n", states, flutter.speed, flutter.frequency_hz);
+    EXPECT_NEAR(flutter.speed, kTheory, kRelative * kTheory) << flutter.output;
   }
   // Quasi-steady (no wake lag) flutters much earlier: the lag of the circulatory lift stabilises this section.
-  const double quasi_steady = FlutterSpeed(0);
-  std::printf("quasi-steady: flutter at %.3f m/s\n", quasi_steady);
-  EXPECT_LT(quasi_steady, (1 - kRelative) * kTheory);
+  const RunnerFlutter quasi_steady = RunnerFlutterSpeed(0);
+  std::printf("quasi-steady: flutter at %.4f m/s, %.3f Hz\n", quasi_steady.speed, quasi_steady.frequency_hz);
+  EXPECT_LT(quasi_steady.speed, (1 - kRelative) * kTheory) << quasi_steady.output;
 }
 
 struct FreeMotion {
@@ -205,8 +341,7 @@ TEST(ConnerSection, FreeplayLimitCycleAmplitudeScalesWithTheGap) {
 
 // The runner reports the cycle of every joint variable over [output.cycle_from, t_end], as computed above.
 TEST(ConnerSection, RunnerReportsTheFreeplayLimitCycle) {
-  std::ifstream file(kDir + "freeplay_lco.yaml");
-  const std::string yaml((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
+  const std::string yaml = CaseText("freeplay_lco.yaml");
   const std::string out = test::RunnerOutput("config/conner_section/conner_section.urdf", yaml, "conner_lco");
   const LimitCycle given = FreeplayRun(1.0);
   const std::string prefix = "flexmbd_run: cycle of flap_hinge over [30, 60] s: ";

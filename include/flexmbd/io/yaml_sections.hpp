@@ -63,6 +63,9 @@ void ReadLoads(const Field& loads, const UrdfModel& model, std::vector<LoadSpec>
 /// thin-airfoil loads, and the free stream, density and gust the strips move in (beams read first).
 void ReadAero(const Field& aero, UrdfModel* model);
 
+/// Fails at solver.eigen.sweep.airspeed if it is given and the model has no aero sections to blow on.
+void CheckAirspeedSweep(const Field& root, const ModelSpec& spec);
+
 /// A time function: `law` (required) and the keys that law takes. Values are in `unit` (SI; "" for a plain
 /// factor) or, if `measure` is angular, in degrees under `<key>_deg`; `phase_deg` is always allowed.
 TimeFunctionSpec ReadTimeFunction(const Field& map, const std::string& unit, const Measure& measure);

@@ -217,6 +217,9 @@ struct SolverSpec {
     Method method = Method::kAuto; ///< dense below 2000 node and variable unknowns, sparse shift-invert above
     double shift_hz = 0.0;         ///< sparse: seek the modes nearest this frequency [Hz]; 0 = the lowest
     std::vector<double> sweep_velocity_scale;  ///< fan plot: factors on every initial velocity; empty for none
+    /// Fan plot over the free-stream speed of every aero section, increasing [m/s]; empty for none. The runner
+    /// locates where a mode's damping ratio changes sign (docs/theory.md, "Flutter speed" (E9)).
+    std::vector<double> sweep_airspeed;
     /// A dynamic run lands a step on each of these times and reports the modes about the state there
     /// (docs/theory.md, "Eigen-analysis at a time of a run") [s]; increasing, in [0, t_end]; empty for none.
     std::vector<double> at_times;

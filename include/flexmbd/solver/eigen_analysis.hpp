@@ -134,11 +134,16 @@ std::vector<SweepPoint> EigenSweep(const std::vector<double>& parameters,
 /// fan plot's lines cross instead of swapping. Points whose shapes have another size are left as they are.
 void TrackModes(std::vector<SweepPoint>* points);
 
+/// True for a mode growing in time: a damping ratio below the round-off of an undamped root (rigid-body modes are
+/// not unstable).
+bool Unstable(const Mode& mode);
+
 /// A table with one line per mode: index, frequency [Hz], damped frequency [Hz], damping ratio, remark.
 std::string FormatModeTable(const EigenResult& result);
 
 /// A fan-plot table: one line per parameter value, its frequencies [Hz] of the first `num_modes` modes
-/// (all if 0), then their damping ratios.
-std::string FormatFanPlot(const std::vector<SweepPoint>& points, const std::string& parameter_name, int num_modes);
+/// (all if 0), then their damping ratios; columns apart by `separator` (a space, or a comma for a CSV file).
+std::string FormatFanPlot(const std::vector<SweepPoint>& points, const std::string& parameter_name, int num_modes,
+                          char separator = ' ');
 
 }  // namespace flexmbd

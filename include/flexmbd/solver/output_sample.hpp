@@ -37,6 +37,15 @@ struct BeamStationSample {
   Vec3 rotation = Vec3::Zero();      ///< rotation vector of R_W(s) R_W0(s)^T, in W [rad]
 };
 
+/// One aero section (aero.sections) at a sample: the loads of TypicalSectionAero::SectionLoads over its span, as
+/// the step that produced the sample applied them, and its inflow states.
+struct AeroSectionSample {
+  double lift = 0;          ///< up [N]
+  double moment = 0;        ///< about the elastic axis, nose up [N m]
+  double hinge_moment = 0;  ///< about the flap hinge, trailing edge down [N m]
+  Eigen::VectorXd inflow;   ///< Peters' states mu_1..mu_N (docs/theory.md, (A6)) [m/s]
+};
+
 struct OutputSample {
   double t = 0;                  ///< [s]
   Eigen::VectorXd position;      ///< joint variables [rad or m] (num_variables)
@@ -47,6 +56,7 @@ struct OutputSample {
   std::vector<StopSample> stops;         ///< per stop, in Model::stops() order
   std::vector<FrictionSample> friction;  ///< per frictional joint, in Model::frictions() order
   std::vector<BeamStationSample> beam_stations;  ///< per station, in Model::beam_stations() order
+  std::vector<AeroSectionSample> aero_sections;  ///< per section, in Model::aero_sections() order
   double kinetic = 0;            ///< [J]
   double potential = 0;          ///< gravity, springs and beam strain energy [J]
   double external_work = 0;      ///< cumulative work of applied loads, drives and commanded efforts [J]

@@ -11,12 +11,15 @@ constexpr int kValuesPerJoint = 6;           // reaction force and moment
 constexpr int kValuesPerStop = 4;            // in_contact, force, torque, approach
 constexpr int kValuesPerFriction = 5;        // sticking, torque, normal_force, slip_velocity, work
 constexpr int kValuesPerBeamStation = 18;    // loads, strains, displacement, rotation
+constexpr int kValuesPerAeroSection = 3;     // lift, moment, hinge moment; then its inflow states
 constexpr int kValuesPerSampleHeader = 1;    // t
 constexpr int kValuesPerSampleTrailer = 8;   // six energies, dt, iterations
 }  // namespace
 
 long OutputValuesPerSample(const Model& model) {
-  return kValuesPerSampleHeader + kValuesPerVariable * static_cast<long>(model.variable_names().size()) +
+  long aero = 0;
+  for (const TypicalSectionAero* section : model.aero_sections()) aero += kValuesPerAeroSection + section->num_states();
+  return aero + kValuesPerSampleHeader + kValuesPerVariable * static_cast<long>(model.variable_names().size()) +
          kValuesPerJoint * static_cast<long>(model.joints().size()) +
          kValuesPerStop * static_cast<long>(model.stops().size()) +
          kValuesPerFriction * static_cast<long>(model.frictions().size()) +

@@ -15,19 +15,21 @@ std::string Format(const char* format, double value) {
   return buffer;
 }
 
-// A damping ratio above this is the round-off of an undamped root, not an instability: the eigensolvers leave
-// Re s at ~eps of the frequency scale w (theory (E5)), a ratio of ~eps w / |s|, e.g. 2e-11 for the lowest modes
-// of the rotating cantilever (w ~ 5e4 rad/s, |s| ~ 4 rad/s), whose undamped roots were reported as flutter.
-constexpr double kRoundOffDampingRatio = -1.0e-9;
-
 const char* Remark(const Mode& mode) {
   if (mode.rigid_body) return "rigid body";
-  if (mode.damping_ratio < kRoundOffDampingRatio) return mode.damped_frequency_hz > 0 ? "unstable (flutter)" : "unstable (divergence)";
+  if (Unstable(mode)) return mode.damped_frequency_hz > 0 ? "unstable (flutter)" : "unstable (divergence)";
   if (mode.damped_frequency_hz == 0) return "overdamped (real root)";
   return "";
 }
 
 }  // namespace
+
+// A damping ratio above this is the round-off of an undamped root, not an instability: the eigensolvers leave
+// Re s at ~eps of the frequency scale w (theory (E5)), a ratio of ~eps w / |s|, e.g. 2e-11 for the lowest modes
+// of the rotating cantilever (w ~ 5e4 rad/s, |s| ~ 4 rad/s), whose undamped roots were reported as flutter.
+constexpr double kRoundOffDampingRatio = -1.0e-9;
+
+bool Unstable(const Mode& mode) { return !mode.rigid_body && mode.damping_ratio < kRoundOffDampingRatio; }
 
 std::string FormatModeTable(const EigenResult& result) {
   std::string out = "mode  frequency_Hz    damped_Hz       damping_ratio   remark\n";
@@ -43,19 +45,24 @@ std::string FormatModeTable(const EigenResult& result) {
   return out;
 }
 
-std::string FormatFanPlot(const std::vector<SweepPoint>& points, const std::string& parameter_name, int num_modes) {
+std::string FormatFanPlot(const std::vector<SweepPoint>& points, const std::string& parameter_name, int num_modes,
+                          char separator) {
   size_t columns = 0;
   for (const SweepPoint& p : points) columns = std::max(columns, p.result.modes.size());
   if (num_modes > 0) columns = std::min(columns, static_cast<size_t>(num_modes));
   std::string out = parameter_name;
-  for (size_t k = 0; k < columns; ++k) out += " f" + std::to_string(k + 1) + "_Hz";
-  for (size_t k = 0; k < columns; ++k) out += " zeta" + std::to_string(k + 1);
+  for (size_t k = 0; k < columns; ++k) out += separator + ("f" + std::to_string(k + 1) + "_Hz");
+  for (size_t k = 0; k < columns; ++k) out += separator + ("zeta" + std::to_string(k + 1));
   out += "\n";
   for (const SweepPoint& p : points) {
     std::string line = Format("%.8g", p.parameter);
     const std::vector<Mode>& modes = p.result.modes;
-    for (size_t k = 0; k < columns; ++k) line += k < modes.size() ? Format(" %.8g", modes[k].frequency_hz) : " nan";
-    for (size_t k = 0; k < columns; ++k) line += k < modes.size() ? Format(" %.6g", modes[k].damping_ratio) : " nan";
+    for (size_t k = 0; k < columns; ++k) {
+      line += separator + (k < modes.size() ? Format("%.8g", modes[k].frequency_hz) : "nan");
+    }
+    for (size_t k = 0; k < columns; ++k) {
+      line += separator + (k < modes.size() ? Format("%.6g", modes[k].damping_ratio) : "nan");
+    }
     out += line + "\n";
   }
   return out;

@@ -14,6 +14,16 @@ BeamStationSample SampleStation(const Model& model, const State& state, const Be
   sample.rotation = Log(now.R * initial.R.transpose());
   return sample;
 }
+
+AeroSectionSample SampleAero(const TypicalSectionAero& section, const State& state, const StepContext& ctx) {
+  const Vec3 loads = section.SectionLoads(ctx);
+  AeroSectionSample sample;
+  sample.lift = loads[0];
+  sample.moment = loads[1];
+  sample.hinge_moment = loads[2];
+  sample.inflow = state.element_states.segment(section.first_state(), section.num_states());
+  return sample;
+}
 }  // namespace
 
 EnergyTally StateEnergy(const Model& model, const State& state) {
@@ -43,6 +53,7 @@ OutputSample MakeSample(const Model& model, const State& state, const StepContex
   s.dissipated = state.dissipated_physical;
   s.numerical_dissipation = state.dissipated_numerical;
   for (const BeamStationInfo& station : model.beam_stations()) s.beam_stations.push_back(SampleStation(model, state, station));
+  for (const TypicalSectionAero* section : model.aero_sections()) s.aero_sections.push_back(SampleAero(*section, state, ctx));
   s.dt = dt;
   s.iterations = iterations;
   return s;
@@ -78,6 +89,14 @@ OutputSample Interpolate(const OutputSample& a, const OutputSample& b, double t)
     z.strain = mix(x.strain, y.strain);
     z.displacement = mix(x.displacement, y.displacement);
     z.rotation = mix(x.rotation, y.rotation);
+  }
+  for (size_t k = 0; k < s.aero_sections.size(); ++k) {
+    const AeroSectionSample &x = a.aero_sections[k], &y = b.aero_sections[k];
+    AeroSectionSample& z = s.aero_sections[k];
+    z.lift = (1.0 - u) * x.lift + u * y.lift;
+    z.moment = (1.0 - u) * x.moment + u * y.moment;
+    z.hinge_moment = (1.0 - u) * x.hinge_moment + u * y.hinge_moment;
+    z.inflow = mix(x.inflow, y.inflow);
   }
   return s;
 }

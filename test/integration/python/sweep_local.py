@@ -104,6 +104,13 @@ class SweepLocal(unittest.TestCase):
         metric['decay']['columns'] = ['a']
         self.assertEqual(self.metrics_of(still_moving, metric)['decay'], math.inf)
 
+    def test_cycle_amplitude_is_half_the_final_peak_to_peak(self):
+        # An offset sine whose amplitude halves at 5 s; sampled at 0.01 s it reaches its peaks (t = k + 1/4, 3/4)
+        t = np.round(np.arange(0.0, 10.005, 0.01), 6)
+        x = 0.3 + np.where(t < 5.0, 4.0, 2.0) * np.sin(2 * np.pi * t)
+        metric = {'amplitude': {'kind': 'cycle_amplitude', 'column': 'x', 'window': 4.0, 'scale': 10.0}}
+        self.assertAlmostEqual(self.metrics_of({'t': t, 'x': x}, metric)['amplitude'], 20.0, places=9)
+
     def test_sticking_metrics_count_the_sticking_samples(self):
         t = np.round(np.arange(0.0, 10.005, 0.01), 6)
         sticking = ((t >= 1.0) & (t < 3.0) | (t >= 5.0) & (t < 6.0) | (t >= 9.5)).astype(float)
