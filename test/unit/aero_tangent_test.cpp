@@ -7,7 +7,7 @@
 #include "flexmbd/io/config_loader.hpp"
 #include "flexmbd/model/model.hpp"
 #include "flexmbd/solver/step_context_builder.hpp"
-#include "unit_test_helpers.hpp"
+#include "scheme_tangent_check.hpp"
 
 namespace flexmbd {
 namespace {
@@ -40,25 +40,9 @@ Section ConnerSection() {
   return s;
 }
 
-Eigen::VectorXd SomeIncrements(const Model& model) {
-  Eigen::VectorXd u = Eigen::VectorXd::Zero(model.num_unknowns());
-  test::Random random(7);
-  u.head(model.num_kinematic()) = random.VectorX(model.num_kinematic(), 1.0e-3);
-  return u;
-}
-
 TEST(AeroTangent, MidStepSchemeTangentMatchesDifferences) {
   const Section s = ConnerSection();
-  StepContextBuilder builder(s.model);
-  const std::vector<NodeSchemeCoefficients> trapezoidal(s.model.num_nodes());
-  const double h = 1.0e-3;
-  auto context = [&](const Eigen::VectorXd& u) -> const StepContext& { return builder.Dynamic(s.start, u, h, trapezoidal); };
-  const Eigen::VectorXd u = SomeIncrements(s.model);
-  const Eigen::MatrixXd expected = test::UnknownDifferences(*s.element, u, context, kStep);
-  const Eigen::MatrixXd actual = test::LocalTangent(*s.element, context(u));
-  EXPECT_LT(test::MaxAbs(actual - expected), kTolerance * test::MaxAbs(expected)) << "analytic\n"
-                                                                                  << actual << "\ndifferences\n"
-                                                                                  << expected;
+  test::ExpectMidStepTangentMatchesDifferences(s.model, *s.element, s.start, kStep, kTolerance);
 }
 
 TEST(AeroTangent, EndPointStiffnessAndRatePartsMatchDifferences) {
@@ -75,7 +59,7 @@ TEST(AeroTangent, EndPointStiffnessAndRatePartsMatchDifferences) {
     }
     return ctx;
   };
-  const Eigen::VectorXd u = SomeIncrements(s.model);
+  const Eigen::VectorXd u = test::SomeIncrements(s.model);
   const StepContext& ctx = context(u);
   Eigen::MatrixXd stiffness = Eigen::MatrixXd::Zero(s.element->num_local(), s.element->num_local());
   s.element->AddTangent(ctx, stiffness);
