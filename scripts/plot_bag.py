@@ -33,11 +33,12 @@ SAMPLE_TYPES = {
     "reactions": "flexmbd/JointReactionArray",
     "solver": "flexmbd/SolverStep",
 }
-# published only by models with stops, frictional joints or beam stations
+# published only by models with stops, frictional joints, beam stations or aero sections
 OPTIONAL_TYPES = {
     "contacts": "flexmbd/JointContactArray",
     "friction": "flexmbd/JointFrictionArray",
     "beam_loads": "flexmbd/BeamLoadsArray",  # models with output.beam_stations
+    "aero_loads": "flexmbd/AeroLoadsArray",  # models with aero.sections
 }
 # a beam station's CSV columns beam.<beam>.s<k>.<field>, in the CSV's order
 STATION_FIELDS = ("N", "V2", "V3", "T", "M2", "M3", "e1", "g2", "g3", "k1", "k2", "k3")
@@ -109,6 +110,13 @@ def read_columns(path):
                 add(prefix + "u" + axis, getattr(station.displacement, axis))
             for axis in "xyz":
                 add(prefix + "r" + axis, getattr(station.rotation, axis))
+    for loads in messages.get("aero_loads", []):
+        for section in loads.sections:
+            prefix = "aero.%s." % section.section
+            for field in ("lift", "moment", "hinge_moment"):
+                add(prefix + field, getattr(section, field))
+            for k, mu in enumerate(section.inflow):
+                add(prefix + "mu_%d" % (k + 1), mu)
     for energy in messages["energy"]:
         for field in ENERGY_FIELDS:
             add("energy." + field, energy.kinetic + energy.potential if field == "total" else getattr(energy, field))

@@ -160,6 +160,18 @@ void FillBeamLoads(const std::vector<BeamStationInfo>& stations, const OutputSam
                    });
 }
 
+void FillAeroLoads(const std::vector<const TypicalSectionAero*>& sections, const OutputSample& sample,
+                   AeroLoadsArray* msg) {
+  FillNamedRecords(sections, sample.aero_sections, &msg->sections,
+                   [](const TypicalSectionAero* info, const AeroSectionSample& value, AeroSectionLoads* section) {
+                     section->section = info->name();
+                     section->lift = value.lift;
+                     section->moment = value.moment;
+                     section->hinge_moment = value.hinge_moment;
+                     SetVector(value.inflow, &section->inflow);
+                   });
+}
+
 void FillTransforms(const std::vector<TransformFrame>& frames, const State& state, tf2_msgs::TFMessage* msg) {
   const ::ros::Time stamp = ToStamp(state.t);
   msg->transforms.resize(frames.size());

@@ -14,12 +14,13 @@ void SampleConverter::Convert(const OutputSample& sample, const State& state, Sa
   FillJointContacts(model_.stops(), sample, &messages->contacts);
   FillJointFriction(model_.frictions(), sample, &messages->friction);
   FillBeamLoads(model_.beam_stations(), sample, &messages->beam_loads);
+  FillAeroLoads(model_.aero_sections(), sample, &messages->aero_loads);
   const uint32_t seq = next_seq_++;
   const ::ros::Time stamp = ToStamp(sample.t);
   for (std_msgs::Header* header :
        {&messages->joint_state.header, &messages->energy.header, &messages->reactions.header,
         &messages->solver.header, &messages->contacts.header, &messages->friction.header,
-        &messages->beam_loads.header}) {
+        &messages->beam_loads.header, &messages->aero_loads.header}) {
     header->seq = seq;
     header->stamp = stamp;
   }

@@ -12,6 +12,7 @@ TopicNames DefaultTopicNames() {
                     private_prefix + kContactsTopic,
                     private_prefix + kFrictionTopic,
                     private_prefix + kBeamLoadsTopic,
+                    private_prefix + kAeroLoadsTopic,
                     kTfTopic,
                     kTfStaticTopic,
                     private_prefix + kMarkersTopic};

@@ -36,6 +36,7 @@ TopicNames ResolveTopicNames(const ::ros::NodeHandle& node, const ::ros::NodeHan
                     private_node.resolveName(kContactsTopic),
                     private_node.resolveName(kFrictionTopic),
                     private_node.resolveName(kBeamLoadsTopic),
+                    private_node.resolveName(kAeroLoadsTopic),
                     node.resolveName(kTfTopic),
                     node.resolveName(kTfStaticTopic),
                     private_node.resolveName(kMarkersTopic)};
@@ -59,6 +60,9 @@ TopicPublisher::TopicPublisher(::ros::NodeHandle& node, ::ros::NodeHandle& priva
   if (!model.beam_stations().empty()) {
     beam_loads_ = AdvertiseSamples<BeamLoadsArray>(private_node, kBeamLoadsTopic, on_connect);
   }
+  if (!model.aero_sections().empty()) {
+    aero_loads_ = AdvertiseSamples<AeroLoadsArray>(private_node, kAeroLoadsTopic, on_connect);
+  }
   if (publish_clock) clock_ = node.advertise<rosgraph_msgs::Clock>(kClockTopic, kClockQueueSize);
   markers_.publish(ToBodyMarkers(model));
   if (!static_transforms.transforms.empty()) {
@@ -78,6 +82,7 @@ void TopicPublisher::Write(const SampleMessages& messages) {
   queued |= contacts_.Queue(messages.contacts);
   queued |= friction_.Queue(messages.friction);
   queued |= beam_loads_.Queue(messages.beam_loads);
+  queued |= aero_loads_.Queue(messages.aero_loads);
   if (queued && ++unsent_samples_ >= kSamplesPerWake) EndBatch();
 }
 
@@ -96,7 +101,7 @@ void TopicPublisher::EndBatch() {
 bool TopicPublisher::HasSubscribers() const {
   if (markers_.getNumSubscribers() > 0 || clock_.getNumSubscribers() > 0) return true;
   for (const QueuedTopic* topic :
-       {&joint_states_, &energy_, &reactions_, &solver_, &contacts_, &friction_, &beam_loads_, &tf_}) {
+       {&joint_states_, &energy_, &reactions_, &solver_, &contacts_, &friction_, &beam_loads_, &aero_loads_, &tf_}) {
     if (topic->NumSubscribers() > 0) return true;
   }
   return false;
@@ -104,7 +109,7 @@ bool TopicPublisher::HasSubscribers() const {
 
 std::vector<const QueuedTopic*> TopicPublisher::SampleTopics() const {
   std::vector<const QueuedTopic*> topics = {&joint_states_, &energy_, &reactions_, &solver_, &tf_};
-  for (const QueuedTopic* optional : {&contacts_, &friction_, &beam_loads_}) {
+  for (const QueuedTopic* optional : {&contacts_, &friction_, &beam_loads_, &aero_loads_}) {
     if (*optional) topics.push_back(optional);
   }
   return topics;

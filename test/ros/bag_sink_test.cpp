@@ -67,10 +67,11 @@ TEST(BagSink, HoldsEverySampleExactly) {
   const std::vector<SampleMessages> written = RecordDoublePendulum(path, BagCompression::kNone);
   ASSERT_EQ(written.size(), 101u);  // t = 0, 0.01, ..., 1 s at 100 samples/s
   ExpectBagHolds(path, written);
-  // the double pendulum has no stops, no friction and no beam stations: no such topics
+  // the double pendulum has no stops, no friction, no beam stations and no aero sections: no such topics
   EXPECT_TRUE(ReadTopic<JointContactArray>(path, DefaultTopicNames().contacts).empty());
   EXPECT_TRUE(ReadTopic<JointFrictionArray>(path, DefaultTopicNames().friction).empty());
   EXPECT_TRUE(ReadTopic<BeamLoadsArray>(path, DefaultTopicNames().beam_loads).empty());
+  EXPECT_TRUE(ReadTopic<AeroLoadsArray>(path, DefaultTopicNames().aero_loads).empty());
 }
 
 TEST(BagSink, RecordsTheStaticTransformsOnceAsLatched) {

@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "flexmbd/AeroLoadsArray.h"
 #include "flexmbd/BeamLoadsArray.h"
 #include "flexmbd/Energy.h"
 #include "flexmbd/JointContactArray.h"
@@ -51,6 +52,11 @@ void FillJointFriction(const std::vector<FrictionInfo>& frictions, const OutputS
 /// One entry per beam station: sample.beam_stations[k] named by stations[k] (Model::beam_stations(): the same
 /// order and size).
 void FillBeamLoads(const std::vector<BeamStationInfo>& stations, const OutputSample& sample, BeamLoadsArray* msg);
+
+/// One entry per aero section: sample.aero_sections[k] named by sections[k] (Model::aero_sections(): the same
+/// order and size).
+void FillAeroLoads(const std::vector<const TypicalSectionAero*>& sections, const OutputSample& sample,
+                   AeroLoadsArray* msg);
 
 /// One transform per frame of `frames` (FrameTree::moving) from its parent frame to it, both placed by their
 /// nodes in `state`, stamped with the state's time.

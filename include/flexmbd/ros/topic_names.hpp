@@ -19,6 +19,7 @@ constexpr char kSolverTopic[] = "solver";
 constexpr char kContactsTopic[] = "contacts";
 constexpr char kFrictionTopic[] = "friction";
 constexpr char kBeamLoadsTopic[] = "beam_loads";
+constexpr char kAeroLoadsTopic[] = "aero_loads";
 constexpr char kMarkersTopic[] = "markers";
 // Command inputs (sensor_msgs/JointState), in the node's private namespace.
 constexpr char kEffortCommandTopic[] = "effort_command";
@@ -33,6 +34,7 @@ struct TopicNames {
   std::string contacts;      ///< flexmbd/JointContactArray (models with stops)
   std::string friction;      ///< flexmbd/JointFrictionArray (models with frictional joints)
   std::string beam_loads;    ///< flexmbd/BeamLoadsArray (models with beam stations)
+  std::string aero_loads;    ///< flexmbd/AeroLoadsArray (models with aero sections)
   std::string tf;            ///< tf2_msgs/TFMessage
   std::string tf_static;     ///< tf2_msgs/TFMessage, latched (models with fixed massless links)
   std::string markers;       ///< visualization_msgs/MarkerArray

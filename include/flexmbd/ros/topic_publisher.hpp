@@ -24,7 +24,7 @@ class TopicPublisher : public MessageSink {
  public:
   /// Advertises `joint_states` and `/tf` in `node`'s namespace, `~energy`, `~reactions`, `~solver`,
   /// `~contacts` if `model` has stops, `~friction` if it has frictional joints, `~beam_loads` if it has beam
-  /// stations (output.beam_stations), and the latched `~markers`
+  /// stations (output.beam_stations), `~aero_loads` if it has aero sections, and the latched `~markers`
   /// (ToBodyMarkers, published once, here) in `private_node`'s, the latched `/tf_static` (published once,
   /// here) unless `static_transforms` is empty, and `/clock` if `publish_clock`. `on_connect` is called
   /// (from a spinner thread) whenever a subscriber connects to a sample topic.
@@ -45,7 +45,7 @@ class TopicPublisher : public MessageSink {
   void EndBatch() override;
 
   /// Fewest subscribers over the sample topics (joint_states, ~energy, ~reactions, ~solver, /tf, and ~contacts,
-  /// ~friction, ~beam_loads where advertised).
+  /// ~friction, ~beam_loads, ~aero_loads where advertised).
   int MinSampleSubscribers() const;
 
   /// The sample topics with fewer than `count` subscribers, by resolved name: what a start that waits for
@@ -57,11 +57,11 @@ class TopicPublisher : public MessageSink {
 
  private:
   // The topics every sample goes to: joint_states, ~energy, ~reactions, ~solver, /tf and those advertised of
-  // ~contacts, ~friction, ~beam_loads. A subscriber to /tf that connects late would miss the link frames of a
+  // ~contacts, ~friction, ~beam_loads, ~aero_loads. A subscriber to /tf that connects late would miss the link frames of a
   // short run at real_time_factor 0 (it happened to the node_topics rostest on a loaded machine).
   std::vector<const QueuedTopic*> SampleTopics() const;
 
-  QueuedTopic joint_states_, energy_, reactions_, solver_, contacts_, friction_, beam_loads_, tf_;
+  QueuedTopic joint_states_, energy_, reactions_, solver_, contacts_, friction_, beam_loads_, aero_loads_, tf_;
   ::ros::Publisher clock_;       ///< none without /use_sim_time
   ::ros::Publisher markers_;     ///< latched, published once
   ::ros::Publisher tf_static_;   ///< latched, published once; none without static transforms

@@ -25,6 +25,7 @@ Samples ReadBagSamples(const std::string& path, const std::string& node_name) {
   ReadTopic(bag, prefix + "reactions", &samples.reactions);
   ReadTopic(bag, prefix + "solver", &samples.solver);
   ReadTopic(bag, prefix + "beam_loads", &samples.beam_loads);
+  ReadTopic(bag, prefix + "aero_loads", &samples.aero_loads);
   ReadTopic(bag, "/tf", &samples.transforms);
   return samples;
 }

@@ -8,8 +8,8 @@
 namespace flexmbd {
 namespace test {
 
-/// The samples recorded under /joint_states, /tf and /<node_name>/{energy,reactions,solver,beam_loads}, in bag
-/// order.
+/// The samples recorded under /joint_states, /tf and /<node_name>/{energy,reactions,solver,beam_loads,aero_loads},
+/// in bag order.
 /// Throws rosbag::BagException if the bag cannot be read (e.g. it was not closed).
 Samples ReadBagSamples(const std::string& path, const std::string& node_name);
 

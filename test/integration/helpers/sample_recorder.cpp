@@ -38,6 +38,7 @@ SampleRecorder::SampleRecorder(const std::string& node_name) : spinner_(1, &queu
   subscribers_.push_back(Subscribe(prefix + "contacts", &Samples::contacts));
   subscribers_.push_back(Subscribe(prefix + "friction", &Samples::friction));
   subscribers_.push_back(Subscribe(prefix + "beam_loads", &Samples::beam_loads));
+  subscribers_.push_back(Subscribe(prefix + "aero_loads", &Samples::aero_loads));
   spinner_.start();
 }
 

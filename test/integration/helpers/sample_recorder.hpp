@@ -24,7 +24,8 @@ bool EverySampleTopicReached(const Samples& samples, double t);
 class SampleRecorder {
  public:
   /// Subscribes to joint_states and /tf (root namespace) and /<node_name>/{energy,reactions,solver,contacts,
-  /// friction,beam_loads} (the last three are published only for models with stops, friction or beam stations).
+  /// friction,beam_loads,aero_loads} (the last four are published only for models with stops, friction, beam
+  /// stations or aero sections).
   explicit SampleRecorder(const std::string& node_name);
   ~SampleRecorder();
 

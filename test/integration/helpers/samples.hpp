@@ -18,6 +18,7 @@ struct Samples {
   std::vector<JointContactArray> contacts;  ///< only for models with stops
   std::vector<JointFrictionArray> friction;  ///< only for models with friction
   std::vector<BeamLoadsArray> beam_loads;    ///< only for models with beam stations
+  std::vector<AeroLoadsArray> aero_loads;    ///< only for models with aero sections
 };
 
 /// Simulated time of a message [s].

@@ -45,6 +45,10 @@ class LaunchSequence(unittest.TestCase):
         # Nothing of the friction variant is left behind; the dampers are there.
         self.assertFalse(rospy.has_param(NAMESPACE + '/flexmbd/joints/B1/friction'))
         self.assertTrue(rospy.has_param(NAMESPACE + '/flexmbd/joints/B1/damper'))
+        # The aeroelastic section (4 s below its flutter speed) after the antenna: its aero block, no hinge of it.
+        self.assertRanToItsEnd(['conner_section.launch', 'variant:=flutter_below'])
+        self.assertTrue(rospy.has_param(NAMESPACE + '/flexmbd/aero/sections/conner'))
+        self.assertFalse(rospy.has_param(NAMESPACE + '/flexmbd/joints/B1'))
 
 
 if __name__ == '__main__':
