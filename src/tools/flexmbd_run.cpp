@@ -175,9 +175,6 @@ void RunEigenAboutSteadyRotation(const flexmbd::Model& model, const flexmbd::Eig
 flexmbd::State LinearisationState(const flexmbd::Model& model) {
   flexmbd::State state = model.initial_state();
   if (!model.solver().eigen.static_first) return state;
-  // From consistent multipliers: with zero ones the first static tangent of a hanging body has no joint
-  // geometric stiffness and is singular.
-  state = flexmbd::WithConsistentMotion(model, state);
   flexmbd::SparseSystem system(model);
   const flexmbd::StaticResult result = flexmbd::SolveStatic(model, &system, &state);
   if (!result.converged) {

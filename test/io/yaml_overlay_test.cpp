@@ -91,6 +91,17 @@ TEST(YamlOverlay, SolverSettingsRead) {
   EXPECT_EQ(solver.gravity, Vec3(0.0, 0.0, -9.81));
 }
 
+// The default dt_min follows a tolerance tighter than the default one (docs/config.md, solver.dt_min); one given
+// in the YAML stands.
+TEST(YamlOverlay, DefaultMinimumStepFollowsATighterErrorTolerance) {
+  auto solver = [](const std::string& yaml) { return test::LoadDataUrdf("double_pendulum.urdf", yaml, "solver.yaml").solver; };
+  EXPECT_EQ(solver("solver: {}").dt_min, 1.0e-7);
+  EXPECT_EQ(solver("solver: {error_tol: 1.0e-3}").dt_min, 1.0e-7);
+  EXPECT_NEAR(solver("solver: {error_tol: 1.0e-6}").dt_min, 1.0e-9, 1e-24);
+  EXPECT_NEAR(solver("solver: {error_tol: 1.0e-12}").dt_min, 1.0e-10, 1e-25);  // followed down to error_tol 1e-7
+  EXPECT_EQ(solver("solver: {error_tol: 1.0e-6, dt_min: 1.0e-7}").dt_min, 1.0e-7);
+}
+
 TEST(YamlOverlay, OutputSettingsRead) {
   const OutputSpec output = DoublePendulum().output;
   EXPECT_EQ(output.rate_hz, 50.0);

@@ -3,9 +3,12 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <string>
 
 #include "case_builders.hpp"
 #include "flexmbd/solver/simulation.hpp"
+#include "../integration/helpers/csv_table.hpp"
+#include "runner_output.hpp"
 
 namespace flexmbd {
 namespace {
@@ -57,6 +60,43 @@ TEST(StaticAnalysis, StaticFirstStartsDynamicsAtRest) {
   // Equilibrium to Newton accuracy; the dynamics then see residual forces of order 1e-12 relative only.
   constexpr double kDriftTolerance = 1.0e-9;
   EXPECT_LT(worst_drift, kDriftTolerance);
+}
+
+// The rod of config/pendulum_stop (2 kg, centre of mass 0.5 m from the hinge, no spring) through the runner with
+// `analysis: static` from 0.5 rad: gravity alone holds a mechanism, so its first static tangent has no stiffness
+// but the joint's geometric stiffness, which zero multipliers leave out (it was singular: docs/theory.md, static
+// analysis). `hinge_yaml` is the hinge's block; the CSV's last row is the equilibrium.
+double StaticHingeAngle(const std::string& hinge_yaml, const std::string& name) {
+  const std::string out = test::RunnerOutput(
+      "config/pendulum_stop/pendulum_stop.urdf",
+      "joints: {hinge: {" + hinge_yaml + "}}\nsolver: {analysis: static, gravity: [0.0, 0.0, -9.81]}\n"
+      "output: {csv: " + testing::TempDir() + name + ".csv}\n",
+      name);
+  const test::CsvTable table = test::ReadCsv(testing::TempDir() + name + ".csv");
+  EXPECT_FALSE(table.rows.empty()) << out;
+  return table.rows.empty() ? std::nan("") : table.rows.back().at(table.Column("joint.hinge.position"));
+}
+
+TEST(StaticAnalysis, PendulumWithoutASpringHangsStraightDown) {
+  // The rod turns about +y, so its centre of mass (along +x at 0) is straight below the hinge at pi/2; the
+  // static solve stops on its increments at tol 1e-6 relative of the motion, quadratically: 1e-9 rad bounds it.
+  const double angle = StaticHingeAngle("initial: {position: 0.5}", "static_free_pendulum");
+  EXPECT_NEAR(angle, M_PI / 2, 1.0e-9);
+}
+
+TEST(StaticAnalysis, PendulumRestsOnItsDroopStopPressedByItsWeight) {
+  // Started on its droop stop (the URDF's upper limit, 60 deg below the horizontal; Hertz law k a^1.5, zero
+  // stiffness at zero approach), the rod presses the stop at radius r = 0.1 m, approach a = r (q - q_stop), until
+  // k a^1.5 r equals the weight's moment m g l cos(q): a = 4.6e-4 m, 4.6e-3 rad past the stop.
+  const double m = 2.0, g = 9.81, l = 0.5, k = 5.0e6, r = 0.1, stop = 1.0472;
+  const double angle = StaticHingeAngle(
+      "initial: {position: 1.0472}, backlash: {radius_lower: 0.1, radius_upper: 0.1, "
+      "stop: {type: elastic, law: hertz, stiffness: 5.0e6, exponent: 1.5, restitution: 0.7}}",
+      "static_pendulum_on_stop");
+  ASSERT_GT(angle, stop) << "the rod should press into its stop";
+  // The balance at the angle reached, to the static solve's Newton tolerance (1e-6 relative of the motion).
+  const double contact_moment = k * std::pow((angle - stop) * r, 1.5) * r;
+  EXPECT_NEAR(contact_moment / (m * g * l * std::cos(angle)), 1.0, 1.0e-6);
 }
 
 }  // namespace

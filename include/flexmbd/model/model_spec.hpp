@@ -188,7 +188,7 @@ struct SolverSpec {
   double rho_inf = 0.6;            ///< high-frequency amplification per step: energy-decaying [1/3, 1], generalized-alpha [0, 1]
   double t_end = 1.0;              ///< [s]
   double dt = 1.0e-2;              ///< initial (and, without adaptivity, fixed) step [s]
-  double dt_min = 1.0e-7;          ///< [s]
+  double dt_min = 1.0e-7;          ///< [s]; unset in YAML: this times error_tol / 1e-4 in [1e-3, 1]
   double dt_max = 0.1;             ///< [s]
   bool adaptive = true;            ///< adapt the step to the local error estimate
   double tol = 1.0e-6;             ///< Newton relative tolerance

@@ -2,12 +2,30 @@
 
 #include <limits>
 
+#include "flexmbd/common/error.hpp"
 #include "flexmbd/model/model.hpp"
+#include "flexmbd/solver/eigen_analysis.hpp"
 #include "flexmbd/solver/joint_rates.hpp"
 #include "flexmbd/solver/sparse_system.hpp"
 #include "flexmbd/solver/step_context_builder.hpp"
 
 namespace flexmbd {
+namespace {
+
+// Multipliers to start from when the state has none: those that hold the joints when the model is released from
+// rest there (theory (E2)), scaled to the first load step. With zero multipliers the first tangent has no
+// geometric stiffness of the joints, and a mechanism held by gravity alone (a hanging pendulum) is singular in
+// it. A model without inertia has no such multipliers and starts from zero.
+void StartFromReleaseMultipliers(const Model& model, double load_factor, State* state) {
+  if (model.num_multipliers() == 0 || !state->lambda.isZero(0.0)) return;
+  try {
+    state->lambda = load_factor * WithConsistentMotion(model, *state).lambda;
+  } catch (const SolverError&) {
+    state->lambda.setZero();
+  }
+}
+
+}  // namespace
 
 StaticResult SolveStatic(const Model& model, SparseSystem* system, State* state) {
   StepContextBuilder builder(model);
@@ -15,6 +33,7 @@ StaticResult SolveStatic(const Model& model, SparseSystem* system, State* state)
   StaticResult result;
   for (NodeState& n : state->nodes) n.v = n.w = n.a_prev = n.alpha_prev = n.a_prev2 = n.alpha_prev2 = Vec3::Zero();
   const int n_steps = model.solver().load_steps;
+  StartFromReleaseMultipliers(model, 1.0 / n_steps, state);
   Eigen::VectorXd unknowns = Eigen::VectorXd::Zero(model.num_unknowns());
   for (int step = 1; step <= n_steps; ++step) {
     const double load_factor = static_cast<double>(step) / n_steps;
