@@ -22,6 +22,8 @@ constexpr int kHalvings = 20;
 // loops closed at each: the assembly follows the branch the URDF draws (a slider-crank's rod does not fold back
 // when its crank is set half a turn on), and each Gauss-Newton start lies well within its linearisation.
 constexpr double kContinuationStep = 0.1;
+// ... in at most this many increments (a crank set 16 turns on), so that a huge set value costs a bounded time.
+constexpr int kMaxIncrements = 1000;
 // Central differences of the gaps: the error, h^2 times the third derivative, stays near 1e-14 for links of
 // metres, which slows the Newton convergence only by that factor.
 constexpr double kDifferenceStep = 1.0e-7;
@@ -154,9 +156,15 @@ void AssembleLoops(const std::vector<BodyMount>& free_bodies, ModelSpec* spec) {
     }
     double largest = 0;
     for (double value : target) largest = std::max(largest, std::abs(value));
-    const int increments = std::max(1, static_cast<int>(std::ceil(largest / kContinuationStep)));
+    int increments = 1;
+    if (largest > kContinuationStep) {
+      const bool bounded = largest < kMaxIncrements * kContinuationStep;
+      increments = bounded ? static_cast<int>(std::ceil(largest / kContinuationStep)) : kMaxIncrements;
+    }
     for (int increment = 1; increment <= increments; ++increment) {
-      for (size_t i = 0; i < set.size(); ++i) *set[i] = target[i] * increment / increments;
+      for (size_t i = 0; i < set.size(); ++i) {
+        *set[i] = increment == increments ? target[i] : target[i] * increment / increments;
+      }
       PlaceBodies(free_bodies, spec);
       CloseByLeastChange(extent, &positions);
     }
