@@ -2,6 +2,7 @@
 
 #include "flexmbd/common/error.hpp"
 #include "flexmbd/io/initial_placement.hpp"
+#include "flexmbd/io/loop_assembly.hpp"
 #include "flexmbd/io/loop_closure.hpp"
 #include "flexmbd/io/text_file.hpp"
 #include "flexmbd/io/urdf_reader.hpp"
@@ -24,6 +25,7 @@ ModelSpec LoadModelSpecFromStrings(const std::string& urdf_xml, const std::strin
   io::ApplyYamlOverlay(params, params_name, &model);
   io::PlaceBodies(model.free_bodies, &model.spec);
   model.spec.source = params_name.empty() ? urdf_name : urdf_name + " + " + params_name;
+  io::AssembleLoops(model.free_bodies, &model.spec);
   io::CloseLoops(model.spec.source, &model.spec);
   return model.spec;
 }

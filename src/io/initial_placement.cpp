@@ -109,6 +109,8 @@ FrameMotion ChildMotion(const FrameMotion& P, const JointSpec& joint) {
   Vec3 p_JpJc_Jp, w_JpJc_Jp, v_JpJc_Jp;
   RelativePose(kinematics, q, &R_JpJc, &p_JpJc_Jp);
   RelativeVelocity(kinematics, q, qdot, &w_JpJc_Jp, &v_JpJc_Jp);
+  R_JpJc = joint.initial_rotation * R_JpJc;  // identity and zero but on a spherical joint
+  w_JpJc_Jp += joint.initial_angular_velocity;
 
   const FrameMotion Jp = CarryRigidly(P, joint.R_PJ, joint.p_PJ);
   FrameMotion Jc;

@@ -1,6 +1,8 @@
 #include "flexmbd/io/loop_closure.hpp"
 
+#include <algorithm>
 #include <map>
+#include <vector>
 
 #include <Eigen/QR>
 
@@ -75,48 +77,89 @@ std::string Offsets(const Vec6& left) {
   return FormatVector(left.tail<3>()) + " m and " + FormatVector(left.head<3>()) + " rad";
 }
 
-void Close(const std::string& source, const std::map<std::string, FrameMotion>& motion_of, JointSpec* joint) {
-  const FrameMotion P = joint->parent.empty() ? FrameMotion{} : motion_of.at(joint->parent);
-  const FrameMotion& C = motion_of.at(joint->child);
-  const FrameMotion Jp = CarryRigidly(P, joint->R_PJ, joint->p_PJ);
-  const FrameMotion Jc = CarryRigidly(C, joint->R_CJ, joint->p_CJ);
-  const std::string where = source + ": closures." + joint->name + ": ";
-  const JointKinematics kinematics = MakeJointKinematics(*joint);
+// What the fit of one closing joint leaves, on the bodies as placed.
+struct ClosureFit {
+  Eigen::VectorXd position, velocity;  // the joint's variables and rates
+  Vec6 pose_gap = Vec6::Zero();        // rotation vector [rad] and offset [m] of Jc from where the joint puts it
+  Vec6 motion_gap = Vec6::Zero();      // angular [rad/s] and linear [m/s] velocity of Jc across what it allows
+  double size = 1.0;                   // the scale of the pose gap's tolerance [m]
+  double motion_size = 0.0;            // the scale of the motion gap's: the relative motion fitted
+};
 
-  Vec6 left;
-  const Eigen::VectorXd q =
-      FitVariables(kinematics, Jp.R_WF.transpose() * Jc.R_WF, Jp.R_WF.transpose() * (Jc.p_WF - Jp.p_WF), &left);
-  const double size = 1.0 + Jp.p_WF.norm() + Jc.p_WF.norm();
-  if (left.norm() > kClosingTolerance * size) {
-    throw ConfigError(where + "the loop does not close: the child's joint frame lies " + Offsets(left) +
-                      " (in the parent's joint frame) from where the " + JointTypeName(joint->type) +
-                      " joint can put it; expected child_xyz and child_rpy (the joint frame in the child link) at "
-                      "the parent's joint frame as the URDF places the links");
-  }
+ClosureFit Fit(const std::map<std::string, FrameMotion>& motion_of, const JointSpec& joint) {
+  const FrameMotion P = joint.parent.empty() ? FrameMotion{} : motion_of.at(joint.parent);
+  const FrameMotion& C = motion_of.at(joint.child);
+  const FrameMotion Jp = CarryRigidly(P, joint.R_PJ, joint.p_PJ);
+  const FrameMotion Jc = CarryRigidly(C, joint.R_CJ, joint.p_CJ);
+  const JointKinematics kinematics = MakeJointKinematics(joint);
+  ClosureFit fit;
+  fit.position = FitVariables(kinematics, Jp.R_WF.transpose() * Jc.R_WF, Jp.R_WF.transpose() * (Jc.p_WF - Jp.p_WF),
+                              &fit.pose_gap);
+  fit.size = 1.0 + Jp.p_WF.norm() + Jc.p_WF.norm();
   // ChildMotion's velocity relations solved for the relative motion, in Jp
   Vec6 relative;
   relative << Jp.R_WF.transpose() * (Jc.w_WF_W - Jp.w_WF_W),
       Jp.R_WF.transpose() * (Jc.v_WFo_W - Jp.v_WFo_W - Jp.w_WF_W.cross(Jc.p_WF - Jp.p_WF));
   if (!kinematics.rotation_constrained) relative.head<3>().setZero();
-  const Jacobian map = RateMap(kinematics, q);
-  const Eigen::VectorXd rates =
-      kinematics.num_variables == 0 ? Eigen::VectorXd() : Eigen::VectorXd(map.colPivHouseholderQr().solve(relative));
-  const Vec6 opening = relative - map * rates;  // a 6 x 0 map (spherical, fixed) gives zero
-  if (opening.norm() > kClosingTolerance * std::max(1.0, relative.norm())) {
+  fit.motion_size = relative.norm();
+  const Jacobian map = RateMap(kinematics, fit.position);
+  fit.velocity = kinematics.num_variables == 0 ? Eigen::VectorXd()
+                                               : Eigen::VectorXd(map.colPivHouseholderQr().solve(relative));
+  fit.motion_gap = relative - map * fit.velocity;  // a 6 x 0 map (spherical, fixed) gives zero
+  return fit;
+}
+
+std::map<std::string, FrameMotion> PlacedMotions(const ModelSpec& spec) {
+  std::map<std::string, FrameMotion> motion_of;
+  for (const BodySpec& body : spec.bodies) motion_of[body.name] = MotionOf(body);
+  for (const BeamSpec& beam : spec.beams) motion_of[beam.name] = MotionOf(beam);
+  return motion_of;
+}
+
+void Close(const std::string& source, const std::map<std::string, FrameMotion>& motion_of, JointSpec* joint) {
+  const ClosureFit fit = Fit(motion_of, *joint);
+  const std::string where = source + ": closures." + joint->name + ": ";
+  if (fit.pose_gap.norm() > kClosingTolerance * fit.size) {
+    throw ConfigError(where + "the loop does not close: the child's joint frame lies " + Offsets(fit.pose_gap) +
+                      " (in the parent's joint frame) from where the " + JointTypeName(joint->type) +
+                      " joint can put it; expected initial positions and drives at t = 0 of the URDF joints that "
+                      "let the loops close (the loader moves the joints not set to close them)");
+  }
+  const Vec6& opening = fit.motion_gap;
+  if (opening.norm() > kClosingTolerance * std::max(1.0, fit.motion_size)) {
     throw ConfigError(where + "the initial motion opens the loop: relative to the parent's joint frame the child "
                       "moves at " + FormatVector(opening.tail<3>()) + " m/s and turns at " +
                       FormatVector(opening.head<3>()) + " rad/s across what the " + JointTypeName(joint->type) +
-                      " joint allows; expected initial rates of the URDF joints that keep the loop closed");
+                      " joint allows; expected initial rates of the URDF joints that let the loops close (the "
+                      "loader moves the rates not set to close them)");
   }
-  joint->initial_position.assign(q.data(), q.data() + q.size());
-  joint->initial_velocity.assign(rates.data(), rates.data() + rates.size());
+  joint->initial_position.assign(fit.position.data(), fit.position.data() + fit.position.size());
+  joint->initial_velocity.assign(fit.velocity.data(), fit.velocity.data() + fit.velocity.size());
+}
+
+template <class GapOf>
+Eigen::VectorXd Gaps(const ModelSpec& spec, GapOf gap_of) {
+  const std::map<std::string, FrameMotion> motion_of = PlacedMotions(spec);
+  std::vector<Vec6> gaps;
+  for (const JointSpec& joint : spec.joints) {
+    if (joint.closes_loop) gaps.push_back(gap_of(Fit(motion_of, joint)));
+  }
+  Eigen::VectorXd all(6 * gaps.size());
+  for (size_t i = 0; i < gaps.size(); ++i) all.segment<6>(6 * i) = gaps[i];
+  return all;
 }
 }  // namespace
 
+Eigen::VectorXd LoopPoseGaps(const ModelSpec& spec) {
+  return Gaps(spec, [](const ClosureFit& fit) { return fit.pose_gap; });
+}
+
+Eigen::VectorXd LoopMotionGaps(const ModelSpec& spec) {
+  return Gaps(spec, [](const ClosureFit& fit) { return fit.motion_gap; });
+}
+
 void CloseLoops(const std::string& source, ModelSpec* spec) {
-  std::map<std::string, FrameMotion> motion_of;
-  for (const BodySpec& body : spec->bodies) motion_of[body.name] = MotionOf(body);
-  for (const BeamSpec& beam : spec->beams) motion_of[beam.name] = MotionOf(beam);
+  const std::map<std::string, FrameMotion> motion_of = PlacedMotions(*spec);
   for (JointSpec& joint : spec->joints) {
     if (joint.closes_loop) Close(source, motion_of, &joint);
   }

@@ -279,6 +279,8 @@ void ResizeJointVariables(JointSpec* joint) {
   joint->initial_position.resize(n, 0.0);
   joint->initial_velocity.resize(n, 0.0);
   joint->effects.resize(n);
+  joint->position_set.resize(n, false);
+  joint->velocity_set.resize(n, false);
 }
 
 }  // namespace io

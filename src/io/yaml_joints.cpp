@@ -155,6 +155,8 @@ void ReadInitial(const Field& initial, const Field& drive, const VariableUnits& 
       initial, "position", Quantity{"an initial position", Bound::kAny, units.position}, units.measure, &position);
   const bool velocity_given = OverlayMeasure(
       initial, "velocity", Quantity{"an initial velocity", Bound::kAny, rate_unit}, units.measure, &velocity);
+  joint->position_set[variable] = position_given;
+  joint->velocity_set[variable] = velocity_given;
   if (!drive.present()) return;
   // a driven variable starts on its drive: q(0) = f(0), qdot(0) = f'(0)
   const TimeFunctionSpec& f = joint->effects[variable].drives.front();
@@ -162,6 +164,7 @@ void ReadInitial(const Field& initial, const Field& drive, const VariableUnits& 
   if (velocity_given) CheckOnDrive(initial, "velocity", velocity, EvaluateRate(f, 0.0), rate_unit);
   position = Evaluate(f, 0.0);
   velocity = EvaluateRate(f, 0.0);
+  joint->position_set[variable] = joint->velocity_set[variable] = true;
 }
 
 // A loop's closing joint starts where the tree puts its child (docs/config.md, "closures").

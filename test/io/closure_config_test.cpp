@@ -4,6 +4,7 @@
 
 #include <cmath>
 
+#include "../verification/closed_forms.hpp"
 #include "io_test_util.hpp"
 
 namespace flexmbd {
@@ -72,17 +73,60 @@ TEST(ClosureConfig, ClosureTakesEffectsUnderJoints) {
   EXPECT_EQ(closure.effects[0].springs[0].stiffness, 2.0);
 }
 
+// The slider-crank of test/data: crank 0.1 m, rod 0.3 m.
+double SliderTravel(double theta) { return test::SliderTravel(0.1, 0.3, theta); }
+double SliderTravelRate(double theta) { return test::SliderTravelRate(0.1, 0.3, theta); }
+// The assembly stops at gaps of 1e-14 of the model's extent (1 m here); the slider's travel follows through
+// the loop's lever ratios (below 2): 1e-12 m leaves a margin. Rates: one least-squares solve, round-off.
+constexpr double kAssembledTolerance = 1.0e-12;
+
+TEST(ClosureConfig, TreeJointsNotSetAreMovedToCloseTheLoop) {
+  // The crank set at 1 rad: the slide and the spherical crank pin, not set, move until the universal wrist pin
+  // closes; the crank keeps its angle.
+  for (const std::string angle : {"1.0", "2.5", "-2.0"}) {
+    const ModelSpec spec =
+        Load(kClosure + "joints: {crank_pin: {type: spherical}, crank_hinge: {initial: {position: " + angle + "}}}");
+    const double theta = std::stod(angle);
+    EXPECT_DOUBLE_EQ(Find(spec, "crank_hinge").initial_position[0], theta);
+    EXPECT_NEAR(Find(spec, "slide").initial_position[0], SliderTravel(theta), kAssembledTolerance) << angle;
+  }
+}
+
+TEST(ClosureConfig, RatesNotSetAreMovedToKeepTheLoopClosed) {
+  const ModelSpec spec =
+      Load(kClosure + "joints: {crank_pin: {type: spherical}, crank_hinge: {initial: {position: 1.0, velocity: 2.0}}}");
+  EXPECT_DOUBLE_EQ(Find(spec, "crank_hinge").initial_velocity[0], 2.0);
+  EXPECT_NEAR(Find(spec, "slide").initial_velocity[0], 2.0 * SliderTravelRate(1.0), kAssembledTolerance);
+}
+
+TEST(ClosureConfig, DrivenJointIsHeldAtItsDrivesStart) {
+  // A linear ramp from 1 rad at 2 pi rad/s: the assembly holds the crank at f(0) and its rate at f'(0).
+  const ModelSpec spec = Load(kClosure + "joints: {crank_pin: {type: spherical}, crank_hinge: {drive: "
+                                         "{law: linear_ramp, offset: 1.0, value: 7.283185307179586, duration: 1.0}}}");
+  EXPECT_DOUBLE_EQ(Find(spec, "crank_hinge").initial_position[0], 1.0);
+  EXPECT_NEAR(Find(spec, "slide").initial_position[0], SliderTravel(1.0), kAssembledTolerance);
+  EXPECT_NEAR(Find(spec, "slide").initial_velocity[0], 2.0 * M_PI * SliderTravelRate(1.0), kAssembledTolerance);
+}
+
 TEST(ClosureConfig, LoopThatDoesNotCloseIsRejected) {
-  // The crank turned to 1 rad carries the rod (a spherical pin has no variable) away from the slide.
-  EXPECT_CONFIG_ERROR(Load(kClosure + "joints: {crank_pin: {type: spherical}, crank_hinge: {initial: {position: 1.0}}}"),
+  // The crank at 1 rad leaves the rod's far end 0.058 m short of the slider, set at its start: only the pin's
+  // rotation is free, which cannot close that.
+  EXPECT_CONFIG_ERROR(Load(kClosure + "joints: {crank_pin: {type: spherical}, crank_hinge: {initial: {position: 1.0}}, "
+                                      "slide: {initial: {position: 0.0}}}"),
                       "slider_crank.urdf + test.yaml: closures.wrist_pin: the loop does not close: the child's "
                       "joint frame lies [");
+  // with a revolute crank pin and the slide set, the loop is redundant in the plane and the set angle conflicts
+  EXPECT_CONFIG_ERROR(Load(kClosure + "joints: {crank_hinge: {initial: {position: 1.0}}, slide: {initial: "
+                                      "{position: 0.0}}}"),
+                      "closures.wrist_pin: the loop does not close");
 }
 
 TEST(ClosureConfig, InitialMotionThatOpensTheLoopIsRejected) {
-  EXPECT_CONFIG_ERROR(Load(kClosure + "joints: {crank_pin: {type: spherical}, crank_hinge: {initial: {velocity: 1.0}}}"),
+  // The crank turning at 1 rad/s at 1 rad drives the slider, which is set at rest.
+  EXPECT_CONFIG_ERROR(Load(kClosure + "joints: {crank_pin: {type: spherical}, crank_hinge: {initial: {position: 1.0, "
+                                      "velocity: 1.0}}, slide: {initial: {velocity: 0.0}}}"),
                       "slider_crank.urdf + test.yaml: closures.wrist_pin: the initial motion opens the loop: "
-                      "relative to the parent's joint frame the child moves at [0, -0.4, 0] m/s");
+                      "relative to the parent's joint frame the child moves at [");
 }
 
 TEST(ClosureConfig, BadClosuresAreRejectedNamingTheField) {

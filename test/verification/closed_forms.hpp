@@ -19,6 +19,17 @@ inline double EllipticK(double k) {
   return M_PI / (2.0 * a);
 }
 
+// A slider-crank whose slide passes through the crank's axis (crank r, rod l): the slider's travel from its place
+// at crank angle 0, x = r cos(theta) + sqrt(l^2 - r^2 sin^2(theta)) - (r + l), and its rate dx/dtheta.
+inline double SliderTravel(double r, double l, double theta) {
+  const double s = r * std::sin(theta);
+  return r * std::cos(theta) + std::sqrt(l * l - s * s) - (r + l);
+}
+inline double SliderTravelRate(double r, double l, double theta) {
+  const double s = r * std::sin(theta);
+  return -s - s * r * std::cos(theta) / std::sqrt(l * l - s * s);
+}
+
 // Bending moment at station s of a uniform bar of length l and weight per length w, hinged at s = 0 and turning
 // rigidly under gravity at angle theta from the horizontal: the transverse load w cos(theta) (1 - 3 sigma / (2 l))
 // (gravity less the inertia of the angular acceleration 3 g cos(theta) / (2 l)) times the arm sigma - s,

@@ -13,6 +13,8 @@
 #include "flexmbd/io/config_loader.hpp"
 #include "flexmbd/solver/simulation.hpp"
 #include "flexmbd/solver/step_context_builder.hpp"
+
+#include "closed_forms.hpp"
 #include "runner_output.hpp"
 
 namespace flexmbd {
@@ -25,12 +27,8 @@ constexpr double kCrank = 0.1, kRod = 0.3;  // [m], test/data/urdf/slider_crank.
 // l / sqrt(l^2 - r^2) = 1.06 at most: 1e-10 m leaves a margin.
 constexpr double kLoopTolerance = 1.0e-10;
 
-// The slider's travel from its start at crank angle 0 (slider at r + l): the rod's far end on the slide,
-// x = r cos(theta) + sqrt(l^2 - r^2 sin^2(theta)).
-double SliderTravel(double theta) {
-  const double s = kCrank * std::sin(theta);
-  return kCrank * std::cos(theta) + std::sqrt(kRod * kRod - s * s) - (kCrank + kRod);
-}
+// The slider's travel from its start at crank angle 0 (slider at r + l): the rod's far end on the slide.
+double SliderTravel(double theta) { return test::SliderTravel(kCrank, kRod, theta); }
 
 ModelSpec SliderCrank() {
   const std::string data = std::string(FLEXMBD_SOURCE_DIR) + "/test/data/";
@@ -117,6 +115,70 @@ TEST(Closure, RunnerRunsTheSliderCrank) {
   yaml << file.rdbuf();
   const std::string output = test::RunnerOutput("test/data/urdf/slider_crank.urdf", yaml.str(), "closure_slider_crank");
   EXPECT_NE(output.find("finished at t = 2.5 s"), std::string::npos) << output;
+}
+
+// The slider-crank of test/data with `crank` as the crank hinge's settings and `solver` as the solver's, written
+// to a file as a user would: the loader assembles the loop about the crank's set start.
+std::string SliderCrankYaml(const std::string& crank, const std::string& solver) {
+  return "closures:\n  wrist_pin: {type: universal, parent: rod, child: slider, xyz: [0.3, 0.0, 0.0], axis: [0, 0, 1], "
+         "axis2: [0, 1, 0]}\njoints:\n  crank_pin: {type: spherical}\n  crank_hinge: " + crank +
+         "\nsolver: " + solver + "\noutput: {rate_hz: 0}\n";
+}
+
+ModelSpec LoadSliderCrank(const std::string& yaml_text, const std::string& name) {
+  const std::string yaml = testing::TempDir() + name + ".yaml";
+  std::ofstream(yaml) << yaml_text;
+  return LoadModelSpec(std::string(FLEXMBD_SOURCE_DIR) + "/test/data/urdf/slider_crank.urdf", yaml);
+}
+
+TEST(Closure, SliderCrankStartedOffItsUrdfPoseClosesItsLoop) {
+  // Released from rest at crank angles set in the YAML (the URDF draws angle 0), under gravity across the slide:
+  // the loader moves the slide and the spherical pin to close the loop, and the run keeps it closed.
+  for (const std::string angle : {"0.7", "1.5", "2.5", "-2.0"}) {
+    const ModelSpec spec = LoadSliderCrank(
+        SliderCrankYaml("{initial: {position: " + angle + "}}", "{t_end: 0.3, gravity: [0.0, -9.81, 0.0]}"),
+        "closure_slider_crank_start");
+    const LoopRun run = RunLoop(spec);
+    EXPECT_DOUBLE_EQ(run.last.t, 0.3) << angle;
+    EXPECT_LT(run.worst_travel_error, kLoopTolerance) << angle;
+    EXPECT_LT(run.worst_constraint, kLoopTolerance) << angle;
+    EXPECT_GT(run.last.kinetic, 1e-3) << angle;  // it moves from where it was set
+  }
+}
+
+TEST(Closure, DrivenCrankStartsOnItsDrive) {
+  // One turn at 2 pi rad/s from 1 rad (linear ramp): the crank starts at f(0) turning at f'(0), the slider at its
+  // closed-form place and rate (the assembly's round-off, far below the loop tolerance).
+  const ModelSpec spec = LoadSliderCrank(
+      SliderCrankYaml("{drive: {law: linear_ramp, offset: 1.0, value: 7.283185307179586, duration: 1.0}}",
+                      "{t_end: 1.2, gravity: [0.0, 0.0, 0.0]}"),
+      "closure_slider_crank_driven");
+  const Model model = BuildModel(spec);
+  const int crank = model.FindVariable("crank_hinge"), slide = model.FindVariable("slide");
+  const State start = model.initial_state();
+  EXPECT_DOUBLE_EQ(start.q[crank], 1.0);
+  EXPECT_NEAR(start.q[slide], SliderTravel(1.0), kLoopTolerance);
+  EXPECT_NEAR(start.qdot[slide], 2.0 * kPi * test::SliderTravelRate(kCrank, kRod, 1.0), kLoopTolerance);
+  const LoopRun run = RunLoop(spec);
+  EXPECT_DOUBLE_EQ(run.last.t, 1.2);
+  EXPECT_LT(run.worst_travel_error, kLoopTolerance);
+  EXPECT_LT(run.worst_constraint, kLoopTolerance);
+  EXPECT_NEAR(run.last.position[crank], 1.0 + 2.0 * kPi, 1e-12);
+}
+
+TEST(Closure, RunnerAssemblesTheSliderCrankOrSaysWhichLoopStaysOpen) {
+  const std::string runs = test::RunnerOutput(
+      "test/data/urdf/slider_crank.urdf", SliderCrankYaml("{initial: {position: 2.0}}", "{t_end: 0.1}"),
+      "closure_slider_crank_assembled");
+  EXPECT_NE(runs.find("finished at t = 0.1 s"), std::string::npos) << runs;
+  // the slide set at its URDF place as well: the crank at 2 rad cannot reach it
+  const std::string refused = test::RunnerOutput(
+      "test/data/urdf/slider_crank.urdf",
+      SliderCrankYaml("{initial: {position: 2.0}}\n  slide: {initial: {position: 0.0}}", "{t_end: 0.1}"),
+      "closure_slider_crank_open", 2);
+  EXPECT_NE(refused.find("closures.wrist_pin: the loop does not close: the child's joint frame lies ["),
+            std::string::npos)
+      << refused;
 }
 
 TEST(Closure, WingAileronBracketsLeaveTheAileronOnlyItsFlap) {

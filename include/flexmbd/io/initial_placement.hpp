@@ -24,7 +24,8 @@ struct FrameMotion {
 FrameMotion CarryRigidly(const FrameMotion& P, const Mat3& R_PF, const Vec3& p_PF);
 
 /// Motion of the child frame C of `joint` given the motion of its parent frame P, with the joint's
-/// relative motion (RelativePose, RelativeVelocity) at its initial_position and initial_velocity:
+/// relative motion (RelativePose, RelativeVelocity) at its initial_position and initial_velocity, and (a
+/// spherical joint's) initial_rotation and initial_angular_velocity:
 ///   Jp = CarryRigidly(P, R_PJ, p_PJ); R_WJc = R_WJp R_JpJc; p_WJc = p_WJp + R_WJp p_JpJc;
 ///   w_WJc = w_WJp + R_WJp w_JpJc; v_WJc = v_WJp + w_WJp x (R_WJp p_JpJc) + R_WJp v_JpJc;
 ///   C = CarryRigidly(Jc, R_CJ^T, -R_CJ^T p_CJ).

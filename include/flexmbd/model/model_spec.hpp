@@ -127,6 +127,14 @@ struct JointSpec {
   std::vector<double> initial_position;         ///< initial relative motion, one per variable [rad or m]
   std::vector<double> initial_velocity;         ///< initial relative rate, one per variable [rad/s or m/s]
   std::vector<VariableEffectsSpec> effects;     ///< one entry per variable (may be empty)
+  /// Per variable: the YAML sets its initial position (`initial.position` or a drive at t = 0), which the
+  /// assembly of loops holds; the others it may move (docs/theory.md, "Assembly of the initial configuration").
+  std::vector<bool> position_set;
+  std::vector<bool> velocity_set;  ///< per variable: the YAML sets its initial rate (as position_set)
+  /// A spherical joint's initial relative rotation R_JpJc and angular velocity w_JpJc (in Jp), which no variable
+  /// carries: the assembly of loops sets them; identity and zero otherwise.
+  Mat3 initial_rotation = Mat3::Identity();
+  Vec3 initial_angular_velocity = Vec3::Zero();  ///< [rad/s]
   bool has_limits = false;                      ///< URDF <limit> given (used by backlash without angles)
   double limit_lower = 0.0, limit_upper = 0.0;  ///< URDF <limit> lower and upper [rad or m]
   /// A joint of YAML `closures:` that closes a kinematic loop: not part of the tree that places the bodies;
