@@ -52,8 +52,13 @@ EnergyDecayingIntegrator::EnergyDecayingIntegrator(const Model& model, SparseSys
                      ? DissipationFromRhoInf(model.solver().rho_inf)
                      : 0.0),
       held_(model.modal_effects().size(), false),
-      node_inertia_(model.num_nodes(), Mat3::Identity()) {
+      node_inertia_(model.num_nodes(), Mat3::Identity()),
+      elements_all_on_(model.elements().size(), 0.0),
+      elements_dissipated_(model.elements().size(), true) {
   for (const RigidBody* body : model.rigid_bodies()) node_inertia_[body->node()] = body->inertia();
+  for (const auto& element : model.elements()) {
+    if (element->history_size() > 0) elements_all_on_[element->index()] = alpha_inf_;
+  }
 }
 
 bool EnergyDecayingIntegrator::Coefficients::any() const {
@@ -71,10 +76,11 @@ EnergyDecayingIntegrator::Coefficients EnergyDecayingIntegrator::Choose(const St
   c.variables.assign(model_.num_variables(), 0.0);
   c.elements.assign(model_.elements().size(), 0.0);
   if (alpha_inf_ == 0.0 || start.history_steps < 1) return c;
-  // Elements with a stretch of their own (beams) start with it on; the check after convergence turns it off
-  // where it would gain energy.
+  // Elements with a stretch of their own (beams) start with it on where it dissipated over the last converged
+  // step, as the nodes below (their rule is the previous step's check); the checks during and after the solve
+  // turn it off where it would gain energy.
   for (const auto& element : model_.elements()) {
-    if (element->history_size() > 0) c.elements[element->index()] = alpha_inf_;
+    if (elements_dissipated_[element->index()]) c.elements[element->index()] = elements_all_on_[element->index()];
   }
   const double ratio = start.history_steps >= 2 ? 1.0 : 0.0;  // no a_prev2 before the second step
   for (int k = 0; k < model_.num_nodes(); ++k) {
@@ -117,6 +123,18 @@ bool EnergyDecayingIntegrator::DropEnergyGainingDissipation(const State& start, 
     drop_unless(work.numerical >= 0.0, &c->elements[element->index()]);
   }
   return dropped;
+}
+
+void EnergyDecayingIntegrator::RecordElementDissipation(const Coefficients& c) {
+  // The sign of an element's term does not depend on its coefficient: every such element is judged with it on.
+  builder_.set_element_dissipation(elements_all_on_);
+  for (const auto& element : model_.elements()) {
+    if (element->history_size() == 0) continue;
+    StepWork work;
+    element->AddStepWork(builder_.context(), &work);
+    elements_dissipated_[element->index()] = work.numerical >= 0.0;
+  }
+  builder_.set_element_dissipation(c.elements);
 }
 
 Eigen::VectorXd EnergyDecayingIntegrator::Predict(const State& start, double h) const {
@@ -171,6 +189,7 @@ StepResult EnergyDecayingIntegrator::Step(const State& start, double h, State* e
   const bool choice_matters = coefficients.any() && model_.solver().tol < kDissipationJudgedAt;
   const bool early = judging_.Early();
   bool judging_dissipation = choice_matters && early;
+  bool dissipation_revised = false;
   // The first solve may start from the previous step's factorisation where the model's steps have shown that it
   // holds (TangentReuse); a solve redone within the step reuses this step's own.
   const bool earlier_tangent = system_->factorisation_key() == h && tangent_reuse_.Attempt();
@@ -180,12 +199,20 @@ StepResult EnergyDecayingIntegrator::Step(const State& start, double h, State* e
     const double tol = judging_dissipation ? kDissipationJudgedAt : model_.solver().tol;
     result.newton = SolveNewton(
         model_, system_, tol, model_.solver().max_iterations, NoiseFloor(model_, start),
-        [&](int, bool with_tangent) -> const StepContext& {
+        [&](int iteration, bool with_tangent) -> const StepContext& {
           // The first tangent assembled in a step leaves out the geometric stiffness of constraint forces and
           // loads (O(h^2) against inertia) and of beam section forces (spurious at the predictor); one
           // assembled because that one converged slowly includes it.
           tangents += with_tangent ? 1 : 0;
           builder_.set_geometric_stiffness(with_tangent && tangents > 1);
+          builder_.set_variable_dissipation(coefficients.variables);
+          builder_.set_element_dissipation(coefficients.elements);
+          const StepContext& ctx = builder_.Dynamic(start, unknowns, h, coefficients.nodes);
+          // Every iterate after the first is judged: a term that would gain energy is dropped there, and the solve
+          // goes on, instead of being found at convergence and solved for again (docs/theory.md, "Newton
+          // iteration"). The first iterate of a step is its predictor, whose velocity change is the lagged one.
+          if (iteration == 1 || !DropEnergyGainingDissipation(start, h, &coefficients)) return ctx;
+          dissipation_revised = true;
           builder_.set_variable_dissipation(coefficients.variables);
           builder_.set_element_dissipation(coefficients.elements);
           return builder_.Dynamic(start, unknowns, h, coefficients.nodes);
@@ -195,7 +222,8 @@ StepResult EnergyDecayingIntegrator::Step(const State& start, double h, State* e
           return (unknowns.head(n_kinematic) - coasting).cwiseAbs().maxCoeff() + h * h * kAccelerationFloor;
         },
         NewtonOptions{first_solve ? earlier_tangent : system_->factorisation_key() == h, judging_dissipation,
-                      judging_dissipation ? ExpectedJudgingContraction() : std::numeric_limits<double>::quiet_NaN()});
+                      judging_dissipation ? ExpectedJudgingContraction() : std::numeric_limits<double>::quiet_NaN(),
+                      &dissipation_revised});
     if (judging_dissipation) {
       // A solve that stopped on the expectation measured no rate: the expectation ages by the same power at each
       // use until a solve measures the rate again (NaN stays NaN).
@@ -238,6 +266,7 @@ StepResult EnergyDecayingIntegrator::Step(const State& start, double h, State* e
     }
   }
   if (choice_matters) judging_.Record(early, iterations);
+  if (alpha_inf_ != 0.0 && start.history_steps >= 1) RecordElementDissipation(coefficients);
   Commit(start, unknowns, h, coefficients.nodes, end);
   CommitEffects(end, &result.limit);
   // The accelerations of a step whose modes changed with a jump (an impact, a stick-slip transition) say nothing
