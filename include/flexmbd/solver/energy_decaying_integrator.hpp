@@ -45,8 +45,8 @@ class EnergyDecayingIntegrator : public TimeIntegrator {
   };
   // Chosen before the step from the previous steps' accelerations and the last step's element checks.
   Coefficients Choose(const State& start) const;
-  // Turns off the dissipation of nodes, variables and elements whose step would gain energy at the iterate the
-  // builder's context holds (during the solve or converged); true if any was.
+  // Turns off the dissipation of nodes, variables and elements whose converged step would gain energy; true if
+  // any was.
   bool DropEnergyGainingDissipation(const State& start, double h, Coefficients* c) const;
   // Records, at the converged step whose context the builder holds with coefficients `c`, which elements' own
   // stretch dissipates with the scheme's term, whether or not the term was on.

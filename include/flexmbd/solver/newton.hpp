@@ -47,9 +47,6 @@ struct NewtonOptions {
   /// For such a solve, theta / (1 - theta) to assume for its first increment, the error it leaves being that
   /// times the increment (NaN: unknown, the increment itself is the bound).
   double expected_contraction_factor = std::numeric_limits<double>::quiet_NaN();
-  /// Set by `evaluate` when it changed the equations themselves at the iterate it was given (not only the
-  /// iterate): the residual is then of new equations, and no contraction is measured across the change.
-  bool* equations_revised = nullptr;
 };
 
 /// Round-off of a configuration with coordinates up to `magnitude` [m or rad]: increments below it are noise.

@@ -77,8 +77,8 @@ EnergyDecayingIntegrator::Coefficients EnergyDecayingIntegrator::Choose(const St
   c.elements.assign(model_.elements().size(), 0.0);
   if (alpha_inf_ == 0.0 || start.history_steps < 1) return c;
   // Elements with a stretch of their own (beams) start with it on where it dissipated over the last converged
-  // step, as the nodes below (their rule is the previous step's check); the checks during and after the solve
-  // turn it off where it would gain energy.
+  // step, as the nodes below (their rule is the previous step's check); the check after convergence turns it
+  // off where it would gain energy.
   for (const auto& element : model_.elements()) {
     if (elements_dissipated_[element->index()]) c.elements[element->index()] = elements_all_on_[element->index()];
   }
@@ -189,7 +189,6 @@ StepResult EnergyDecayingIntegrator::Step(const State& start, double h, State* e
   const bool choice_matters = coefficients.any() && model_.solver().tol < kDissipationJudgedAt;
   const bool early = judging_.Early();
   bool judging_dissipation = choice_matters && early;
-  bool dissipation_revised = false;
   // The first solve may start from the previous step's factorisation where the model's steps have shown that it
   // holds (TangentReuse); a solve redone within the step reuses this step's own.
   const bool earlier_tangent = system_->factorisation_key() == h && tangent_reuse_.Attempt();
@@ -199,20 +198,12 @@ StepResult EnergyDecayingIntegrator::Step(const State& start, double h, State* e
     const double tol = judging_dissipation ? kDissipationJudgedAt : model_.solver().tol;
     result.newton = SolveNewton(
         model_, system_, tol, model_.solver().max_iterations, NoiseFloor(model_, start),
-        [&](int iteration, bool with_tangent) -> const StepContext& {
+        [&](int, bool with_tangent) -> const StepContext& {
           // The first tangent assembled in a step leaves out the geometric stiffness of constraint forces and
           // loads (O(h^2) against inertia) and of beam section forces (spurious at the predictor); one
           // assembled because that one converged slowly includes it.
           tangents += with_tangent ? 1 : 0;
           builder_.set_geometric_stiffness(with_tangent && tangents > 1);
-          builder_.set_variable_dissipation(coefficients.variables);
-          builder_.set_element_dissipation(coefficients.elements);
-          const StepContext& ctx = builder_.Dynamic(start, unknowns, h, coefficients.nodes);
-          // Every iterate after the first is judged: a term that would gain energy is dropped there, and the solve
-          // goes on, instead of being found at convergence and solved for again (docs/theory.md, "Newton
-          // iteration"). The first iterate of a step is its predictor, whose velocity change is the lagged one.
-          if (iteration == 1 || !DropEnergyGainingDissipation(start, h, &coefficients)) return ctx;
-          dissipation_revised = true;
           builder_.set_variable_dissipation(coefficients.variables);
           builder_.set_element_dissipation(coefficients.elements);
           return builder_.Dynamic(start, unknowns, h, coefficients.nodes);
@@ -222,8 +213,7 @@ StepResult EnergyDecayingIntegrator::Step(const State& start, double h, State* e
           return (unknowns.head(n_kinematic) - coasting).cwiseAbs().maxCoeff() + h * h * kAccelerationFloor;
         },
         NewtonOptions{first_solve ? earlier_tangent : system_->factorisation_key() == h, judging_dissipation,
-                      judging_dissipation ? ExpectedJudgingContraction() : std::numeric_limits<double>::quiet_NaN(),
-                      &dissipation_revised});
+                      judging_dissipation ? ExpectedJudgingContraction() : std::numeric_limits<double>::quiet_NaN()});
     if (judging_dissipation) {
       // A solve that stopped on the expectation measured no rate: the expectation ages by the same power at each
       // use until a solve measures the rate again (NaN stays NaN).

@@ -71,12 +71,6 @@ NewtonReport SolveNewton(const Model& model, SparseSystem* system, double tol, i
     report.iterations = iteration;
     report.tangents += refresh ? 1 : 0;
     system->Assemble(evaluate(iteration, refresh), refresh);
-    if (options.equations_revised != nullptr && *options.equations_revised) {
-      // The residual is of new equations: the increments before it measure no contraction of these.
-      *options.equations_revised = false;
-      previous_size = std::numeric_limits<double>::infinity();
-      tangent_from_earlier_step = false;
-    }
     const ResidualCheck check = CheckResidual(model, *system);
     report.force_residual = check.force;
     report.constraint_residual = check.constraint;
