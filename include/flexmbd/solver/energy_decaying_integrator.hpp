@@ -43,11 +43,14 @@ class EnergyDecayingIntegrator : public TimeIntegrator {
     std::vector<double> elements;  ///< by Element::index(): elements that dissipate on their own stretch
     bool any() const;              ///< some coefficient is nonzero
   };
-  // Chosen before the step from the previous steps' accelerations.
+  // Chosen before the step from the previous steps' accelerations and the last step's element checks.
   Coefficients Choose(const State& start) const;
   // Turns off the dissipation of nodes, variables and elements whose converged step would gain energy; true if
   // any was.
   bool DropEnergyGainingDissipation(const State& start, double h, Coefficients* c) const;
+  // Records, at the converged step whose context the builder holds with coefficients `c`, which elements' own
+  // stretch dissipates with the scheme's term, whether or not the term was on.
+  void RecordElementDissipation(const Coefficients& c);
   Eigen::VectorXd Predict(const State& start, double h) const;
   // Asks every effect with modes whether the converged step contradicts its trial mode; true if any did.
   bool ReviseModes();
@@ -70,6 +73,10 @@ class EnergyDecayingIntegrator : public TimeIntegrator {
   std::vector<EffectState> modes_;  ///< trial modes of the step being solved
   TangentReuse tangent_reuse_;     ///< whether a step starts from the previous one's factorisation, learnt
   DissipationJudging judging_;      ///< when a step judges its dissipation terms, learnt from the steps taken
+  std::vector<double> elements_all_on_;  ///< by Element::index(): alpha_inf for elements with a stretch of their own
+  /// By Element::index(): whether the element's own stretch would have dissipated with the scheme's term over the
+  /// last converged step (true before any); a step starts the term on only there (Choose).
+  std::vector<bool> elements_dissipated_;
   /// theta / (1 - theta) of the last judging solve, or its expectation aged by one solve (NaN: none yet)
   double judging_contraction_factor_ = std::numeric_limits<double>::quiet_NaN();
 };

@@ -52,8 +52,13 @@ EnergyDecayingIntegrator::EnergyDecayingIntegrator(const Model& model, SparseSys
                      ? DissipationFromRhoInf(model.solver().rho_inf)
                      : 0.0),
       held_(model.modal_effects().size(), false),
-      node_inertia_(model.num_nodes(), Mat3::Identity()) {
+      node_inertia_(model.num_nodes(), Mat3::Identity()),
+      elements_all_on_(model.elements().size(), 0.0),
+      elements_dissipated_(model.elements().size(), true) {
   for (const RigidBody* body : model.rigid_bodies()) node_inertia_[body->node()] = body->inertia();
+  for (const auto& element : model.elements()) {
+    if (element->history_size() > 0) elements_all_on_[element->index()] = alpha_inf_;
+  }
 }
 
 bool EnergyDecayingIntegrator::Coefficients::any() const {
@@ -71,10 +76,11 @@ EnergyDecayingIntegrator::Coefficients EnergyDecayingIntegrator::Choose(const St
   c.variables.assign(model_.num_variables(), 0.0);
   c.elements.assign(model_.elements().size(), 0.0);
   if (alpha_inf_ == 0.0 || start.history_steps < 1) return c;
-  // Elements with a stretch of their own (beams) start with it on; the check after convergence turns it off
-  // where it would gain energy.
+  // Elements with a stretch of their own (beams) start with it on where it dissipated over the last converged
+  // step, as the nodes below (their rule is the previous step's check); the check after convergence turns it
+  // off where it would gain energy.
   for (const auto& element : model_.elements()) {
-    if (element->history_size() > 0) c.elements[element->index()] = alpha_inf_;
+    if (elements_dissipated_[element->index()]) c.elements[element->index()] = elements_all_on_[element->index()];
   }
   const double ratio = start.history_steps >= 2 ? 1.0 : 0.0;  // no a_prev2 before the second step
   for (int k = 0; k < model_.num_nodes(); ++k) {
@@ -117,6 +123,18 @@ bool EnergyDecayingIntegrator::DropEnergyGainingDissipation(const State& start, 
     drop_unless(work.numerical >= 0.0, &c->elements[element->index()]);
   }
   return dropped;
+}
+
+void EnergyDecayingIntegrator::RecordElementDissipation(const Coefficients& c) {
+  // The sign of an element's term does not depend on its coefficient: every such element is judged with it on.
+  builder_.set_element_dissipation(elements_all_on_);
+  for (const auto& element : model_.elements()) {
+    if (element->history_size() == 0) continue;
+    StepWork work;
+    element->AddStepWork(builder_.context(), &work);
+    elements_dissipated_[element->index()] = work.numerical >= 0.0;
+  }
+  builder_.set_element_dissipation(c.elements);
 }
 
 Eigen::VectorXd EnergyDecayingIntegrator::Predict(const State& start, double h) const {
@@ -238,6 +256,7 @@ StepResult EnergyDecayingIntegrator::Step(const State& start, double h, State* e
     }
   }
   if (choice_matters) judging_.Record(early, iterations);
+  if (alpha_inf_ != 0.0 && start.history_steps >= 1) RecordElementDissipation(coefficients);
   Commit(start, unknowns, h, coefficients.nodes, end);
   CommitEffects(end, &result.limit);
   // The accelerations of a step whose modes changed with a jump (an impact, a stick-slip transition) say nothing
