@@ -12,7 +12,9 @@ namespace flexmbd {
 namespace io {
 namespace {
 const std::vector<std::string> kAeroKeys = {"sections", "strips", "free_stream", "density", "gust"};
-const std::vector<std::string> kStripKeys = {"beam", "semichord", "a", "chord_axis", "normal_axis", "inflow_states"};
+const std::vector<std::string> kStripKeys = {"beam",        "semichord",     "a",   "chord_axis",
+                                             "normal_axis", "inflow_states", "flap"};
+const std::vector<std::string> kFlapKeys = {"beam", "c"};
 const std::vector<std::string> kGustKeys = {"velocity", "scale"};
 // Chord and normal axes count as perpendicular (to each other and to the beam axis) when their cosines are below
 // this: axes written to six figures are.
@@ -68,6 +70,17 @@ AeroSectionSpec ReadSection(const Field& entry, const std::string& name, const U
   return section;
 }
 
+// The name of a beam (a link under beams:).
+std::string ReadBeamName(const Field& field, const UrdfModel& model) {
+  const std::string name = ReadString(field, "the name of a beam (a link under beams:)");
+  std::vector<std::string> beams;
+  for (const BeamSpec& spec : model.spec.beams) beams.push_back(spec.name);
+  if (std::find(beams.begin(), beams.end(), name) == beams.end()) {
+    field.Fail(NotFoundMessage("beam", "beams", name, model.name, beams));
+  }
+  return name;
+}
+
 // A unit axis in the beam's section frame (x along the beam), perpendicular to the beam; normalised.
 Vec3 ReadSectionAxis(const Field& field, const std::string& what) {
   const Vec3 axis = ReadVec3(field, Quantity{what, Bound::kAny, ""});
@@ -85,13 +98,7 @@ AeroStripSpec ReadStrip(const Field& entry, const std::string& name, const UrdfM
   for (const char* key : {"beam", "semichord", "a"}) {
     RequireKey(entry, key, "the strip's " + std::string(key) + " (docs/config.md, \"aero\")");
   }
-  const Field beam = entry.Child("beam");
-  strip.beam = ReadString(beam, "the name of a beam (a link under beams:)");
-  std::vector<std::string> beams;
-  for (const BeamSpec& spec : model.spec.beams) beams.push_back(spec.name);
-  if (std::find(beams.begin(), beams.end(), strip.beam) == beams.end()) {
-    beam.Fail(NotFoundMessage("beam", "beams", strip.beam, model.name, beams));
-  }
+  strip.beam = ReadBeamName(entry.Child("beam"), model);
   strip.semichord = ReadNumber(entry.Child("semichord"), Quantity{"a semichord", Bound::kPositive, "m"});
   strip.a = ReadChordPosition(entry.Child("a"), "the elastic axis (beam axis) a");
   if (entry.Child("chord_axis").present()) {
@@ -106,6 +113,18 @@ AeroStripSpec ReadStrip(const Field& entry, const std::string& name, const UrdfM
                "right angles in the section frame");
   }
   ReadInflowStates(entry, &strip.inflow_states);
+  const Field flap = entry.Child("flap");
+  if (flap.present()) {
+    CheckKeys(flap, kFlapKeys);
+    for (const char* key : {"beam", "c"}) {
+      RequireKey(flap, key, "the flap's " + std::string(key) + " (docs/config.md, \"aero\")");
+    }
+    strip.flap.beam = ReadBeamName(flap.Child("beam"), model);
+    if (strip.flap.beam == strip.beam) {
+      flap.Child("beam").Fail(flap.Child("beam").Text() + " carries the strips; expected the control surface's beam");
+    }
+    strip.flap.c = ReadChordPosition(flap.Child("c"), "the flap hinge c");
+  }
   return strip;
 }
 
@@ -139,10 +158,16 @@ void ReadAero(const Field& aero, UrdfModel* model) {
 }
 
 void CheckAirspeedSweep(const Field& root, const ModelSpec& spec) {
-  if (spec.solver.eigen.sweep_airspeed.empty() || !spec.aero_sections.empty()) return;
-  root.Child("solver").Child("eigen").Child("sweep").Child("airspeed").Fail(
-      "sweeps the free-stream speed of the aero sections, but there are none; expected aero.sections (docs/config.md, "
-      "\"aero\") or a sweep of velocity_scale");
+  if (spec.solver.eigen.sweep_airspeed.empty()) return;
+  const Field sweep = root.Child("solver").Child("eigen").Child("sweep").Child("airspeed");
+  if (spec.aero_sections.empty() && spec.aero_strips.empty()) {
+    sweep.Fail("sweeps the free-stream speed of the aero sections and strips, but there are none; expected "
+               "aero.sections or aero.strips (docs/config.md, \"aero\") or a sweep of velocity_scale");
+  }
+  if (!spec.aero_strips.empty() && !(spec.aero_flow.free_stream.norm() > 0.0)) {
+    sweep.Fail("sweeps the strips' free-stream speed along aero.free_stream, which is zero; expected "
+               "aero.free_stream to give the stream's direction");
+  }
 }
 
 }  // namespace io

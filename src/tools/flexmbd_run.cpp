@@ -197,13 +197,16 @@ void WriteFanPlotCsv(const std::string& path, const std::string& table) {
 // issue asks, so that the middle of the bracket is within 0.005%.
 constexpr double kFlutterTolerance = 1.0e-4;
 
-// solver.eigen.sweep.airspeed: a fan plot over the free-stream speed of every aero section, each speed about
-// its own initial state or static aeroelastic equilibrium, then where a mode's damping ratio changes sign.
+// solver.eigen.sweep.airspeed: a fan plot over the free-stream speed of every aero section and of the strips'
+// stream (along its own direction), each speed about its own initial state or static aeroelastic equilibrium,
+// then where a mode's damping ratio changes sign.
 void RunAirspeedSweep(const flexmbd::ModelSpec& spec, const flexmbd::EigenOptions& options) {
   const flexmbd::SolverSpec::EigenSettings& settings = spec.solver.eigen;
+  const flexmbd::Vec3 stream = spec.aero_flow.free_stream.normalized();  // zero without strips
   const auto case_at = [&](double speed) {
     flexmbd::ModelSpec at = spec;
     for (flexmbd::AeroSectionSpec& section : at.aero_sections) section.velocity = speed;
+    at.aero_flow.free_stream = speed * stream;
     flexmbd::Model model = flexmbd::BuildModel(at);
     flexmbd::State state = LinearisationState(model);
     return flexmbd::SweepCase{std::move(model), std::move(state)};

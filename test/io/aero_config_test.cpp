@@ -135,8 +135,8 @@ TEST(AeroConfig, BadAirspeedSweepIsRejected) {
 
 TEST(AeroConfig, AirspeedSweepWithoutSectionsIsRejected) {
   EXPECT_CONFIG_ERROR(test::LoadInline(ConnerUrdf(), "solver: {analysis: eigen, eigen: {sweep: {airspeed: [10]}}}"),
-                      "test.yaml: solver.eigen.sweep.airspeed: sweeps the free-stream speed of the aero sections, but "
-                      "there are none; expected aero.sections");
+                      "test.yaml: solver.eigen.sweep.airspeed: sweeps the free-stream speed of the aero sections and "
+                      "strips, but there are none; expected aero.sections or aero.strips");
 }
 
 }  // namespace

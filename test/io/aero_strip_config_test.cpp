@@ -1,6 +1,7 @@
 // `aero.strips`, `aero.free_stream`, `aero.density`, `aero.gust` (src/io/yaml_aero.cpp, docs/config.md "aero"):
 // strips read from YAML with their defaults, one strip element per beam node, and the messages of bad input.
-// Reference: the values written in the inline documents below and config/goland_wing/goland_wing.urdf.
+// Reference: the values written in the inline documents below, config/goland_wing/goland_wing.urdf and
+// config/wing_aileron (the strips' flap).
 
 #include <gtest/gtest.h>
 
@@ -107,6 +108,57 @@ TEST(AeroConfig, StripNonphysicalValuesAreRejected) {
                       "test.yaml: aero.strips.wing_strips.inflow_states: 11 is too many; expected 0 <= inflow_states <= 10");
   EXPECT_CONFIG_ERROR(Load("density: -1"), "test.yaml: aero.density: -1 is negative; expected an air density > 0 [kg/m^3]");
   EXPECT_CONFIG_ERROR(Load("free_stream: [0, 100]"), "test.yaml: aero.free_stream:");
+}
+
+std::string ReadFile(const std::string& path) {
+  std::ifstream in(std::string(FLEXMBD_SOURCE_DIR) + path);
+  return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+}
+
+// config/wing_aileron/flutter_eigen.yaml with its strip's flap written as `flap`.
+ModelSpec LoadWingAileron(const std::string& flap) {
+  std::string yaml = ReadFile("/config/wing_aileron/flutter_eigen.yaml");
+  const std::string written = "flap: {beam: aileron, c: 0.5}";
+  yaml.replace(yaml.find(written), written.size(), "flap: {" + flap + "}");
+  return test::LoadInline(ReadFile("/config/wing_aileron/wing_aileron.urdf"), yaml);
+}
+
+TEST(AeroConfig, StripFlapTakesTheAileronNodesAtItsStations) {
+  const ModelSpec spec = LoadWingAileron("beam: aileron, c: 0.5");
+  EXPECT_EQ(spec.aero_strips.at(0).flap.beam, "aileron");
+  EXPECT_EQ(spec.aero_strips.at(0).flap.c, 0.5);
+  // The aileron's seven nodes stand at the wing's nodes 9 to 15 (10 ft to 16.67 ft of 20 ft, 18 node spacings):
+  // those strips couple the two nodes' unknowns (12) to their six states.
+  const Model model = BuildModel(spec);
+  ASSERT_EQ(model.aero_strips().size(), 19u);
+  for (int k = 0; k < 19; ++k) {
+    EXPECT_EQ(model.aero_strips()[k]->num_local(), (k >= 9 && k <= 15 ? 12 : 6) + 6) << "strip " << k;
+  }
+}
+
+TEST(AeroConfig, StripFlapBadKeysAreRejected) {
+  EXPECT_CONFIG_ERROR(LoadWingAileron("beam: aileron"), "test.yaml: aero.strips.wing.flap: missing key 'c'");
+  EXPECT_CONFIG_ERROR(LoadWingAileron("beam: aileron, c: 0.5, chord: 0.2"),
+                      "test.yaml: aero.strips.wing.flap.chord: unknown key");
+  EXPECT_CONFIG_ERROR(LoadWingAileron("beam: flap, c: 0.5"),
+                      "test.yaml: aero.strips.wing.flap.beam: no beam 'flap' in test.urdf");
+  EXPECT_CONFIG_ERROR(LoadWingAileron("beam: wing, c: 0.5"),
+                      "test.yaml: aero.strips.wing.flap.beam: wing carries the strips; expected the control surface's beam");
+  EXPECT_CONFIG_ERROR(LoadWingAileron("beam: aileron, c: 1.0"),
+                      "test.yaml: aero.strips.wing.flap.c: 1.0 is off the chord; expected the flap hinge c with -1 < value < 1");
+}
+
+TEST(AeroConfig, StripFlapOffTheHingeLineIsRejectedAtBuild) {
+  // c = 0.4 puts the hinge line 0.9144 (0.4 + 1/3) = 0.6706 m aft of the axis; the aileron stands 0.762 m aft.
+  EXPECT_CONFIG_ERROR(BuildModel(LoadWingAileron("beam: aileron, c: 0.4")),
+                      "m above the axis of 'wing'; expected it on the hinge line, b (c - a) = 0.670560 m aft");
+}
+
+TEST(AeroConfig, StripAirspeedSweepNeedsTheStreamsDirection) {
+  EXPECT_CONFIG_ERROR(test::LoadInline(GolandUrdf(), kBeam + "aero: {strips: {wing_strips: {" + kValid +
+                                                         "}}}\nsolver: {analysis: eigen, eigen: {sweep: {airspeed: [10]}}}"),
+                      "test.yaml: solver.eigen.sweep.airspeed: sweeps the strips' free-stream speed along "
+                      "aero.free_stream, which is zero; expected aero.free_stream to give the stream's direction");
 }
 
 }  // namespace

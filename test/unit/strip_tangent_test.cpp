@@ -1,6 +1,7 @@
 // The beam strip's analytic tangent (docs/theory.md, (A7)-(A9)) against central differences of its residual: the
 // whole scheme tangent of a mid-step (energy-decaying) step, and at the end point its stiffness part and its
-// rate parts; on a Goland wing strip moving in every direction, in a gust.
+// rate parts; on a Goland wing strip moving in every direction, in a gust, and on a strip of the wing with
+// aileron whose flap is the aileron's node at its station (A10).
 
 #include <gtest/gtest.h>
 
@@ -26,9 +27,8 @@ struct Strip {
   State start;
 };
 
-Strip GolandStrip() {
-  const std::string dir = std::string(FLEXMBD_SOURCE_DIR) + "/config/goland_wing/";
-  ModelSpec spec = LoadModelSpec(dir + "goland_wing.urdf", dir + "flutter_below.yaml");
+// Every node turned and moving at random, the states and their rates nonzero: the strip at `index`.
+Strip Shaken(ModelSpec spec, int index) {
   spec.aero_strips.at(0).inflow_states = 4;
   // A steady gust across the span axis too, so that every component of the relative air velocity is nonzero.
   spec.aero_flow.gust = Vec3(3.0, -4.0, 5.0);
@@ -37,7 +37,7 @@ Strip GolandStrip() {
   spec.aero_flow.gust_scale.amplitude = 1.0;
   spec.aero_flow.gust_scale.frequency = 2.0;
   Strip s{BuildModel(spec), nullptr, State()};
-  s.element = s.model.aero_strips().at(5);
+  s.element = s.model.aero_strips().at(index);
   s.start = s.model.initial_state();
   test::Random random(7);
   for (NodeState& n : s.start.nodes) {
@@ -50,13 +50,20 @@ Strip GolandStrip() {
   return s;
 }
 
-TEST(StripTangent, MidStepSchemeTangentMatchesDifferences) {
-  const Strip s = GolandStrip();
-  test::ExpectMidStepTangentMatchesDifferences(s.model, *s.element, s.start, kStep, kTolerance);
+Strip GolandStrip() {
+  const std::string dir = std::string(FLEXMBD_SOURCE_DIR) + "/config/goland_wing/";
+  return Shaken(LoadModelSpec(dir + "goland_wing.urdf", dir + "flutter_below.yaml"), 5);
 }
 
-TEST(StripTangent, EndPointStiffnessAndRatePartsMatchDifferences) {
-  const Strip s = GolandStrip();
+// The strip at the wing's node 12, whose flap is the aileron's node 3 (config/wing_aileron).
+Strip FlapStrip() {
+  const std::string dir = std::string(FLEXMBD_SOURCE_DIR) + "/config/wing_aileron/";
+  ModelSpec spec = LoadModelSpec(dir + "wing_aileron.urdf", dir + "flutter_sweep.yaml");
+  return Shaken(spec, 12);
+}
+
+// The end-point stiffness and rate parts of `s` against differences.
+void ExpectEndPointPartsMatchDifferences(const Strip& s) {
   StepContextBuilder builder(s.model);
   auto context = [&](const Eigen::VectorXd& u) -> const StepContext& {
     StepContext& ctx = builder.EndPoint(s.start, u, 0.3, 1.0e-3);
@@ -86,6 +93,25 @@ TEST(StripTangent, EndPointStiffnessAndRatePartsMatchDifferences) {
     EXPECT_LT(test::MaxAbs(analytic - differences), kTolerance * test::MaxAbs(differences))
         << (accelerations ? "M" : "D") << "\nanalytic\n" << analytic << "\ndifferences\n" << differences;
   }
+}
+
+TEST(StripTangent, MidStepSchemeTangentMatchesDifferences) {
+  const Strip s = GolandStrip();
+  test::ExpectMidStepTangentMatchesDifferences(s.model, *s.element, s.start, kStep, kTolerance);
+}
+
+TEST(StripTangent, EndPointStiffnessAndRatePartsMatchDifferences) { ExpectEndPointPartsMatchDifferences(GolandStrip()); }
+
+TEST(StripTangent, FlapMidStepSchemeTangentMatchesDifferences) {
+  const Strip s = FlapStrip();
+  ASSERT_EQ(s.element->num_local(), 12 + 4);
+  test::ExpectMidStepTangentMatchesDifferences(s.model, *s.element, s.start, kStep, kTolerance);
+}
+
+TEST(StripTangent, FlapEndPointStiffnessAndRatePartsMatchDifferences) {
+  const Strip s = FlapStrip();
+  ASSERT_EQ(s.element->num_local(), 12 + 4);
+  ExpectEndPointPartsMatchDifferences(s);
 }
 
 }  // namespace

@@ -10,6 +10,7 @@
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <vector>
 
 namespace flexmbd {
 namespace test {
@@ -67,6 +68,28 @@ inline double TableFrequency(const std::string& table, int index) { return ModeR
 
 // The table prints 8 significant digits.
 constexpr double kPrintedTolerance = 1.0e-7;
+
+/// A change of stability an airspeed sweep reports: `flexmbd_run: <kind>: mode <k> at U = <speed> m/s (<f> Hz)`.
+struct Crossing {
+  std::string kind;  ///< flutter, divergence or stable again
+  double speed = std::nan(""), frequency_hz = std::nan("");
+};
+
+/// Every change of stability in the runner's output, flutter lines first, then divergence, then stable again.
+inline std::vector<Crossing> RunnerCrossings(const std::string& output) {
+  std::vector<Crossing> crossings;
+  for (const char* kind : {"flutter", "divergence", "stable again"}) {
+    const std::string prefix = std::string("flexmbd_run: ") + kind + ": mode ";
+    for (size_t at = output.find(prefix); at != std::string::npos; at = output.find(prefix, at + 1)) {
+      Crossing c;
+      c.kind = kind;
+      int mode = 0;
+      std::sscanf(output.c_str() + at + prefix.size(), "%d at U = %lf m/s (%lf Hz)", &mode, &c.speed, &c.frequency_hz);
+      crossings.push_back(c);
+    }
+  }
+  return crossings;
+}
 
 }  // namespace test
 }  // namespace flexmbd

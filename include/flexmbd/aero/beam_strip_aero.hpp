@@ -1,26 +1,38 @@
 #pragma once
 /// @file
-/// One strip of thin-airfoil loads on a beam node (docs/theory.md, (A7)-(A9)): the air's velocity relative to
+/// One strip of thin-airfoil loads on a beam node (docs/theory.md, (A7)-(A10)): the air's velocity relative to
 /// the node, resolved in the node's section frame, gives the chordwise speed u, the normal velocity v and the
 /// pitch rate of the strip (the spanwise component is dropped: strip theory); Theodorsen's lift and moment about
 /// the beam axis (the elastic axis) in their general form, with Peters' inflow states of the strip's own, act on
-/// the node over the node's lumped length.
+/// the node over the node's lumped length. A strip may carry a trailing-edge flap: the rotation of a node of
+/// another beam (the control surface) relative to the strip's node about the pitch axis (A10); the flap's terms
+/// join the lift and moment, and the hinge moment acts on the two nodes, equal and opposite.
 
 #include <string>
 
 #include "flexmbd/aero/peters_inflow.hpp"
+#include "flexmbd/aero/thin_airfoil_loads.hpp"
 #include "flexmbd/aero/typical_section_aero.hpp"
 #include "flexmbd/elements/element.hpp"
 #include "flexmbd/model/model_spec.hpp"
 
 namespace flexmbd {
 
+/// The flap of one strip: the control surface's node at the strip's span station.
+struct StripFlap {
+  int node = -1;          ///< the control surface's node (-1: no flap)
+  int node_unknown = -1;  ///< its first unknown
+  double fraction = 0.0;  ///< share of the strip's length the flap spans, 0 < fraction <= 1
+  Mat3 R_rest = Mat3::Identity();  ///< the strip node's frame in the flap node's at rest: R_flap^T R_strip
+};
+
 class BeamStripAero : public Element {
  public:
   /// @param node the beam node; its unknowns start at node_unknown. @param length the strip's span [m].
-  /// @param first_state_unknown the unknown of the strip's first inflow state.
+  /// @param first_state_unknown the unknown of the strip's first inflow state. @param flap the flap, if any
+  /// (spec.flap.c its hinge).
   BeamStripAero(const AeroStripSpec& spec, const AeroFlowSpec& flow, int node, int node_unknown, double length,
-                int first_state_unknown);
+                int first_state_unknown, const StripFlap& flap = StripFlap());
 
   int num_states() const override { return inflow_.b.size(); }
   double StateScale(int) const override { return scale_; }
@@ -32,32 +44,55 @@ class BeamStripAero : public Element {
   void AddTangent(const StepContext& ctx, Eigen::Ref<Eigen::MatrixXd> J) const override;
   bool HasRateParts(AnalysisMode mode) const override { return mode != AnalysisMode::kStatic; }
   void AddRateParts(const StepContext& ctx, Eigen::Ref<Eigen::MatrixXd> D, Eigen::Ref<Eigen::MatrixXd> M) const override;
-  /// The air's work on the node over a step: external work.
+  /// The air's work on the node (and the flap's node) over a step: external work.
   void AddStepWork(const StepContext& ctx, StepWork* work) const override;
 
-  /// Lift [N] along the chord normal and moment [N m] nose up about the beam axis, over the strip, at ctx.
-  Eigen::Vector2d StripLoads(const StepContext& ctx) const;
+  /// Lift [N] along the chord normal, moment [N m] nose up about the beam axis and hinge moment [N m] trailing
+  /// edge down (zero without a flap), over the strip, at ctx.
+  Vec3 StripLoads(const StepContext& ctx) const;
+  /// The flap's deflection [rad] (trailing edge down) at ctx; zero without a flap.
+  double FlapAngle(const StepContext& ctx) const;
 
  private:
   using States = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, kMaxInflowStates, 1>;
+  // Rows of what the strip computes: lift, moment, hinge moment (per unit span), then the decay terms of the
+  // inflow equations (u/b)(mu_i + lag_i w34).
+  static constexpr int kMaxRows = 3 + kMaxInflowStates;
+  using Rows = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, kMaxRows, 1>;
+  using RowGradient = Eigen::Matrix<double, Eigen::Dynamic, 3, 0, kMaxRows, 3>;
   // What the loads read at ctx: the section frame, the air's velocity relative to the node in it (V), the
-  // node's angular velocity (w) and the rates of both (Vdot, wdot) in the section frame, the inflow states.
+  // node's angular velocity (w) and the rates of both (Vdot, wdot) in the section frame, the inflow states; with
+  // a flap, the flap node's frame and angular velocity and rate (in its frame).
   struct Motion {
     Mat3 R, turn;  // section frame in W; its change per unit rotation increment
     Vec3 V, w, Vdot, wdot;
+    Mat3 R_flap, turn_flap;
+    Vec3 w_flap, wdot_flap;
     States mu, mu_rate;
   };
-  // The loads and their gradients with respect to V, w, Vdot, wdot (section frame) and mu.
+  // The flap's deflection, its rate and acceleration, and the deflection's gradients by the rotation increments.
+  struct Flap {
+    Vec3 delta = Vec3::Zero();  // angle, rate, acceleration
+    Eigen::Matrix<double, 1, 3> d_node = Eigen::Matrix<double, 1, 3>::Zero(), d_flap = d_node;
+  };
+  // The rows and their gradients with respect to V, w, Vdot, wdot (section frame), the flap's (angle, rate,
+  // acceleration) and mu.
   struct Loads {
-    double u = 0, w34 = 0, lift = 0, moment = 0;
-    Eigen::Matrix<double, 1, 3> du_dV, dw34_dV, dw34_dw;
-    Eigen::Matrix<double, 2, 3> dV, dw, dVdot, dwdot;  // rows: lift, moment
-    Eigen::Matrix<double, 2, Eigen::Dynamic, 0, 2, kMaxInflowStates> dmu;
+    double u = 0, w34 = 0;
+    Eigen::Matrix<double, 1, 3> dw34_dV, dw34_dw, dw34_dflap;
+    Rows y;
+    RowGradient dV, dw, dVdot, dwdot, dflap;
+    Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, kMaxRows, kMaxInflowStates> dmu;
   };
   Motion MotionAt(const StepContext& ctx) const;
-  Loads Compute(const Motion& m) const;
-  // The forces on the node's unknowns: [force in W; moment in the section frame] over the strip.
-  Vec6 NodeForces(const Motion& m, const Loads& loads) const;
+  Flap FlapOf(const Motion& m) const;
+  Loads Compute(const Motion& m, const Flap& f) const;
+  // The lift, moment and hinge moment's (per unit span) flap terms (A10).
+  void AddFlapTerms(const Motion& m, const Flap& f, Loads* out) const;
+  // The map from (lift, moment, hinge) over the strip to the forces on the local node unknowns (rows).
+  Eigen::Matrix<double, 12, 3> ForceMap(const Motion& m) const;
+  int num_node_unknowns() const { return has_flap() ? 12 : 6; }
+  bool has_flap() const { return flap_.node >= 0; }
 
   std::string name_;
   int node_;
@@ -69,6 +104,9 @@ class BeamStripAero : public Element {
   Eigen::VectorXd lag_;  ///< Abar^-1 cbar: lambda - mu per unit w34
   double lag0_ = 0;      ///< bbar^T Abar^-1 cbar / 2: lambda0 - bbar^T mu / 2 per unit w34
   double scale_;         ///< size of the states [m/s]
+  StripFlap flap_;
+  ThinAirfoilLoads flap_loads_;  ///< the section's generalised loads with the flap's hinge (A4), (A5)
+  Vec3 flap_chord_, flap_pitch_axis_;  ///< chord and pitch axes in the flap node's frame
 };
 
 }  // namespace flexmbd

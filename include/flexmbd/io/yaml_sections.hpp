@@ -63,7 +63,8 @@ void ReadLoads(const Field& loads, const UrdfModel& model, std::vector<LoadSpec>
 /// thin-airfoil loads, and the free stream, density and gust the strips move in (beams read first).
 void ReadAero(const Field& aero, UrdfModel* model);
 
-/// Fails at solver.eigen.sweep.airspeed if it is given and the model has no aero sections to blow on.
+/// Fails at solver.eigen.sweep.airspeed if it is given and the model has no aero sections or strips to blow on, or
+/// strips without the free stream's direction.
 void CheckAirspeedSweep(const Field& root, const ModelSpec& spec);
 
 /// A time function: `law` (required) and the keys that law takes. Values are in `unit` (SI; "" for a plain

@@ -274,6 +274,12 @@ struct AeroStripSpec {
   Vec3 chord_axis = Vec3::UnitY();        ///< unit vector from leading to trailing edge, in the section frame
   Vec3 normal_axis = Vec3::UnitZ();       ///< unit normal of the chord (the lift direction), in the section frame
   int inflow_states = 6;                  ///< Peters' induced-flow states N per strip (0: quasi-steady)
+  /// The trailing-edge flap (docs/theory.md, (A10)): a beam along the hinge line whose nodes stand at some of
+  /// the strips' stations; empty beam: no flap.
+  struct Flap {
+    std::string beam;  ///< the control surface's beam
+    double c = 0.0;    ///< the hinge at c b aft of mid-chord, a < c < 1
+  } flap;
 };
 
 /// The air the strips move in (docs/config.md, "aero").

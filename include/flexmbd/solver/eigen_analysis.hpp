@@ -68,6 +68,8 @@ struct EigenResult {
   int num_kinematic = 0;    ///< node and variable unknowns
   int num_dof = 0;          ///< degrees of freedom left after removing the independent constraints
   int num_rigid_body = 0;   ///< rigid-body modes among all (dense) or among those found (sparse)
+  int num_states = 0;       ///< element states among the num_kinematic, the last entries of each shape (theory (E7))
+  double frequency_scale_hz = 0.0;  ///< the largest root's |s| / 2 pi, against which round-off is judged (theory (E5)) [Hz]
   bool symmetric = false;   ///< solved as an undamped symmetric problem (no damping, no gyroscopic terms)
   std::string method;       ///< "dense" or "sparse shift-invert"
 };
@@ -130,8 +132,9 @@ std::vector<SweepPoint> EigenSweep(const std::vector<double>& parameters,
                                    const std::function<SweepCase(double)>& case_at, const EigenOptions& options);
 
 /// Reorders the modes of each point after the first so that mode k follows mode k of the previous point
-/// (largest modal assurance criterion |x_a^H x_b|^2 / (|x_a|^2 |x_b|^2), assigned greedily), so that a
-/// fan plot's lines cross instead of swapping. Points whose shapes have another size are left as they are.
+/// (largest modal assurance criterion |x_a^H x_b|^2 / (|x_a|^2 |x_b|^2) over the node and joint unknowns, not the
+/// element states, assigned greedily), so that a fan plot's lines cross instead of swapping. Points whose shapes
+/// have another size are left as they are.
 void TrackModes(std::vector<SweepPoint>* points);
 
 /// True for a mode growing in time: a damping ratio below the round-off of an undamped root (rigid-body modes are

@@ -1,23 +1,83 @@
 #include "aero_strip_builder.hpp"
 
+#include <algorithm>
+#include <cmath>
+
 #include "flexmbd/common/error.hpp"
 
 namespace flexmbd {
+namespace {
+// A flap node stands at a strip's station when their distance along the strip's beam axis is below this share of
+// the beam's length, and on the hinge line when its offset from the line b (c - a) aft of the axis along the chord
+// is below this share of the semichord: positions written to six figures are.
+constexpr double kSameStation = 1.0e-6, kOnHinge = 1.0e-3;
 
-const BeamInfo& StripBeam(const Model& model, const std::string& prefix, const AeroStripSpec& strip) {
+const BeamInfo& FindBeam(const Model& model, const std::string& name, const std::string& field) {
   std::string names;
   for (const BeamInfo& beam : model.beams()) {
-    if (beam.name == strip.beam) return beam;
+    if (beam.name == name) return beam;
     names += (names.empty() ? "" : ", ") + beam.name;
   }
-  throw ConfigError(prefix + "aero.strips." + strip.name + ".beam: no beam '" + strip.beam +
-                    "'; expected a link under beams: (" + (names.empty() ? "there are none" : names) + ")");
+  throw ConfigError(field + ": no beam '" + name + "'; expected a link under beams: (" +
+                    (names.empty() ? "there are none" : names) + ")");
+}
+
+// The flap of each strip of `beam` (docs/theory.md, (A10)): the flap beam's node at the strip's station, over the
+// share of the strip's length that the flap node's lumped length covers.
+std::vector<StripFlap> StripFlaps(const Model& model, const std::string& prefix, const AeroStripSpec& strip,
+                                  const BeamInfo& beam) {
+  std::vector<StripFlap> flaps(beam.nodes.size());
+  if (strip.flap.beam.empty()) return flaps;
+  const std::string field = prefix + "aero.strips." + strip.name + ".flap.beam";
+  const BeamInfo& flap = FindBeam(model, strip.flap.beam, field);
+  if (&flap == &beam) throw ConfigError(field + ": '" + flap.name + "' is the strips' own beam; expected another beam");
+  const std::vector<NodeState>& nodes = model.initial_state().nodes;
+  const double hinge = strip.semichord * (strip.flap.c - strip.a);
+  for (size_t j = 0; j < flap.nodes.size(); ++j) {
+    const NodeState& at = nodes[flap.nodes[j]];
+    size_t k = 0;
+    double nearest = INFINITY;
+    for (size_t i = 0; i < beam.nodes.size(); ++i) {
+      const NodeState& n = nodes[beam.nodes[i]];
+      const double along = std::abs((at.x - n.x).dot(n.R.col(0)));
+      if (along < nearest) nearest = along, k = i;
+    }
+    const NodeState& n = nodes[beam.nodes[k]];
+    const Vec3 offset = n.R.transpose() * (at.x - n.x);
+    if (nearest > kSameStation * beam.stations.back()) {
+      throw ConfigError(field + ": node " + std::to_string(j) + " of '" + flap.name + "' is " +
+                        std::to_string(nearest) + " m along the span from the nearest node of '" + beam.name +
+                        "'; expected the flap beam's nodes at stations of the strips' nodes");
+    }
+    if (std::abs(offset.dot(strip.chord_axis) - hinge) > kOnHinge * strip.semichord ||
+        std::abs(offset.dot(strip.normal_axis)) > kOnHinge * strip.semichord) {
+      throw ConfigError(field + ": node " + std::to_string(j) + " of '" + flap.name + "' stands " +
+                        std::to_string(offset.dot(strip.chord_axis)) + " m aft of and " +
+                        std::to_string(offset.dot(strip.normal_axis)) + " m above the axis of '" + beam.name +
+                        "'; expected it on the hinge line, b (c - a) = " + std::to_string(hinge) + " m aft");
+    }
+    if (flaps[k].node >= 0) {
+      throw ConfigError(field + ": two nodes of '" + flap.name + "' stand at node " + std::to_string(k) + " of '" +
+                        beam.name + "'; expected one flap node per strip");
+    }
+    flaps[k].node = flap.nodes[j];
+    flaps[k].node_unknown = model.node_unknown(flap.nodes[j]);
+    flaps[k].fraction = std::min(1.0, flap.lumped_lengths[j] / beam.lumped_lengths[k]);
+    flaps[k].R_rest = at.R.transpose() * n.R;
+  }
+  return flaps;
+}
+}  // namespace
+
+const BeamInfo& StripBeam(const Model& model, const std::string& prefix, const AeroStripSpec& strip) {
+  return FindBeam(model, strip.beam, prefix + "aero.strips." + strip.name + ".beam");
 }
 
 std::vector<std::unique_ptr<BeamStripAero>> MakeAeroStrips(const Model& model, const std::string& prefix,
                                                            const AeroStripSpec& strip, const AeroFlowSpec& flow,
                                                            int first_state) {
   const BeamInfo& beam = StripBeam(model, prefix, strip);
+  const std::vector<StripFlap> flaps = StripFlaps(model, prefix, strip, beam);
   std::vector<std::unique_ptr<BeamStripAero>> strips;
   for (size_t k = 0; k < beam.nodes.size(); ++k) {
     AeroStripSpec node_strip = strip;
@@ -25,7 +85,7 @@ std::vector<std::unique_ptr<BeamStripAero>> MakeAeroStrips(const Model& model, c
     const int state = first_state + static_cast<int>(k) * strip.inflow_states;
     strips.push_back(std::make_unique<BeamStripAero>(node_strip, flow, beam.nodes[k],
                                                      model.node_unknown(beam.nodes[k]), beam.lumped_lengths[k],
-                                                     model.element_state_unknown(state)));
+                                                     model.element_state_unknown(state), flaps[k]));
   }
   return strips;
 }

@@ -3,47 +3,65 @@
 #include "flexmbd/solver/damping_crossing.hpp"
 
 #include <cmath>
-#include <string>
 #include <utility>
-
-#include "flexmbd/common/error.hpp"
 
 namespace flexmbd {
 namespace {
 
-// `point` with its modes in the order of `from`'s (the lower end of the bracket), matched by shape.
-SweepPoint TrackedFrom(const SweepPoint& from, SweepPoint point) {
-  std::vector<SweepPoint> pair{from, std::move(point)};
-  TrackModes(&pair);
-  return std::move(pair[1]);
+// A mode grows, for the flutter search, when its damping ratio is below minus kRoundOffMargin and, in a model with
+// element states, its frequency is below kResolved of the frequency scale (theory (E9)). Undamped roots of the dense first-order solve with element
+// states (E7) come out with damping ratios of round-off size and either sign that drift with the speed, the more the
+// nearer the top of the spectrum: in the Goland wing's sweep -1.1e-9 at 1.9e4 Hz (0.16 of the scale) and below -1e-6
+// at 1.21e5 Hz (the scale), the beam's axial and shear roots. Flutter roots sit lower: 11 Hz there (1e-4 of the
+// scale), the Conner section's 6 Hz at 0.05 of its scale (its fastest inflow root). A flutter root's ratio changes by
+// ~5e-3 per m/s, so the margin moves the located speed by ~2e-4 m/s, 1.5e-6 of it: far inside the 1e-4 bracket.
+constexpr double kRoundOffMargin = 1.0e-6, kResolved = 0.1;
+
+bool Grows(const Mode& mode, const EigenResult& result) {
+  return !mode.rigid_body && mode.damping_ratio < -kRoundOffMargin &&
+         (result.num_states == 0 || mode.frequency_hz < kResolved * result.frequency_scale_hz);
 }
 
-DampingCrossing Bisect(SweepPoint lower, SweepPoint upper, int k, const std::function<EigenResult(double)>& analyse,
-                       double relative_tolerance) {
-  const bool unstable_below = Unstable(lower.result.modes[k]);
-  Mode upper_mode = upper.result.modes[k];
-  while (upper.parameter - lower.parameter > relative_tolerance * std::abs(upper.parameter)) {
-    const double p = 0.5 * (lower.parameter + upper.parameter);
-    SweepPoint middle = TrackedFrom(lower, SweepPoint{p, analyse(p)});
-    if (k >= static_cast<int>(middle.result.modes.size())) {
-      throw SolverError("the mode " + std::to_string(k + 1) + " changing stability between " +
-                        std::to_string(lower.parameter) + " and " + std::to_string(upper.parameter) +
-                        " is not among the modes found at " + std::to_string(p));
-    }
-    if (Unstable(middle.result.modes[k]) == unstable_below) {
-      lower = std::move(middle);
-    } else {
-      upper.parameter = p;
-      upper_mode = middle.result.modes[k];
+int CountGrowing(const EigenResult& result) {
+  int count = 0;
+  for (const Mode& mode : result.modes) count += Grows(mode, result) ? 1 : 0;
+  return count;
+}
+
+// The growing mode nearest the axis: the one that has just crossed it.
+int LeastGrowing(const EigenResult& result) {
+  int k = -1;
+  for (size_t i = 0; i < result.modes.size(); ++i) {
+    if (Grows(result.modes[i], result) && (k < 0 || result.modes[i].damping_ratio > result.modes[k].damping_ratio)) {
+      k = static_cast<int>(i);
     }
   }
+  return k;
+}
+
+// Bisects [lower, upper] on the number of growing modes, which differs at the two ends: no mode is followed
+// across the bracket, so modes that coalesce (whose shapes become alike near flutter) cannot be confused.
+DampingCrossing Bisect(SweepPoint lower, SweepPoint upper, const std::function<EigenResult(double)>& analyse,
+                       double relative_tolerance) {
+  const int below = CountGrowing(lower.result);
+  const SweepPoint sweep_lower = lower, sweep_upper = upper;
+  while (upper.parameter - lower.parameter > relative_tolerance * std::abs(upper.parameter)) {
+    const double p = 0.5 * (lower.parameter + upper.parameter);
+    SweepPoint middle{p, analyse(p)};
+    (CountGrowing(middle.result) == below ? lower : upper) = std::move(middle);
+  }
+  const bool destabilising = CountGrowing(upper.result) > below;
+  // The unstable end's modes in the order of the sweep's point on that side: the fan plot's columns.
+  std::vector<SweepPoint> pair{destabilising ? sweep_upper : sweep_lower, destabilising ? upper : lower};
+  TrackModes(&pair);
+  const EigenResult& unstable = pair[1].result;
   DampingCrossing crossing;
-  crossing.mode = k;
+  crossing.mode = LeastGrowing(unstable);
   crossing.parameter = 0.5 * (lower.parameter + upper.parameter);
-  const Mode& unstable = unstable_below ? lower.result.modes[k] : upper_mode;
-  crossing.frequency_hz = unstable.frequency_hz;
-  crossing.oscillating = unstable.damped_frequency_hz > 0;
-  crossing.destabilising = !unstable_below;
+  const Mode& mode = unstable.modes[crossing.mode];
+  crossing.frequency_hz = mode.frequency_hz;
+  crossing.oscillating = mode.damped_frequency_hz > 0;
+  crossing.destabilising = destabilising;
   return crossing;
 }
 
@@ -54,12 +72,8 @@ std::vector<DampingCrossing> LocateDampingCrossings(const std::vector<SweepPoint
                                                     double relative_tolerance) {
   std::vector<DampingCrossing> crossings;
   for (size_t p = 0; p + 1 < points.size(); ++p) {
-    const std::vector<Mode>& below = points[p].result.modes;
-    const std::vector<Mode>& above = points[p + 1].result.modes;
-    for (size_t k = 0; k < below.size() && k < above.size(); ++k) {
-      if (Unstable(below[k]) == Unstable(above[k])) continue;
-      crossings.push_back(Bisect(points[p], points[p + 1], static_cast<int>(k), analyse, relative_tolerance));
-    }
+    if (CountGrowing(points[p].result) == CountGrowing(points[p + 1].result)) continue;
+    crossings.push_back(Bisect(points[p], points[p + 1], analyse, relative_tolerance));
   }
   return crossings;
 }

@@ -75,7 +75,7 @@ std::vector<SweepPoint> EigenSweep(const std::vector<double>& parameters,
 
 namespace {
 // Modal assurance criterion of two shapes: 1 for parallel, 0 for orthogonal.
-double Mac(const Eigen::VectorXcd& a, const Eigen::VectorXcd& b) {
+double Mac(const Eigen::Ref<const Eigen::VectorXcd>& a, const Eigen::Ref<const Eigen::VectorXcd>& b) {
   const double denominator = a.squaredNorm() * b.squaredNorm();
   return denominator > 0 ? std::norm(a.dot(b)) / denominator : 0.0;
 }
@@ -87,9 +87,12 @@ void TrackModes(std::vector<SweepPoint>* points) {
     std::vector<Mode>& current = (*points)[p].result.modes;
     if (previous.empty() || current.empty() || previous.front().shape.size() != current.front().shape.size()) continue;
     const int np = static_cast<int>(previous.size()), nc = static_cast<int>(current.size());
+    // The inflow states' real roots crowd (Peters' states of every strip), and every oscillating mode drives the
+    // states much alike: their entries would make unrelated modes look alike.
+    const Eigen::Index motion = previous.front().shape.size() - (*points)[p].result.num_states;
     Eigen::MatrixXd mac(np, nc);
     for (int i = 0; i < np; ++i) {
-      for (int j = 0; j < nc; ++j) mac(i, j) = Mac(previous[i].shape, current[j].shape);
+      for (int j = 0; j < nc; ++j) mac(i, j) = Mac(previous[i].shape.head(motion), current[j].shape.head(motion));
     }
     // Greedy assignment: the best-matching pair first.
     std::vector<int> assigned(np, -1);

@@ -24,6 +24,7 @@ EigenResult SolveDenseWithStates(const Model& model, const LinearisedSystem& sys
   result.method = "dense";
   result.num_kinematic = nk;
   result.num_dof = r;
+  result.num_states = ns;
   // z = (c, c', x):  c' = p;  p' + Tt D_qx x' = -Tt K_qq T c - Tt D_qq T p - Tt K_qx x;
   // M_xq T p' + D_xx x' = -K_xq T c - D_xq T p - K_xx x   (theory (E7)).
   const int n = 2 * r + ns;

@@ -92,6 +92,7 @@ void ClassifyModes(const LinearisedSystem& system, const std::vector<RawMode>& a
     if (a.rigid_body != b.rigid_body) return a.rigid_body;
     return a.frequency_hz < b.frequency_hz;
   });
+  result->frequency_scale_hz = scale / (2 * M_PI);
   result->num_rigid_body =
       static_cast<int>(std::count_if(modes.begin(), modes.end(), [](const Mode& m) { return m.rigid_body; }));
   if (options.num_modes > 0 && static_cast<int>(modes.size()) > options.num_modes) modes.resize(options.num_modes);
