@@ -217,6 +217,10 @@ StepLimit ElasticStop::Limit(const StepContext& ctx, const State& end) const {
   // stick absorbs its slip in one step whatever its size), and a budget scaled by the impact speed could not be met.
   const bool begins = f.a_i <= 0;
   const double speed_i = std::abs(GapRate(ctx.start->qdot[variable()]));
+  // A contact that begins at rest on the stop (a body started there: the gap closed and no approach speed) is no
+  // impact: there is no speed to size its steps by, and the budget at the floor speed cut them below any dt_min.
+  // The local error test, or the fixed step, sizes them. (A body released above its stop is judged as before.)
+  if (f.a_i == 0 && f.reference_speed <= kMinReferenceSpeed) return limit;
   if (!begins && (error_controlled_ || speed_i < kRestingFraction * f.reference_speed)) return limit;
   const double ratio = change / budget;
   if (begins && ratio > kRejectRatio) limit.retry = std::min(limit.retry, kRetrySafety * ctx.h / ratio);
