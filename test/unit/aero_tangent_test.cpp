@@ -47,31 +47,7 @@ TEST(AeroTangent, MidStepSchemeTangentMatchesDifferences) {
 
 TEST(AeroTangent, EndPointStiffnessAndRatePartsMatchDifferences) {
   const Section s = ConnerSection();
-  StepContextBuilder builder(s.model);
-  auto context = [&](const Eigen::VectorXd& u) -> const StepContext& {
-    StepContext& ctx = builder.EndPoint(s.start, u, 0.0, 1.0e-3);
-    test::Random random(7);
-    for (NodeStep& n : builder.nodes()) {
-      n.v_f = random.Vector(0.5);
-      n.w_f = random.Vector(2.0);
-      n.vdot_f = random.Vector(10.0);
-      n.wdot_f = random.Vector(30.0);
-    }
-    return ctx;
-  };
-  const Eigen::VectorXd u = test::SomeIncrements(s.model);
-  const StepContext& ctx = context(u);
-  Eigen::MatrixXd stiffness = Eigen::MatrixXd::Zero(s.element->num_local(), s.element->num_local());
-  s.element->AddTangent(ctx, stiffness);
-  const Eigen::MatrixXd expected = test::UnknownDifferences(*s.element, u, context, kStep);
-  EXPECT_LT(test::MaxAbs(stiffness - expected), kTolerance * test::MaxAbs(expected));
-  const test::RateParts parts = test::LocalRateParts(*s.element, context(u));
-  for (bool accelerations : {false, true}) {
-    const Eigen::MatrixXd differences = test::RateDifferences(*s.element, context(u), accelerations, kStep);
-    const Eigen::MatrixXd& analytic = accelerations ? parts.M : parts.D;
-    EXPECT_LT(test::MaxAbs(analytic - differences), kTolerance * test::MaxAbs(differences))
-        << (accelerations ? "M" : "D");
-  }
+  test::ExpectEndPointPartsMatchDifferences(s.model, *s.element, s.start, 0.0, 0.5, kStep, kStep, kTolerance);
 }
 
 }  // namespace

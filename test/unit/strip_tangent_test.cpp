@@ -62,37 +62,9 @@ Strip FlapStrip() {
   return Shaken(spec, 12);
 }
 
-// The end-point stiffness and rate parts of `s` against differences.
+// The end-point stiffness and rate parts of `s` against differences, at t = 0.3 s with end speeds of 5 m/s.
 void ExpectEndPointPartsMatchDifferences(const Strip& s) {
-  StepContextBuilder builder(s.model);
-  auto context = [&](const Eigen::VectorXd& u) -> const StepContext& {
-    StepContext& ctx = builder.EndPoint(s.start, u, 0.3, 1.0e-3);
-    test::Random random(7);
-    for (NodeStep& n : builder.nodes()) {
-      n.v_f = random.Vector(5.0);
-      n.w_f = random.Vector(2.0);
-      n.vdot_f = random.Vector(10.0);
-      n.wdot_f = random.Vector(30.0);
-    }
-    return ctx;
-  };
-  // About the iterate itself: the end point's tangent is the derivative at zero increment (where a rotation
-  // increment turns the frame by itself; about a nonzero increment theta it turns it by T(theta) dtheta).
-  const Eigen::VectorXd u = Eigen::VectorXd::Zero(s.model.num_unknowns());
-  const StepContext& ctx = context(u);
-  Eigen::MatrixXd stiffness = Eigen::MatrixXd::Zero(s.element->num_local(), s.element->num_local());
-  s.element->AddTangent(ctx, stiffness);
-  const Eigen::MatrixXd expected = test::UnknownDifferences(*s.element, u, context, kStep);
-  EXPECT_LT(test::MaxAbs(stiffness - expected), kTolerance * test::MaxAbs(expected)) << "analytic\n"
-                                                                                     << stiffness << "\ndifferences\n"
-                                                                                     << expected;
-  const test::RateParts parts = test::LocalRateParts(*s.element, context(u));
-  for (bool accelerations : {false, true}) {
-    const Eigen::MatrixXd differences = test::RateDifferences(*s.element, context(u), accelerations, kRateStep);
-    const Eigen::MatrixXd& analytic = accelerations ? parts.M : parts.D;
-    EXPECT_LT(test::MaxAbs(analytic - differences), kTolerance * test::MaxAbs(differences))
-        << (accelerations ? "M" : "D") << "\nanalytic\n" << analytic << "\ndifferences\n" << differences;
-  }
+  test::ExpectEndPointPartsMatchDifferences(s.model, *s.element, s.start, 0.3, 5.0, kStep, kRateStep, kTolerance);
 }
 
 TEST(StripTangent, MidStepSchemeTangentMatchesDifferences) {
