@@ -33,12 +33,12 @@ SAMPLE_TYPES = {
     "reactions": "flexmbd/JointReactionArray",
     "solver": "flexmbd/SolverStep",
 }
-# published only by models with stops, frictional joints, beam stations or aero sections
+# published only by models with stops, frictional joints, beam stations, aero sections or strip stations
 OPTIONAL_TYPES = {
     "contacts": "flexmbd/JointContactArray",
     "friction": "flexmbd/JointFrictionArray",
     "beam_loads": "flexmbd/BeamLoadsArray",  # models with output.beam_stations
-    "aero_loads": "flexmbd/AeroLoadsArray",  # models with aero.sections
+    "aero_loads": "flexmbd/AeroLoadsArray",  # models with aero.sections or output.strip_stations
 }
 # a beam station's CSV columns beam.<beam>.s<k>.<field>, in the CSV's order
 STATION_FIELDS = ("N", "V2", "V3", "T", "M2", "M3", "e1", "g2", "g3", "k1", "k2", "k3")
@@ -116,6 +116,12 @@ def read_columns(path):
             for field in ("lift", "moment", "hinge_moment"):
                 add(prefix + field, getattr(section, field))
             for k, mu in enumerate(section.inflow):
+                add(prefix + "mu_%d" % (k + 1), mu)
+        for station in loads.strip_stations:
+            prefix = "strip.%s.s%d." % (station.strip, station.station)
+            for field in ("lift", "moment", "hinge_moment"):
+                add(prefix + field, getattr(station, field))
+            for k, mu in enumerate(station.inflow):
                 add(prefix + "mu_%d" % (k + 1), mu)
     for energy in messages["energy"]:
         for field in ENERGY_FIELDS:

@@ -12,6 +12,8 @@ The CSV's first row is a header and its first column is `t` (time, s). Columns a
   friction.<joint>.<q>   -> <stem>_friction_<q>.png     (sticking, torque, normal_force [N], slip_velocity, work)
   aero.<section>.<load>  -> <stem>_aero_<load>.png      (lift [N], moment, hinge_moment [N m])
   aero.<section>.mu_<k>  -> <stem>_aero_inflow.png      (Peters' inflow states [m/s])
+  strip.<strip>.s<k>.<load> -> <stem>_strip_<load>.png  (per unit span: lift [N/m], moment, hinge_moment [N m/m])
+  strip.<strip>.s<k>.mu_<i> -> <stem>_strip_inflow.png  (Peters' inflow states at the strip stations [m/s])
   energy.<kind>          -> <stem>_energy.png           (energy [J])
   solver.dt              -> <stem>_solver_dt.png        (step size [s], log scale)
   solver.iterations      -> <stem>_solver_iterations.png (Newton iterations per step)
@@ -59,6 +61,10 @@ KNOWN_GROUPS = {
     "aero_moment": ("Aero section moment about the elastic axis (nose up)", "moment [N m]", False),
     "aero_hinge_moment": ("Aero section hinge moment (trailing edge down)", "moment [N m]", False),
     "aero_inflow": ("Aero section inflow states", "mu [m/s]", False),
+    "strip_lift": ("Strip lift per unit span (along the chord normal)", "lift [N/m]", False),
+    "strip_moment": ("Strip moment per unit span about the elastic axis (nose up)", "moment [N m/m]", False),
+    "strip_hinge_moment": ("Strip hinge moment per unit span (trailing edge down)", "moment [N m/m]", False),
+    "strip_inflow": ("Strip inflow states", "mu [m/s]", False),
     "energy": ("Energy", "energy [J]", False),
     "solver_dt": ("Solver step size", "step size [s]", True),
     "solver_iterations": ("Newton iterations per step", "iterations", False),
@@ -122,10 +128,10 @@ def group_key(name):
         return parts[0] + "_" + parts[-1], ".".join(parts[1:-1])
     if parts[0] == "beam" and len(parts) >= 4:  # beam.<beam>.s<k>.<quantity>: one plot per quantity
         return "beam_" + parts[-1], ".".join(parts[1:-1])
-    if parts[0] == "aero" and len(parts) >= 3:  # one plot per load, one for all inflow states
+    if parts[0] in ("aero", "strip") and len(parts) >= 3:  # one plot per load, one for all inflow states
         if re.fullmatch(r"mu_\d+", parts[-1]):
-            return "aero_inflow", ".".join(parts[1:])
-        return "aero_" + parts[-1], ".".join(parts[1:-1])
+            return parts[0] + "_inflow", ".".join(parts[1:])
+        return parts[0] + "_" + parts[-1], ".".join(parts[1:-1])
     if parts[0] == "energy" and len(parts) >= 2:
         return "energy", ".".join(parts[1:])
     if parts[0] == "solver" and len(parts) >= 2:

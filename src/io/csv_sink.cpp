@@ -57,6 +57,11 @@ CsvSink::CsvSink(const Model& model, const std::string& path) : path_(path), fil
     for (const char* column : {"lift", "moment", "hinge_moment"}) out_ << ",aero." << section->name() << '.' << column;
     for (int k = 0; k < section->num_states(); ++k) out_ << ",aero." << section->name() << '.' << section->StateName(k);
   }
+  for (const StripStationInfo& station : model.strip_stations()) {
+    const std::string prefix = ",strip." + station.strip + ".s" + std::to_string(station.index) + ".";
+    for (const char* column : {"lift", "moment", "hinge_moment"}) out_ << prefix << column;
+    for (int k = 0; k < station.inner->num_states(); ++k) out_ << prefix << station.inner->StateName(k);
+  }
   out_ << ",energy.kinetic,energy.potential,energy.total,energy.external_work,energy.dissipated,"
           "energy.numerical_dissipation,solver.dt,solver.iterations\n";
   if (!out_) ThrowWriteError();
@@ -85,9 +90,11 @@ void CsvSink::Write(const OutputSample& s) {
     for (int k = 0; k < 3; ++k) PutField(out_, b.displacement[k]);
     for (int k = 0; k < 3; ++k) PutField(out_, b.rotation[k]);
   }
-  for (const AeroSectionSample& a : s.aero_sections) {
-    for (double value : {a.lift, a.moment, a.hinge_moment}) PutField(out_, value);
-    for (int k = 0; k < a.inflow.size(); ++k) PutField(out_, a.inflow[k]);
+  for (const std::vector<AeroSectionSample>* aero : {&s.aero_sections, &s.strip_stations}) {
+    for (const AeroSectionSample& a : *aero) {
+      for (double value : {a.lift, a.moment, a.hinge_moment}) PutField(out_, value);
+      for (int k = 0; k < a.inflow.size(); ++k) PutField(out_, a.inflow[k]);
+    }
   }
   for (double value : {s.kinetic, s.potential, s.total(), s.external_work, s.dissipated, s.numerical_dissipation, s.dt}) {
     PutField(out_, value);

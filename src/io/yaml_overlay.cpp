@@ -21,6 +21,7 @@ void ApplyYamlOverlay(const YAML::Node& params, const std::string& params_name, 
   ReadBeamStations(root.Child("output"), *model, &model->spec.output);
   ReadLoads(root.Child("loads"), *model, &model->spec.loads);
   ReadAero(root.Child("aero"), model);
+  ReadStripStations(root.Child("output"), *model, &model->spec.output);
   CheckAirspeedSweep(root, model->spec);
 }
 

@@ -160,15 +160,24 @@ void FillBeamLoads(const std::vector<BeamStationInfo>& stations, const OutputSam
                    });
 }
 
-void FillAeroLoads(const std::vector<const TypicalSectionAero*>& sections, const OutputSample& sample,
-                   AeroLoadsArray* msg) {
-  FillNamedRecords(sections, sample.aero_sections, &msg->sections,
+void FillAeroLoads(const Model& model, const OutputSample& sample, AeroLoadsArray* msg) {
+  FillNamedRecords(model.aero_sections(), sample.aero_sections, &msg->sections,
                    [](const TypicalSectionAero* info, const AeroSectionSample& value, AeroSectionLoads* section) {
                      section->section = info->name();
                      section->lift = value.lift;
                      section->moment = value.moment;
                      section->hinge_moment = value.hinge_moment;
                      SetVector(value.inflow, &section->inflow);
+                   });
+  FillNamedRecords(model.strip_stations(), sample.strip_stations, &msg->strip_stations,
+                   [](const StripStationInfo& info, const AeroSectionSample& value, AeroStripStationLoads* station) {
+                     station->strip = info.strip;
+                     station->station = info.index;
+                     station->s = info.s;
+                     station->lift = value.lift;
+                     station->moment = value.moment;
+                     station->hinge_moment = value.hinge_moment;
+                     SetVector(value.inflow, &station->inflow);
                    });
 }
 

@@ -14,7 +14,7 @@ void SampleConverter::Convert(const OutputSample& sample, const State& state, Sa
   FillJointContacts(model_.stops(), sample, &messages->contacts);
   FillJointFriction(model_.frictions(), sample, &messages->friction);
   FillBeamLoads(model_.beam_stations(), sample, &messages->beam_loads);
-  FillAeroLoads(model_.aero_sections(), sample, &messages->aero_loads);
+  FillAeroLoads(model_, sample, &messages->aero_loads);
   const uint32_t seq = next_seq_++;
   const ::ros::Time stamp = ToStamp(sample.t);
   for (std_msgs::Header* header :

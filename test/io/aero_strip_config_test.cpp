@@ -154,6 +154,42 @@ TEST(AeroConfig, StripFlapOffTheHingeLineIsRejectedAtBuild) {
                       "m above the axis of 'wing'; expected it on the hinge line, b (c - a) = 0.670560 m aft");
 }
 
+TEST(AeroConfig, StripStationsStandBetweenTheNodesStrips) {
+  // Two cubic elements of 3 m: nodes every 1 m. A station at 2.25 m lies a quarter of the way from node 2 to
+  // node 3; the tip station takes the tip node alone.
+  ModelSpec spec = test::LoadInline(GolandUrdf(), kBeam + "aero: {strips: {wing_strips: {" + kValid +
+                                                      "}}}\noutput: {strip_stations: {wing_strips: [0.0, 2.25, 6.0]}}");
+  const Model model = BuildModel(spec);
+  ASSERT_EQ(model.strip_stations().size(), 3u);
+  const StripStationInfo& between = model.strip_stations()[1];
+  EXPECT_EQ(between.strip, "wing_strips");
+  EXPECT_EQ(between.index, 1);
+  EXPECT_EQ(between.inner, model.aero_strips()[2]);
+  EXPECT_EQ(between.outer, model.aero_strips()[3]);
+  EXPECT_NEAR(between.weight, 0.25, 1.0e-15);
+  const StripStationInfo& tip = model.strip_stations()[2];
+  EXPECT_EQ(tip.inner, model.aero_strips()[6]);
+  EXPECT_EQ(tip.outer, model.aero_strips()[6]);
+  EXPECT_EQ(model.strip_stations()[0].inner, model.aero_strips()[0]);
+  EXPECT_EQ(model.strip_stations()[0].weight, 0.0);
+}
+
+TEST(AeroConfig, StripStationsNameAStripAndStandOnItsBeam) {
+  const std::string strips = kBeam + "aero: {strips: {wing_strips: {" + kValid + "}}}\n";
+  EXPECT_CONFIG_ERROR(test::LoadInline(GolandUrdf(), strips + "output: {strip_stations: {wing: [1.0]}}"),
+                      "test.yaml: output.strip_stations.wing: no strip 'wing' in aero.strips; strips are: wing_strips");
+  EXPECT_CONFIG_ERROR(test::LoadInline(GolandUrdf(), strips + "output: {strip_stations: {wing_strips: [6.5]}}"),
+                      "test.yaml: output.strip_stations.wing_strips[0]: 6.5 is beyond the tip; expected 0 <= s <= 6 "
+                      "[m] (the length of beam wing)");
+  EXPECT_CONFIG_ERROR(test::LoadInline(GolandUrdf(), strips + "output: {strip_stations: {wing_strips: [-1]}}"),
+                      "test.yaml: output.strip_stations.wing_strips[0]");
+  EXPECT_CONFIG_ERROR(test::LoadInline(GolandUrdf(), kBeam + "output: {strip_stations: {wing_strips: [1.0]}}"),
+                      "test.yaml: output.strip_stations.wing_strips: no strip 'wing_strips' in aero.strips; strips are: (none)");
+  ModelSpec spec = test::LoadInline(GolandUrdf(), strips);
+  spec.output.strip_stations["tail"] = {1.0};
+  EXPECT_CONFIG_ERROR(BuildModel(spec), "output.strip_stations.tail: no strip 'tail'; expected a name under aero.strips");
+}
+
 TEST(AeroConfig, StripAirspeedSweepNeedsTheStreamsDirection) {
   EXPECT_CONFIG_ERROR(test::LoadInline(GolandUrdf(), kBeam + "aero: {strips: {wing_strips: {" + kValid +
                                                          "}}}\nsolver: {analysis: eigen, eigen: {sweep: {airspeed: [10]}}}"),

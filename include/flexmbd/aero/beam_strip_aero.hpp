@@ -50,6 +50,8 @@ class BeamStripAero : public Element {
   /// Lift [N] along the chord normal, moment [N m] nose up about the beam axis and hinge moment [N m] trailing
   /// edge down (zero without a flap), over the strip, at ctx.
   Vec3 StripLoads(const StepContext& ctx) const;
+  /// The strip's span, the node's lumped length [m].
+  double length() const { return length_; }
   /// The flap's deflection [rad] (trailing edge down) at ctx; zero without a flap.
   double FlapAngle(const StepContext& ctx) const;
 

@@ -56,6 +56,10 @@ void ReadOutput(const Field& output, double t_end, OutputSpec* spec);
 /// `output.beam_stations`: beam name -> distances from the root in [0, length] [m] (beams read first).
 void ReadBeamStations(const Field& output, const UrdfModel& model, OutputSpec* spec);
 
+/// `output.strip_stations`: aero.strips name -> distances from the root of its beam in [0, length] [m] (beams and
+/// aero read first).
+void ReadStripStations(const Field& output, const UrdfModel& model, OutputSpec* spec);
+
 /// `loads:` a list of forces and moments on bodies of `model`.
 void ReadLoads(const Field& loads, const UrdfModel& model, std::vector<LoadSpec>* specs);
 

@@ -48,6 +48,17 @@ struct BeamStationInfo {
   double s_element = 0.0;             ///< distance from the element's first node [m]
 };
 
+/// A station of `output.strip_stations`: the two strips (nodes) of an aero.strips entry either side of it, whose
+/// loads per unit span and inflow states it interpolates linearly.
+struct StripStationInfo {
+  std::string strip;                     ///< the aero.strips name
+  int index = 0;                         ///< k in the output names strip.<name>.s<k>
+  double s = 0.0;                        ///< distance from the beam's root [m]
+  const BeamStripAero* inner = nullptr;  ///< the strip at the node at or root-side of s
+  const BeamStripAero* outer = nullptr;  ///< the strip at the next node tip-side (inner itself at the tip)
+  double weight = 0.0;                   ///< outer's share, in [0, 1]
+};
+
 /// A stop (backlash) as the user named it.
 struct StopInfo {
   std::string joint;  ///< joint name
@@ -103,6 +114,8 @@ class Model {
   const std::vector<const TypicalSectionAero*>& aero_sections() const { return aero_sections_; }
   /// The strips of aero.strips, strip by strip in the order given, each root to tip.
   const std::vector<const BeamStripAero*>& aero_strips() const { return aero_strips_; }
+  /// The stations of output.strip_stations, strip by strip (in name order), then in the order given.
+  const std::vector<StripStationInfo>& strip_stations() const { return strip_stations_; }
   /// The friction elements, in frictions() order.
   const std::vector<const FrictionEffect*>& friction_effects() const { return friction_effects_; }
   /// Name of each joint variable: the joint name, with "/k" appended for the k-th of several.
@@ -140,6 +153,7 @@ class Model {
   std::vector<const FrictionEffect*> friction_effects_;
   std::vector<const TypicalSectionAero*> aero_sections_;
   std::vector<const BeamStripAero*> aero_strips_;
+  std::vector<StripStationInfo> strip_stations_;
   std::vector<std::string> node_names_;  ///< "body <name>" or "beam <name> node <k>", per node
   std::vector<std::string> variable_names_;
   std::vector<bool> driven_;  ///< per variable

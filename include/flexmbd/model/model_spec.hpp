@@ -242,6 +242,9 @@ struct OutputSpec {
   std::string bag;         ///< bag path; empty for none
   /// Beam name -> stations, distances from the root in [0, length] [m], sampled in OutputSample::beam_stations.
   std::map<std::string, std::vector<double>> beam_stations;
+  /// aero.strips name -> stations along its beam, distances from the root in [0, length] [m], sampled in
+  /// OutputSample::strip_stations.
+  std::map<std::string, std::vector<double>> strip_stations;
   /// Allow a run to write more than kMaxOutputValues values to its CSV or bag (model/output_size.hpp).
   bool allow_large_output = false;
   /// The runner reports the amplitude and frequency of every joint variable over [cycle_from, t_end] (a limit

@@ -53,10 +53,9 @@ void FillJointFriction(const std::vector<FrictionInfo>& frictions, const OutputS
 /// order and size).
 void FillBeamLoads(const std::vector<BeamStationInfo>& stations, const OutputSample& sample, BeamLoadsArray* msg);
 
-/// One entry per aero section: sample.aero_sections[k] named by sections[k] (Model::aero_sections(): the same
-/// order and size).
-void FillAeroLoads(const std::vector<const TypicalSectionAero*>& sections, const OutputSample& sample,
-                   AeroLoadsArray* msg);
+/// One entry per aero section (sample.aero_sections[k] named by Model::aero_sections()[k]) and one per strip
+/// station (sample.strip_stations[k] named by Model::strip_stations()[k]).
+void FillAeroLoads(const Model& model, const OutputSample& sample, AeroLoadsArray* msg);
 
 /// One transform per frame of `frames` (FrameTree::moving) from its parent frame to it, both placed by their
 /// nodes in `state`, stamped with the state's time.

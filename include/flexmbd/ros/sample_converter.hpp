@@ -26,7 +26,8 @@ struct SampleMessages {
   JointFrictionArray friction;
   /// One entry per station of output.beam_stations; with none, neither published nor recorded.
   BeamLoadsArray beam_loads;
-  /// One entry per aero section (aero.sections); with none, neither published nor recorded.
+  /// One entry per aero section (aero.sections) and per strip station (output.strip_stations); with neither,
+  /// neither published nor recorded.
   AeroLoadsArray aero_loads;
   /// Link and beam node frames at the state's time, when has_transforms. A sample is interpolated inside the
   /// step that ends at the state, so transforms are stamped with the state's own time (exact poses) and sent

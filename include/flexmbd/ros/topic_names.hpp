@@ -34,7 +34,7 @@ struct TopicNames {
   std::string contacts;      ///< flexmbd/JointContactArray (models with stops)
   std::string friction;      ///< flexmbd/JointFrictionArray (models with frictional joints)
   std::string beam_loads;    ///< flexmbd/BeamLoadsArray (models with beam stations)
-  std::string aero_loads;    ///< flexmbd/AeroLoadsArray (models with aero sections)
+  std::string aero_loads;    ///< flexmbd/AeroLoadsArray (models with aero sections or strip stations)
   std::string tf;            ///< tf2_msgs/TFMessage
   std::string tf_static;     ///< tf2_msgs/TFMessage, latched (models with fixed massless links)
   std::string markers;       ///< visualization_msgs/MarkerArray

@@ -24,8 +24,8 @@ class TopicPublisher : public MessageSink {
  public:
   /// Advertises `joint_states` and `/tf` in `node`'s namespace, `~energy`, `~reactions`, `~solver`,
   /// `~contacts` if `model` has stops, `~friction` if it has frictional joints, `~beam_loads` if it has beam
-  /// stations (output.beam_stations), `~aero_loads` if it has aero sections, and the latched `~markers`
-  /// (ToBodyMarkers, published once, here) in `private_node`'s, the latched `/tf_static` (published once,
+  /// stations (output.beam_stations), `~aero_loads` if it has aero sections or strip stations, and the latched
+  /// `~markers` (ToBodyMarkers, published once, here) in `private_node`'s, the latched `/tf_static` (published once,
   /// here) unless `static_transforms` is empty, and `/clock` if `publish_clock`. `on_connect` is called
   /// (from a spinner thread) whenever a subscriber connects to a sample topic.
   TopicPublisher(::ros::NodeHandle& node, ::ros::NodeHandle& private_node, const Model& model,

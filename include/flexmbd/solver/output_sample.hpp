@@ -38,12 +38,14 @@ struct BeamStationSample {
 };
 
 /// One aero section (aero.sections) at a sample: the loads of TypicalSectionAero::SectionLoads over its span, as
-/// the step that produced the sample applied them, and its inflow states.
+/// the step that produced the sample applied them, and its inflow states. A station along strips
+/// (output.strip_stations) has the same values per unit span [N/m, N m/m], interpolated between its two nodes'
+/// strips (BeamStripAero::StripLoads over their lengths).
 struct AeroSectionSample {
-  double lift = 0;          ///< up [N]
+  double lift = 0;          ///< along the chord normal [N]
   double moment = 0;        ///< about the elastic axis, nose up [N m]
   double hinge_moment = 0;  ///< about the flap hinge, trailing edge down [N m]
-  Eigen::VectorXd inflow;   ///< Peters' states mu_1..mu_N (docs/theory.md, (A6)) [m/s]
+  Eigen::VectorXd inflow;   ///< Peters' states mu_1..mu_N (docs/theory.md, (A6), (A9)) [m/s]
 };
 
 struct OutputSample {
@@ -57,6 +59,7 @@ struct OutputSample {
   std::vector<FrictionSample> friction;  ///< per frictional joint, in Model::frictions() order
   std::vector<BeamStationSample> beam_stations;  ///< per station, in Model::beam_stations() order
   std::vector<AeroSectionSample> aero_sections;  ///< per section, in Model::aero_sections() order
+  std::vector<AeroSectionSample> strip_stations;  ///< per unit span, in Model::strip_stations() order
   double kinetic = 0;            ///< [J]
   double potential = 0;          ///< gravity, springs and beam strain energy [J]
   double external_work = 0;      ///< cumulative work of applied loads, drives and commanded efforts [J]

@@ -90,4 +90,33 @@ std::vector<std::unique_ptr<BeamStripAero>> MakeAeroStrips(const Model& model, c
   return strips;
 }
 
+std::vector<StripStationInfo> LocateStripStations(const Model& model, const std::string& prefix, const ModelSpec& spec) {
+  std::vector<StripStationInfo> located;
+  for (const auto& [name, stations] : spec.output.strip_stations) {
+    const std::string field = prefix + "output.strip_stations." + name;
+    size_t first = 0;  // the strip's first element in model.aero_strips(): the strips before it, node by node
+    auto strip = spec.aero_strips.begin();
+    for (; strip != spec.aero_strips.end() && strip->name != name; ++strip) first += StripBeam(model, prefix, *strip).nodes.size();
+    if (strip == spec.aero_strips.end()) throw ConfigError(field + ": no strip '" + name + "'; expected a name under aero.strips");
+    const BeamInfo& beam = StripBeam(model, prefix, *strip);
+    const double length = std::find_if(spec.beams.begin(), spec.beams.end(),
+                                       [&](const BeamSpec& b) { return b.name == beam.name; })->length;
+    for (size_t k = 0; k < stations.size(); ++k) {
+      if (!(stations[k] >= 0.0 && stations[k] <= length)) {
+        throw ConfigError(field + "[" + std::to_string(k) + "]: " + std::to_string(stations[k]) +
+                          " is off the beam; expected 0 <= s <= " + std::to_string(length) +
+                          " [m] (distance from the root)");
+      }
+      const double s = std::min(stations[k], beam.stations.back());  // the last node's station may round below
+      // The last node at or root-side of s; a station on the tip node takes that node alone.
+      const size_t node = std::upper_bound(beam.stations.begin(), beam.stations.end(), s) - beam.stations.begin() - 1;
+      const size_t next = std::min(node + 1, beam.stations.size() - 1);
+      const double span = beam.stations[next] - beam.stations[node];
+      located.push_back({name, static_cast<int>(k), s, model.aero_strips()[first + node],
+                         model.aero_strips()[first + next], span > 0.0 ? (s - beam.stations[node]) / span : 0.0});
+    }
+  }
+  return located;
+}
+
 }  // namespace flexmbd

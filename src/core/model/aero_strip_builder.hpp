@@ -19,4 +19,8 @@ std::vector<std::unique_ptr<BeamStripAero>> MakeAeroStrips(const Model& model, c
                                                            const AeroStripSpec& strip, const AeroFlowSpec& flow,
                                                            int first_state);
 
+/// The stations of output.strip_stations on the strips of `model` (model.aero_strips() built); throws ConfigError
+/// (after `prefix`) for a name that is not under aero.strips or a station off its beam.
+std::vector<StripStationInfo> LocateStripStations(const Model& model, const std::string& prefix, const ModelSpec& spec);
+
 }  // namespace flexmbd

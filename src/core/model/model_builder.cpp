@@ -342,6 +342,7 @@ Model BuildModel(const ModelSpec& spec) {
       add_state_owner(std::move(element));
     }
   }
+  model.strip_stations_ = LocateStripStations(model, Prefix(spec), spec);
   for (const CustomElementSpec& custom : spec.custom_elements) {
     std::unique_ptr<Element> element = custom.make(model, first_state);
     FLEXMBD_DEMAND(element->num_states() == custom.num_states);

@@ -19,6 +19,7 @@ constexpr int kValuesPerSampleTrailer = 8;   // six energies, dt, iterations
 long OutputValuesPerSample(const Model& model) {
   long aero = 0;
   for (const TypicalSectionAero* section : model.aero_sections()) aero += kValuesPerAeroSection + section->num_states();
+  for (const StripStationInfo& station : model.strip_stations()) aero += kValuesPerAeroSection + station.inner->num_states();
   return aero + kValuesPerSampleHeader + kValuesPerVariable * static_cast<long>(model.variable_names().size()) +
          kValuesPerJoint * static_cast<long>(model.joints().size()) +
          kValuesPerStop * static_cast<long>(model.stops().size()) +

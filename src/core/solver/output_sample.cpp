@@ -24,6 +24,29 @@ AeroSectionSample SampleAero(const TypicalSectionAero& section, const State& sta
   sample.inflow = state.element_states.segment(section.first_state(), section.num_states());
   return sample;
 }
+
+AeroSectionSample SampleStrips(const StripStationInfo& station, const State& state, const StepContext& ctx) {
+  const double u = station.weight;
+  const Vec3 loads = (1.0 - u) * station.inner->StripLoads(ctx) / station.inner->length() +
+                     u * station.outer->StripLoads(ctx) / station.outer->length();
+  const int n = station.inner->num_states();
+  AeroSectionSample sample;
+  sample.lift = loads[0];
+  sample.moment = loads[1];
+  sample.hinge_moment = loads[2];
+  sample.inflow = (1.0 - u) * state.element_states.segment(station.inner->first_state(), n) +
+                  u * state.element_states.segment(station.outer->first_state(), n);
+  return sample;
+}
+
+AeroSectionSample Mix(const AeroSectionSample& x, const AeroSectionSample& y, double u) {
+  AeroSectionSample z;
+  z.lift = (1.0 - u) * x.lift + u * y.lift;
+  z.moment = (1.0 - u) * x.moment + u * y.moment;
+  z.hinge_moment = (1.0 - u) * x.hinge_moment + u * y.hinge_moment;
+  z.inflow = (1.0 - u) * x.inflow + u * y.inflow;
+  return z;
+}
 }  // namespace
 
 EnergyTally StateEnergy(const Model& model, const State& state) {
@@ -54,6 +77,7 @@ OutputSample MakeSample(const Model& model, const State& state, const StepContex
   s.numerical_dissipation = state.dissipated_numerical;
   for (const BeamStationInfo& station : model.beam_stations()) s.beam_stations.push_back(SampleStation(model, state, station));
   for (const TypicalSectionAero* section : model.aero_sections()) s.aero_sections.push_back(SampleAero(*section, state, ctx));
+  for (const StripStationInfo& station : model.strip_stations()) s.strip_stations.push_back(SampleStrips(station, state, ctx));
   s.dt = dt;
   s.iterations = iterations;
   return s;
@@ -90,14 +114,8 @@ OutputSample Interpolate(const OutputSample& a, const OutputSample& b, double t)
     z.displacement = mix(x.displacement, y.displacement);
     z.rotation = mix(x.rotation, y.rotation);
   }
-  for (size_t k = 0; k < s.aero_sections.size(); ++k) {
-    const AeroSectionSample &x = a.aero_sections[k], &y = b.aero_sections[k];
-    AeroSectionSample& z = s.aero_sections[k];
-    z.lift = (1.0 - u) * x.lift + u * y.lift;
-    z.moment = (1.0 - u) * x.moment + u * y.moment;
-    z.hinge_moment = (1.0 - u) * x.hinge_moment + u * y.hinge_moment;
-    z.inflow = mix(x.inflow, y.inflow);
-  }
+  for (size_t k = 0; k < s.aero_sections.size(); ++k) s.aero_sections[k] = Mix(a.aero_sections[k], b.aero_sections[k], u);
+  for (size_t k = 0; k < s.strip_stations.size(); ++k) s.strip_stations[k] = Mix(a.strip_stations[k], b.strip_stations[k], u);
   return s;
 }
 

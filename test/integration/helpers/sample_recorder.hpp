@@ -25,7 +25,7 @@ class SampleRecorder {
  public:
   /// Subscribes to joint_states and /tf (root namespace) and /<node_name>/{energy,reactions,solver,contacts,
   /// friction,beam_loads,aero_loads} (the last four are published only for models with stops, friction, beam
-  /// stations or aero sections).
+  /// stations, aero sections or strip stations).
   explicit SampleRecorder(const std::string& node_name);
   ~SampleRecorder();
 

@@ -18,7 +18,7 @@ struct Samples {
   std::vector<JointContactArray> contacts;  ///< only for models with stops
   std::vector<JointFrictionArray> friction;  ///< only for models with friction
   std::vector<BeamLoadsArray> beam_loads;    ///< only for models with beam stations
-  std::vector<AeroLoadsArray> aero_loads;    ///< only for models with aero sections
+  std::vector<AeroLoadsArray> aero_loads;    ///< only for models with aero sections or strip stations
 };
 
 /// Simulated time of a message [s].
