@@ -11,10 +11,9 @@
 #include <string>
 
 #include "flexmbd/io/config_loader.hpp"
-#include "flexmbd/solver/simulation.hpp"
-#include "flexmbd/solver/step_context_builder.hpp"
 
 #include "closed_forms.hpp"
+#include "loop_run.hpp"
 #include "runner_output.hpp"
 
 namespace flexmbd {
@@ -35,47 +34,26 @@ ModelSpec SliderCrank() {
   return LoadModelSpec(data + "urdf/slider_crank.urdf", data + "yaml/slider_crank.yaml");
 }
 
-struct LoopRun {
+// The loop run of a slider-crank, with the worst error of the slider's travel against its closed form.
+struct SliderCrankRun : test::LoopRun {
   double worst_travel_error = 0;  // [m]
-  double worst_constraint = 0;    // largest constraint value of any joint at any step [m or rad]
-  double books = 0;               // energy books at the end, relative to the energy throughput
-  double worst_energy_change = 0;  // largest |E - E0| relative to the largest kinetic energy of the run
-  OutputSample last;
-  int steps = 0;
 };
 
-LoopRun RunLoop(const ModelSpec& spec) {
+SliderCrankRun RunLoop(const ModelSpec& spec) {
   const Model model = BuildModel(spec);
   const int crank = model.FindVariable("crank_hinge"), slide = model.FindVariable("slide");
-  Simulation simulation(model);
-  StepContextBuilder builder(model);
-  LoopRun run;
-  OutputSample first;
-  double worst_energy_change = 0, largest_kinetic = 0;
-  simulation.Run([&](const OutputSample& s) {
-    if (run.steps++ == 0) first = s;
-    run.worst_travel_error =
-        std::max(run.worst_travel_error, std::abs(s.position[slide] - SliderTravel(s.position[crank])));
-    const StepContext& ctx = builder.AtState(simulation.state());
-    for (const Joint* joint : model.joints()) {
-      if (joint->num_constraints() > 0) {
-        run.worst_constraint = std::max(run.worst_constraint, joint->ConstraintValues(ctx).cwiseAbs().maxCoeff());
-      }
-    }
-    worst_energy_change = std::max(worst_energy_change, std::abs(s.total() - first.total()));
-    largest_kinetic = std::max(largest_kinetic, s.kinetic);
-    run.last = s;
+  double worst_travel_error = 0;
+  SliderCrankRun run;
+  static_cast<test::LoopRun&>(run) = test::RunLoop(model, [&](const OutputSample& s, const State&) {
+    worst_travel_error = std::max(worst_travel_error, std::abs(s.position[slide] - SliderTravel(s.position[crank])));
   });
-  run.worst_energy_change = worst_energy_change / largest_kinetic;
-  const OutputSample& l = run.last;
-  run.books = (l.total() + l.dissipated + l.numerical_dissipation - l.external_work - first.total()) /
-              (std::abs(first.total()) + l.kinetic + l.dissipated + l.numerical_dissipation + std::abs(l.external_work));
+  run.worst_travel_error = worst_travel_error;
   return run;
 }
 
 TEST(Closure, DrivenSliderCrankFollowsItsClosedForm) {
   const ModelSpec spec = SliderCrank();
-  const LoopRun run = RunLoop(spec);
+  const SliderCrankRun run = RunLoop(spec);
   EXPECT_DOUBLE_EQ(run.last.t, 2.5);
   EXPECT_LT(run.worst_travel_error, kLoopTolerance);
   EXPECT_LT(run.worst_constraint, kLoopTolerance);
@@ -101,7 +79,7 @@ TEST(Closure, FreeSliderCrankKeepsItsLoopAndEnergyUnderGravity) {
   spec.solver.gravity = Vec3(0.0, -9.81, 0.0);
   spec.solver.integrator = SolverSpec::Integrator::kEnergyPreserving;
   spec.solver.t_end = 3.0;
-  const LoopRun run = RunLoop(spec);
+  const SliderCrankRun run = RunLoop(spec);
   EXPECT_DOUBLE_EQ(run.last.t, 3.0);
   EXPECT_LT(run.worst_travel_error, kLoopTolerance);
   EXPECT_LT(run.worst_constraint, kLoopTolerance);
@@ -138,7 +116,7 @@ TEST(Closure, SliderCrankStartedOffItsUrdfPoseClosesItsLoop) {
     const ModelSpec spec = LoadSliderCrank(
         SliderCrankYaml("{initial: {position: " + angle + "}}", "{t_end: 0.3, gravity: [0.0, -9.81, 0.0]}"),
         "closure_slider_crank_start");
-    const LoopRun run = RunLoop(spec);
+    const SliderCrankRun run = RunLoop(spec);
     EXPECT_DOUBLE_EQ(run.last.t, 0.3) << angle;
     EXPECT_LT(run.worst_travel_error, kLoopTolerance) << angle;
     EXPECT_LT(run.worst_constraint, kLoopTolerance) << angle;
@@ -159,7 +137,7 @@ TEST(Closure, DrivenCrankStartsOnItsDrive) {
   EXPECT_DOUBLE_EQ(start.q[crank], 1.0);
   EXPECT_NEAR(start.q[slide], SliderTravel(1.0), kLoopTolerance);
   EXPECT_NEAR(start.qdot[slide], 2.0 * kPi * test::SliderTravelRate(kCrank, kRod, 1.0), kLoopTolerance);
-  const LoopRun run = RunLoop(spec);
+  const SliderCrankRun run = RunLoop(spec);
   EXPECT_DOUBLE_EQ(run.last.t, 1.2);
   EXPECT_LT(run.worst_travel_error, kLoopTolerance);
   EXPECT_LT(run.worst_constraint, kLoopTolerance);

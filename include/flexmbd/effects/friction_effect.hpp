@@ -15,7 +15,9 @@
 /// error test allows after the jump (F3''). In a step in
 /// which a rigid stop of the joint is in contact the stop holds q (q_f = q_i): friction then does no work and
 /// its torque is not determined, so it applies none, and a sticking constraint would repeat the stop's; the
-/// joint sticks or slides from the next step as its speed after the contact says. The
+/// joint sticks or slides from the next step as its speed after the contact says. The same holds in a step in which
+/// the sticking row repeats the other constraint rows (a drive holding it through a closed loop, a crank's dead
+/// centre: StickingRedundancy, (F7)). The
 /// regularised law Q = -mu_k rho N (1 - exp(-|v|/v0)) sign(v) has no modes; the constant-torque law (URDF
 /// <dynamics friction>) replaces mu rho N by a fixed bound.
 
@@ -55,6 +57,9 @@ class FrictionEffect : public ModalEffect {
   double StickingSpeed(const EffectState& effect) const;
   FrictionSample Sample(const State& state) const;
   int variable() const { return variable_; }
+  /// The sticking constraint's multiplier (its row among the constraint rows); -1 for the regularised law.
+  int stick_multiplier() const { return stick_multiplier_; }
+  bool has_sticking_row() const { return stick_multiplier_ >= 0; }
   /// The joint's rigid stops (their slots in State::effects), which hold q while in contact.
   void set_rigid_stop_slots(std::vector<int> slots) { rigid_stop_slots_ = std::move(slots); }
 
@@ -90,8 +95,9 @@ class FrictionEffect : public ModalEffect {
   bool BreakingAway(const StepContext& ctx) const;
   // True in a step solved sticking: the sticking constraint is enforced.
   bool Constrained(const StepContext& ctx) const;
-  // True when a rigid stop of the joint is in contact in these effect modes (a step's trial modes or a state's).
-  bool HeldByStop(const std::vector<EffectState>& effects) const;
+  // True when a rigid stop of the joint is in contact in these effect modes (a step's trial modes or a state's),
+  // or the joint sticks in them with its sticking row left out as a repeat of the other constraints (F7).
+  bool Held(const std::vector<EffectState>& effects) const;
   // End rate of q from the scheme's relation over the step, 2 dq / h - qdot_i.
   static double EndRate(const StepContext& ctx, int variable);
 

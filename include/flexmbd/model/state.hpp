@@ -42,6 +42,10 @@ struct EffectState {
   /// Friction: the sticking force of the last accepted step if it began stuck and stayed stuck (a steady stick,
   /// whose force locates a breakaway, docs/theory.md (F3')) [N m or N]; NaN otherwise.
   double steady_force = std::numeric_limits<double>::quiet_NaN();
+  /// Friction: the joint sticks in the step being solved (or that led to this state) and its sticking row
+  /// repeats the other constraint rows, which then hold it: the row is left out and friction applies no force
+  /// (docs/theory.md (F7)).
+  bool held_by_constraints = false;
 };
 
 /// What a controller commands on one joint variable (Simulation::SetEffort, SetSetpoint; docs/theory.md,

@@ -18,6 +18,7 @@
 
 #include "flexmbd/solver/dissipation_judging.hpp"
 #include "flexmbd/solver/step_context_builder.hpp"
+#include "flexmbd/solver/sticking_redundancy.hpp"
 #include "flexmbd/solver/tangent_reuse.hpp"
 #include "flexmbd/solver/time_integrator.hpp"
 #include "flexmbd/solver/velocity_projection.hpp"
@@ -67,6 +68,7 @@ class EnergyDecayingIntegrator : public TimeIntegrator {
   SparseSystem* system_;
   StepContextBuilder builder_;
   VelocityProjection projection_;  ///< applied after steps whose modes jumped or whose contacts came to rest
+  StickingRedundancy redundancy_;  ///< leaves out sticking rows that repeat other constraints, per trial modes
   double alpha_inf_;
   std::vector<bool> held_;          ///< per effect slot: held in the projection (a contact brought to rest)
   std::vector<Mat3> node_inertia_;  ///< rotational inertia of each node's body, weights the dissipation check

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "flexmbd/solver/step_context_builder.hpp"
+#include "flexmbd/solver/sticking_redundancy.hpp"
 
 namespace flexmbd {
 
@@ -42,6 +43,7 @@ class VelocityProjection {
   const Model& model_;
   SparseSystem* system_;
   StepContextBuilder builder_;
+  StickingRedundancy redundancy_;
 };
 
 }  // namespace flexmbd

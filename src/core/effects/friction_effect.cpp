@@ -92,7 +92,9 @@ double FrictionEffect::RegularisedFactor(double v, double* d_dv) const {
   return (1.0 - decay) * (v > 0 ? 1.0 : v < 0 ? -1.0 : 0.0);
 }
 
-bool FrictionEffect::HeldByStop(const std::vector<EffectState>& effects) const {
+bool FrictionEffect::Held(const std::vector<EffectState>& effects) const {
+  const EffectState& own = effects[slot()];
+  if (own.mode == kSticking && own.held_by_constraints) return true;
   return std::any_of(rigid_stop_slots_.begin(), rigid_stop_slots_.end(),
                      [&](int slot) { return effects[slot].mode == JointStop::kContact; });
 }
@@ -109,7 +111,7 @@ double FrictionEffect::EndRate(const StepContext& ctx, int variable) {
 FrictionEffect::StepForce FrictionEffect::Evaluate(const StepContext& ctx) const {
   StepForce f;
   const int mode = TrialMode(ctx);
-  if (ctx.mode == AnalysisMode::kStatic || HeldByStop(*ctx.effects) ||
+  if (ctx.mode == AnalysisMode::kStatic || Held(*ctx.effects) ||
       (mode == kSticking && spec_.law != FrictionSpec::Law::kRegularised)) {
     return f;
   }
@@ -132,7 +134,7 @@ FrictionEffect::StepForce FrictionEffect::Evaluate(const StepContext& ctx) const
 }
 
 bool FrictionEffect::Constrained(const StepContext& ctx) const {
-  return TrialMode(ctx) == kSticking && ctx.mode != AnalysisMode::kStatic && !HeldByStop(*ctx.effects);
+  return TrialMode(ctx) == kSticking && ctx.mode != AnalysisMode::kStatic && !Held(*ctx.effects);
 }
 
 void FrictionEffect::AddResidual(const StepContext& ctx, Eigen::Ref<Eigen::VectorXd> r,
@@ -186,7 +188,7 @@ void FrictionEffect::AddStepWork(const StepContext& ctx, StepWork* work) const {
 
 int FrictionEffect::ReviseMode(const StepContext& ctx) const {
   const int mode = TrialMode(ctx);
-  if (spec_.law == FrictionSpec::Law::kRegularised || HeldByStop(*ctx.effects)) return mode;
+  if (spec_.law == FrictionSpec::Law::kRegularised || Held(*ctx.effects)) return mode;
   if (mode == kSticking) {
     // In the step that starts sticking the multiplier is the mean friction force of a slip that stops within
     // the step and then holds; beyond the static bound, kinetic friction could not stop it in the step, which
@@ -232,7 +234,7 @@ double FrictionEffect::BreakawayFraction(const StepContext& ctx) const {
 
 StepLimit FrictionEffect::Limit(const StepContext& ctx, const State& end) const {
   StepLimit limit;
-  if (spec_.law == FrictionSpec::Law::kRegularised || HeldByStop(*ctx.effects)) return limit;
+  if (spec_.law == FrictionSpec::Law::kRegularised || Held(*ctx.effects)) return limit;
   if (TrialMode(ctx) == kSticking) {
     // Also a step whose mean force kept the bound may pass it before its end.
     const double fraction = BreakawayFraction(ctx);
@@ -278,11 +280,11 @@ void FrictionEffect::Commit(const StepContext& ctx, const State& end, EffectStat
   const double speed = spec_.radius * std::abs(end.qdot[variable_]);
   effect->reference = std::max(effect->reference, speed);
   if (spec_.law == FrictionSpec::Law::kRegularised) return;
-  // After a step held by a rigid stop the joint moves on, or rests, as the contact left it; a breakaway whose
-  // slide reversed within the step came to rest in it. Either sticks, or slides the way it now moves if it is
-  // faster than it could stick.
+  // After a step held by a rigid stop or by the constraints its sticking row repeats (F7) the joint moves on, or
+  // rests, as they left it; a breakaway whose slide reversed within the step came to rest in it. Each sticks, or
+  // slides the way it now moves if it is faster than it could stick.
   const bool reversed_breakaway = BreakingAway(ctx) && Direction(effect->mode) * end.qdot[variable_] < 0;
-  if (HeldByStop(*ctx.effects) || reversed_breakaway) {
+  if (Held(*ctx.effects) || reversed_breakaway) {
     const bool slow = speed <= kCaptureSpeeds * StickingSpeed(*effect);
     effect->mode = slow ? kSticking : InitialMode(end.qdot[variable_]);
   } else {
@@ -306,7 +308,7 @@ FrictionSample FrictionEffect::Sample(const State& state) const {
     return s;
   }
   s.sticking = effect.mode == kSticking;
-  if (HeldByStop(state.effects)) return s;  // the stop holds the joint: no friction torque
+  if (Held(state.effects)) return s;  // a stop or the other constraints hold the joint: no friction torque
   s.torque = s.sticking ? -state.lambda[stick_multiplier_] : -Bound(spec_.mu_k, s.normal_force) * Direction(effect.mode);
   return s;
 }

@@ -8,28 +8,13 @@
 #include <memory>
 #include <vector>
 
+#include "constraint_null_space.hpp"
 #include "flexmbd/solver/eigen_analysis.hpp"
 
 namespace flexmbd {
 namespace eigen_internal {
 
-/// Null space of the constraint Jacobian B (m x n) from a column-pivoted QR of B^T = Q R P^T: the first
-/// `rank` columns of Q span the range of B^T, the others (Z) the motions that keep the constraints.
-class ConstraintNullSpace {
- public:
-  ConstraintNullSpace(const Eigen::MatrixXd& B, int num_kinematic);
-  const Eigen::MatrixXd& Z() const { return Z_; }
-  int rank() const { return rank_; }
-  /// The smallest-norm x with B x = c (c consistent with B when rows of B are dependent).
-  Eigen::VectorXd MinimumNormSolution(const Eigen::VectorXd& c) const;
-
- private:
-  int n_ = 0, rank_ = 0;
-  Eigen::MatrixXd Z_;
-  Eigen::MatrixXd Q1_;    ///< range of B^T (n x rank)
-  Eigen::MatrixXd R1t_;   ///< leading rank x rank block of R, transposed (lower triangular)
-  Eigen::VectorXi perm_;  ///< column permutation of B^T: B^T P
-};
+using ::flexmbd::ConstraintNullSpace;
 
 /// W with W^T Mr W = I for the mass matrix Mr = Z^T M Z of the constrained motions. Throws SolverError if Mr
 /// is not positive definite, naming the unknown that moves most in the motion without inertia.

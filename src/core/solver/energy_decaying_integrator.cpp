@@ -48,6 +48,7 @@ EnergyDecayingIntegrator::EnergyDecayingIntegrator(const Model& model, SparseSys
       system_(system),
       builder_(model),
       projection_(model, system),
+      redundancy_(model),
       alpha_inf_(model.solver().integrator == SolverSpec::Integrator::kEnergyDecaying
                      ? DissipationFromRhoInf(model.solver().rho_inf)
                      : 0.0),
@@ -173,6 +174,7 @@ double EnergyDecayingIntegrator::ExpectedJudgingContraction() const {
 StepResult EnergyDecayingIntegrator::Step(const State& start, double h, State* end) {
   Coefficients coefficients = Choose(start);
   modes_ = start.effects;
+  redundancy_.Mark(start, &modes_);
   builder_.set_effect_modes(&modes_);
   const int n_kinematic = model_.num_unknowns() - model_.num_multipliers();
   StepResult result;
@@ -247,6 +249,7 @@ StepResult EnergyDecayingIntegrator::Step(const State& start, double h, State* e
     }
     if (DropEnergyGainingDissipation(start, h, &coefficients)) continue;
     if (!ReviseModes()) break;
+    redundancy_.Mark(start, &modes_);
     // The factorisation belongs to the old modes.
     system_->set_factorisation_key(std::numeric_limits<double>::quiet_NaN());
     if (++mode_revisions > kMaxModeRevisions) {

@@ -18,7 +18,7 @@ constexpr double kLimitingStepFraction = 1.0e-4;
 }  // namespace
 
 VelocityProjection::VelocityProjection(const Model& model, SparseSystem* system)
-    : model_(model), system_(system), builder_(model) {}
+    : model_(model), system_(system), builder_(model), redundancy_(model) {}
 
 bool VelocityProjection::SolveLimitingStep(const State& state, double h, MeanMotion* mean) {
   const int n_kinematic = model_.num_unknowns() - model_.num_multipliers();
@@ -60,6 +60,7 @@ bool VelocityProjection::Apply(State* state, const std::vector<bool>& held) {
   for (const ModalEffect* effect : model_.modal_effects()) {
     if (!held[effect->slot()]) modes[effect->slot()].mode = effect->ReleasedMode(*state);
   }
+  redundancy_.Mark(*state, &modes);
   builder_.set_effect_modes(&modes);
   const double h = kLimitingStepFraction * state->h_prev;
   MeanMotion single, twice;
