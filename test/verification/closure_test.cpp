@@ -161,10 +161,10 @@ TEST(Closure, RunnerAssemblesTheSliderCrankOrSaysWhichLoopStaysOpen) {
 
 TEST(Closure, WingAileronBracketsLeaveTheAileronOnlyItsFlap) {
   // config/wing_aileron (issue 17, case 2), structure only: wing and aileron beams (19 and 7 nodes, the wing
-  // clamped: 108 + 42 freedoms) and two brackets (12) joined by a universal, a revolute, a spherical joint and the
-  // closing prismatic one (4 + 5 + 3 + 5 = 17 constraints): 145 degrees of freedom, of which only the aileron's
-  // rotation in its freeplay (no hinge spring) is a rigid-body mode. A redundant or a missing constraint of the
-  // loop changes either count.
+  // clamped: 108 + 42 freedoms) and two brackets (12) joined by a universal, a revolute, a prismatic joint and the
+  // closing spherical one (4 + 5 + 5 + 3 = 17 constraints): 145 degrees of freedom, of which only the aileron's
+  // rotation about its hinge line in its freeplay (no hinge spring) is a rigid-body mode. A redundant or a missing
+  // constraint of the loop changes either count.
   std::ifstream file(std::string(FLEXMBD_SOURCE_DIR) + "/config/wing_aileron/wing_aileron_modes.yaml");
   std::stringstream yaml;
   yaml << file.rdbuf();

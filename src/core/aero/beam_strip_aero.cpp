@@ -266,7 +266,8 @@ void BeamStripAero::AddResidual(const StepContext& ctx, Eigen::Ref<Eigen::Vector
   const Motion m = MotionAt(ctx);
   const Loads loads = Compute(m, FlapOf(m));
   const int nn = num_node_unknowns();
-  const Eigen::Matrix<double, 12, 1> q = ForceMap(m) * loads.y.head<3>();
+  // A static solve raises the air's loads with its other loads (theory (A11)); the inflow equations stay whole.
+  const Eigen::Matrix<double, 12, 1> q = ctx.load_factor * ForceMap(m) * loads.y.head<3>();
   r.head(nn) -= q.head(nn);
   magnitude.head(nn) += q.head(nn).cwiseAbs();
   // Peters' inflow (A1) in mu = lambda - Abar^-1 cbar w34 (A9): Abar mu' + (u/b)(mu + Abar^-1 cbar w34) = 0.
@@ -281,14 +282,15 @@ void BeamStripAero::AddTangent(const StepContext& ctx, Eigen::Ref<Eigen::MatrixX
   const Motion m = MotionAt(ctx);
   const Flap f = FlapOf(m);
   const Loads loads = Compute(m, f);
-  const Eigen::Matrix<double, 12, 3> F = ForceMap(m);
+  const Eigen::Matrix<double, 12, 3> F = ctx.load_factor * ForceMap(m);
   const int nn = num_node_unknowns(), N = num_states();
   // The section frame turns with the rotation increment: V = R^T (air - v) and Vdot turn against it; the flap
   // angle turns with both frames.
   const RowGradient by_node =
       loads.dV * (Skew(m.V) * m.turn) + loads.dVdot * (Skew(m.Vdot) * m.turn) + loads.dflap.col(0) * f.d_node;
   J.block(0, kRotation, nn, 3) -= F.topRows(nn) * by_node.topRows<3>();
-  J.block<3, 3>(0, kRotation) += length_ * loads.y[0] * m.R * Skew(normal_) * m.turn;  // d(R n) = -R Skew(n) dtheta
+  // d(R n) = -R Skew(n) dtheta
+  J.block<3, 3>(0, kRotation) += ctx.load_factor * length_ * loads.y[0] * m.R * Skew(normal_) * m.turn;
   J.block(nn, kRotation, N, 3) += by_node.bottomRows(N);
   if (has_flap()) {
     const RowGradient by_flap = loads.dflap.col(0) * f.d_flap;
