@@ -8,9 +8,9 @@ about it (config/rotor_engage: yoke 5 kg at 0.075 m, grip 10 kg at 0.25 m, blade
 pitch horn lies on the hinge's axis and carries no flap moment), so a droop stop 0.3 m from the hinge holds it with
 F_s = g S cos(0.54 deg) / 0.3 = 10107 N. The run starts from the static state held on the stop with the gap just
 closed (no approach); released, a blade settles slowly into its Hertz stop (F = k a^1.5, with Hunt-Crossley
-damping) towards the approach that carries its weight, 4.7e-4 m, so the stop carries a little less than F_s
-while the blade's inertia takes the rest (measured 0.1% to 0.7% less, the flap angle 0.003 deg below -0.54 deg
-at 0.05 s)."""
+damping) towards the approach that carries its weight, 4.7e-4 m (the flap angle 0.003 deg below -0.54 deg at
+0.05 s), while its bending modes, set ringing by the release, pass a varying share of the weight to the stop
+(measured -2.6% to +1.9% of F_s)."""
 
 import math
 import unittest
@@ -29,12 +29,12 @@ BLADES = 3
 RADIUS = 0.3
 DROOP = math.radians(-0.54)
 STATIC_FORCE = 9.81 * 309.10 * math.cos(DROOP) / RADIUS
-# Share of F_s the settling blade's inertia may take from the stop (measured 0.7% at most).
-SETTLING = 0.02
+# Share of F_s the ringing blade may add to or take from the stop (measured 2.6% at most).
+RINGING = 0.05
 STIFFNESS = 1.0e9  # N/m^1.5
-# The flap angle on the stop: below -0.54 deg by at most the approach that carries F_s, (F_s / k)^(2/3) (4.7e-4 m),
-# over the radius.
-DEEPEST = DROOP - (STATIC_FORCE / STIFFNESS) ** (2.0 / 3.0) / RADIUS
+# The flap angle on the stop: below -0.54 deg by at most the approach that carries the largest force,
+# ((1 + RINGING) F_s / k)^(2/3) (4.8e-4 m), over the radius.
+DEEPEST = DROOP - ((1 + RINGING) * STATIC_FORCE / STIFFNESS) ** (2.0 / 3.0) / RADIUS
 
 
 class RotorEngageLaunch(unittest.TestCase):
@@ -76,8 +76,8 @@ class RotorEngageLaunch(unittest.TestCase):
                 self.assertAlmostEqual(droop.torque, RADIUS * droop.force, delta=1e-9 * (1 + droop.force))
                 if message.header.stamp.to_sec() > 0:  # the contact begins with the first step
                     self.assertTrue(droop.in_contact, 'blade %d at t = %s' % (blade, message.header.stamp))
-                    self.assertLessEqual(droop.force, STATIC_FORCE, 'blade %d' % blade)
-                    self.assertGreaterEqual(droop.force, (1 - SETTLING) * STATIC_FORCE, 'blade %d' % blade)
+                    self.assertAlmostEqual(droop.force, STATIC_FORCE, delta=RINGING * STATIC_FORCE,
+                                           msg='blade %d' % blade)
 
 
 if __name__ == '__main__':
