@@ -6,13 +6,17 @@ The CSV's header is the parameter (`airspeed` [m/s] or `velocity_scale`), then f
 --modes 3,4,6 draws only those modes (e.g. the structural ones, leaving out the real roots and the fast damped pair
 of aerodynamic states, whose frequencies grow with the airspeed). --mark X draws a vertical line at X (repeatable), e.g. the flutter speed the runner prints
 (`flexmbd_run: flutter: mode 2 at U = 23.954 m/s (6.02 Hz)`); --runner-output FILE marks every speed such a line
-of a saved runner output names.
+of a saved runner output names. --per-rev OMEGA (a rotor's fan plot over velocity_scale, OMEGA the hub's initial
+rate in rad/s) draws the frequencies as multiples of OMEGA, 2 pi f / OMEGA, with the rays of 1, 2, ... per rev;
+--name K=TEXT names mode K in the legend (repeatable).
 
-Usage: plot_fan.py CSV [--out PNG] [--modes K,K,...] [--mark X ...] [--runner-output FILE]   (PNG defaults to CSV with .png)
+Usage: plot_fan.py CSV [--out PNG] [--modes K,K,...] [--mark X ...] [--runner-output FILE] [--per-rev OMEGA]
+                   [--name K=TEXT ...]   (PNG defaults to CSV with .png)
 Prints the path of the PNG written.
 """
 
 import argparse
+import math
 import os
 import re
 import sys
@@ -33,7 +37,7 @@ def crossings_in(path):
         raise CsvError("cannot read runner output %s: %s" % (path, exc))
 
 
-def plot_fan(header, columns, wanted, marks, out_path):
+def plot_fan(header, columns, wanted, marks, out_path, per_rev=None, names=None):
     modes = sorted(int(name[1:-3]) for name in header if re.fullmatch(r"f\d+_Hz", name))
     if not modes or any("zeta%d" % k not in header for k in modes):
         raise CsvError("header %s: expected f<k>_Hz and zeta<k> columns for each mode" % ",".join(header))
@@ -43,23 +47,32 @@ def plot_fan(header, columns, wanted, marks, out_path):
                        % (",".join(map(str, missing)), modes[-1]))
     modes = wanted or modes
     x = columns[0]
+    names = names or {}
+    scale = 2 * math.pi / per_rev if per_rev else 1.0
     figure, (upper, lower) = plt.subplots(2, 1, sharex=True, figsize=(8, 7))
     for k in modes:
-        upper.plot(x, columns[header.index("f%d_Hz" % k)], marker="o", markersize=3, label="mode %d" % k)
-        lower.plot(x, columns[header.index("zeta%d" % k)], marker="o", markersize=3, label="mode %d" % k)
+        label = names.get(k, "mode %d" % k)
+        upper.plot(x, [scale * f for f in columns[header.index("f%d_Hz" % k)]], marker="o", markersize=3, label=label)
+        lower.plot(x, columns[header.index("zeta%d" % k)], marker="o", markersize=3, label=label)
+    if per_rev:
+        top = max(scale * f for k in modes for f in columns[header.index("f%d_Hz" % k)])
+        for n in range(1, int(math.ceil(top / max(x))) + 1):
+            upper.plot([0, max(x)], [0, n * max(x)], color="gray", linewidth=0.6, linestyle=":")
+        upper.set_ylim(0, 1.05 * top)
     lower.axhline(0.0, color="black", linewidth=0.8)
     for label, value in marks:
         for axes in (upper, lower):
             axes.axvline(value, color="red", linestyle="--", linewidth=1.0)
         lower.annotate(label, (value, 1.0), xycoords=("data", "axes fraction"), xytext=(4, -14),
                        textcoords="offset points", color="red", fontsize="small")
-    upper.set_ylabel("natural frequency [Hz]")
+    upper.set_ylabel("frequency / Omega_0 (rays: 1, 2, ... per rev)" if per_rev else "natural frequency [Hz]")
     lower.set_ylabel("damping ratio")
-    lower.set_xlabel(UNITS.get(header[0], header[0]))
+    xlabel = "rotor speed / Omega_0" if per_rev else UNITS.get(header[0], header[0])
+    lower.set_xlabel(xlabel)
     for axes in (upper, lower):
         axes.grid(True, alpha=0.3)
         axes.legend(loc="best", fontsize="small")
-    upper.set_title("Frequencies and damping ratios against %s" % UNITS.get(header[0], header[0]))
+    upper.set_title("Frequencies and damping ratios against %s" % xlabel)
     figure.tight_layout()
     try:
         figure.savefig(out_path, dpi=120)
@@ -75,6 +88,8 @@ def main(argv):
     parser.add_argument("--modes", default="", help="comma-separated mode numbers to draw (default: all)")
     parser.add_argument("--mark", type=float, action="append", default=[], help="draw a vertical line here")
     parser.add_argument("--runner-output", help="mark the changes of stability this saved runner output reports")
+    parser.add_argument("--per-rev", type=float, help="draw 2 pi f / PER_REV: a rotor's hub rate [rad/s]")
+    parser.add_argument("--name", action="append", default=[], help="K=TEXT: the legend's name of mode K")
     args = parser.parse_args(argv[1:])
     out_path = args.out or os.path.splitext(args.csv)[0] + ".png"
     try:
@@ -87,7 +102,11 @@ def main(argv):
         if args.runner_output:
             marks += [("%s, mode %d: %g" % (kind, mode, speed), speed)
                       for kind, mode, speed in crossings_in(args.runner_output)]
-        plot_fan(header, columns, wanted, marks, out_path)
+        try:
+            names = {int(k): text for k, text in (entry.split("=", 1) for entry in args.name)}
+        except ValueError:
+            raise CsvError("--name %s: expected K=TEXT, e.g. 2=flap" % ",".join(args.name))
+        plot_fan(header, columns, wanted, marks, out_path, args.per_rev, names)
     except CsvError as exc:
         print("error: plot_fan.py: %s" % exc, file=sys.stderr)
         return 1

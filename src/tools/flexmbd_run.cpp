@@ -145,6 +145,16 @@ void PrintModesOfRunState(const flexmbd::Model& model, const flexmbd::State& sta
   }
 }
 
+// A fan-plot table on the standard output and, with output.csv (or --csv), as CSV there for scripts/plot_fan.py.
+void PrintFanPlot(const std::vector<flexmbd::SweepPoint>& points, const char* parameter, int modes,
+                  const std::string& csv) {
+  std::fputs(flexmbd::FormatFanPlot(points, parameter, modes).c_str(), stdout);
+  if (csv.empty()) return;
+  std::ofstream file(csv);
+  file << flexmbd::FormatFanPlot(points, parameter, modes, ',');
+  if (!file.good()) throw flexmbd::OutputError("output.csv: writing the fan-plot table to '" + csv + "' failed");
+}
+
 // solver.eigen.about: steady_state. The mode table about the steady rotation at the initial hub rate, or a fan
 // plot with the steady state solved at each speed factor.
 void RunEigenAboutSteadyRotation(const flexmbd::Model& model, const flexmbd::EigenOptions& options) {
@@ -157,7 +167,7 @@ void RunEigenAboutSteadyRotation(const flexmbd::Model& model, const flexmbd::Eig
     std::printf("flexmbd_run: eigen-analysis sweep of %zu speed factors about steady rotations of %s at %.8g rad/s "
                 "times the factor (%s)\n",
                 points.size(), hub.c_str(), spin.speed, points.empty() ? "" : points.front().result.method.c_str());
-    std::fputs(flexmbd::FormatFanPlot(points, "velocity_scale", settings.modes).c_str(), stdout);
+    PrintFanPlot(points, "velocity_scale", settings.modes, model.output().csv);
     return;
   }
   const flexmbd::SteadyResult steady = flexmbd::SolveSteadyRotation(model, model.initial_state(), spin);
@@ -186,13 +196,6 @@ flexmbd::State LinearisationState(const flexmbd::Model& model) {
   return state;
 }
 
-// A fan-plot table as CSV at output.csv (or --csv), for scripts/plot_fan.py.
-void WriteFanPlotCsv(const std::string& path, const std::string& table) {
-  std::ofstream file(path);
-  file << table;
-  if (!file.good()) throw flexmbd::OutputError("output.csv: writing the fan-plot table to '" + path + "' failed");
-}
-
 // Bracket width at which the flutter speed is taken, relative to the speed: ten times finer than the 0.1% the
 // issue asks, so that the middle of the bracket is within 0.005%.
 constexpr double kFlutterTolerance = 1.0e-4;
@@ -215,8 +218,7 @@ void RunAirspeedSweep(const flexmbd::ModelSpec& spec, const flexmbd::EigenOption
   std::printf("flexmbd_run: eigen-analysis sweep of %zu airspeeds [m/s] about the %s (%s)\n", points.size(),
               settings.static_first ? "static aeroelastic equilibrium" : "initial state",
               points.front().result.method.c_str());
-  std::fputs(flexmbd::FormatFanPlot(points, "airspeed", settings.modes).c_str(), stdout);
-  if (!spec.output.csv.empty()) WriteFanPlotCsv(spec.output.csv, flexmbd::FormatFanPlot(points, "airspeed", settings.modes, ','));
+  PrintFanPlot(points, "airspeed", settings.modes, spec.output.csv);
   const std::vector<flexmbd::DampingCrossing> crossings = flexmbd::LocateDampingCrossings(
       points,
       [&](double speed) {
@@ -254,7 +256,7 @@ void RunEigen(const flexmbd::ModelSpec& spec, const flexmbd::Model& model) {
                             [&](double factor) { return flexmbd::ScaleVelocities(state, factor); }, options);
     std::printf("flexmbd_run: eigen-analysis sweep of %zu velocity factors (%s)\n", points.size(),
                 points.empty() ? "" : points.front().result.method.c_str());
-    std::fputs(flexmbd::FormatFanPlot(points, "velocity_scale", settings.modes).c_str(), stdout);
+    PrintFanPlot(points, "velocity_scale", settings.modes, model.output().csv);
     return;
   }
   PrintModesAt(state.t, flexmbd::EigenAnalysis(model, state, options));

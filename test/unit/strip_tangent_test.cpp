@@ -74,6 +74,23 @@ TEST(StripTangent, MidStepSchemeTangentMatchesDifferences) {
 
 TEST(StripTangent, EndPointStiffnessAndRatePartsMatchDifferences) { ExpectEndPointPartsMatchDifferences(GolandStrip()); }
 
+// The Goland strip with the stream reversed: air from the trailing edge (docs/theory.md, (A12)).
+Strip ReversedGolandStrip() {
+  const std::string dir = std::string(FLEXMBD_SOURCE_DIR) + "/config/goland_wing/";
+  ModelSpec spec = LoadModelSpec(dir + "goland_wing.urdf", dir + "flutter_below.yaml");
+  spec.aero_flow.free_stream = -spec.aero_flow.free_stream;
+  return Shaken(spec, 5);
+}
+
+TEST(StripTangent, ReverseFlowMidStepSchemeTangentMatchesDifferences) {
+  const Strip s = ReversedGolandStrip();
+  test::ExpectMidStepTangentMatchesDifferences(s.model, *s.element, s.start, kStep, kTolerance);
+}
+
+TEST(StripTangent, ReverseFlowEndPointStiffnessAndRatePartsMatchDifferences) {
+  ExpectEndPointPartsMatchDifferences(ReversedGolandStrip());
+}
+
 TEST(StripTangent, FlapMidStepSchemeTangentMatchesDifferences) {
   const Strip s = FlapStrip();
   ASSERT_EQ(s.element->num_local(), 12 + 4);

@@ -61,25 +61,6 @@ std::string BladeWith(const std::string& joints_and_solver) {
   return yaml.substr(0, yaml.find("\njoints:") + 1) + joints_and_solver;
 }
 
-// The frequencies [Hz] of the fan-plot row of `factor` (the columns f1_Hz ...), empty if there is none.
-std::vector<double> FanRow(const std::string& output, double factor) {
-  std::istringstream lines(output.substr(output.find("velocity_scale f1_Hz")));
-  std::string header;
-  std::getline(lines, header);
-  size_t columns = 0;
-  for (size_t at = header.find(" f"); at != std::string::npos; at = header.find(" f", at + 1)) ++columns;
-  for (std::string line; std::getline(lines, line);) {
-    std::istringstream values(line);
-    double parameter = 0;
-    values >> parameter;
-    if (parameter != factor) continue;
-    std::vector<double> row(columns);
-    for (double& f : row) values >> f;
-    return row;
-  }
-  return {};
-}
-
 double NonDimensional(double hz) { return 2 * M_PI * hz / kScale; }
 
 TEST(RotatingBeam, FlapAndLagFrequenciesMatchPublishedTablesUpToSpeed12) {
@@ -96,7 +77,7 @@ TEST(RotatingBeam, FlapAndLagFrequenciesMatchPublishedTablesUpToSpeed12) {
       "rotating_cantilever_sweep");
   for (size_t k = 0; k < std::size(kSpeeds); ++k) {
     const double lambda = kSpeeds[k];
-    std::vector<double> row = FanRow(output, lambda);
+    std::vector<double> row = test::FanRow(output, lambda);
     ASSERT_EQ(row.size(), 3u) << "lambda " << lambda << "\n" << output;
     std::sort(row.begin(), row.end());
     EXPECT_EQ(row[0], 0.0) << "the spin, a rigid-body mode; lambda " << lambda << "\n" << output;

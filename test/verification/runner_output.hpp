@@ -66,6 +66,28 @@ inline std::string ModeTableAt(const std::string& output, double t) {
 /// The frequency [Hz] of mode `index` in a printed mode table, or NaN when the row is missing.
 inline double TableFrequency(const std::string& table, int index) { return ModeRow(table, index).frequency_hz; }
 
+/// The frequencies [Hz] of the row of `factor` in a velocity_scale fan-plot table the runner printed (the columns
+/// f1_Hz ...), empty if there is none.
+inline std::vector<double> FanRow(const std::string& output, double factor) {
+  const size_t table = output.find("velocity_scale f1_Hz");
+  if (table == std::string::npos) return {};
+  std::istringstream lines(output.substr(table));
+  std::string header;
+  std::getline(lines, header);
+  size_t columns = 0;
+  for (size_t at = header.find(" f"); at != std::string::npos; at = header.find(" f", at + 1)) ++columns;
+  for (std::string line; std::getline(lines, line);) {
+    std::istringstream values(line);
+    double parameter = 0;
+    values >> parameter;
+    if (parameter != factor) continue;
+    std::vector<double> row(columns);
+    for (double& f : row) values >> f;
+    return row;
+  }
+  return {};
+}
+
 // The table prints 8 significant digits.
 constexpr double kPrintedTolerance = 1.0e-7;
 

@@ -148,7 +148,11 @@ BeamStripAero::Loads BeamStripAero::Compute(const Motion& m, const Flap& f) cons
   const double omega = e.dot(m.w), omega_rate = e.dot(m.wdot);
   const Vec3 turning_normal = m.w.cross(n), normal_sweep = n.cross(m.V);
   const double v_rate = turning_normal.dot(m.V) + n.dot(m.Vdot);
-  const double arm34 = b * (0.5 - a);  // from the elastic axis to the three-quarter chord
+  // In reverse flow (u < 0, air from the trailing edge) the plate's edges swap roles (A12): the circulation and
+  // the wake read the speed |u|, the three-quarter chord and the quarter chord lie mirrored about mid-chord.
+  const double flow = out.u < 0.0 ? -1.0 : 1.0, speed = flow * out.u;
+  const Row3 dspeed_dV = flow * c.transpose();
+  const double arm34 = b * (0.5 * flow - a);  // from the elastic axis to the three-quarter chord, aft
   // The flap's three-quarter-chord downwash (A10) over its share of the strip.
   const double phi = has_flap() ? flap_.fraction : 0.0, ew = flap_loads_.ew[2], eg = flap_loads_.eg[2];
   out.w34 = n.dot(m.V) + arm34 * omega + phi * (ew * f.delta[1] + out.u * eg * f.delta[0]);
@@ -159,18 +163,18 @@ BeamStripAero::Loads BeamStripAero::Compute(const Motion& m, const Flap& f) cons
   // Circulatory lift (A8): 2 pi rho u b (w34 - lambda0), lambda0 = bbar^T mu / 2 + lag0 w34.
   const double lambda0 = N > 0 ? 0.5 * inflow_.b.dot(m.mu) + lag0_ * out.w34 : 0.0;
   const double k = 2.0 * M_PI * rho * b, downwash = out.w34 - lambda0;
-  const double circulation = k * out.u * downwash;
-  const Row3 dG_dV = k * (downwash * du_dV + out.u * (1.0 - lag0_) * out.dw34_dV);
-  const Row3 dG_dw = k * out.u * (1.0 - lag0_) * out.dw34_dw;
-  const Row3 dG_dflap = k * out.u * (1.0 - lag0_) * out.dw34_dflap;
+  const double circulation = k * speed * downwash;
+  const Row3 dG_dV = k * (downwash * dspeed_dV + speed * (1.0 - lag0_) * out.dw34_dV);
+  const Row3 dG_dw = k * speed * (1.0 - lag0_) * out.dw34_dw;
+  const Row3 dG_dflap = k * speed * (1.0 - lag0_) * out.dw34_dflap;
   // Apparent mass and the circulatory lift at the quarter chord, b (1/2 + a) ahead of the elastic axis (A8).
-  const double apparent = M_PI * rho * b * b, arm = b * (0.5 + a), inertia = b * b * (0.125 + a * a);
+  const double apparent = M_PI * rho * b * b, arm = b * (0.5 * flow + a), inertia = b * b * (0.125 + a * a);
   out.y[0] = apparent * (v_rate - b * a * omega_rate) + circulation;
-  out.y[1] = apparent * (b * a * v_rate - 0.5 * out.u * b * omega - inertia * omega_rate) + arm * circulation;
+  out.y[1] = apparent * (b * a * v_rate - 0.5 * speed * b * omega - inertia * omega_rate) + arm * circulation;
   out.dV.row(0) = apparent * turning_normal.transpose() + dG_dV;
-  out.dV.row(1) = apparent * (b * a * turning_normal.transpose() - 0.5 * b * omega * c.transpose()) + arm * dG_dV;
+  out.dV.row(1) = apparent * (b * a * turning_normal.transpose() - 0.5 * b * omega * dspeed_dV) + arm * dG_dV;
   out.dw.row(0) = apparent * normal_sweep.transpose() + dG_dw;
-  out.dw.row(1) = apparent * (b * a * normal_sweep.transpose() - 0.5 * out.u * b * e.transpose()) + arm * dG_dw;
+  out.dw.row(1) = apparent * (b * a * normal_sweep.transpose() - 0.5 * speed * b * e.transpose()) + arm * dG_dw;
   out.dVdot.row(0) = apparent * n.transpose();
   out.dVdot.row(1) = apparent * b * a * n.transpose();
   out.dwdot.row(0) = -apparent * b * a * e.transpose();
@@ -178,19 +182,19 @@ BeamStripAero::Loads BeamStripAero::Compute(const Motion& m, const Flap& f) cons
   out.dflap.row(0) = dG_dflap;
   out.dflap.row(1) = arm * dG_dflap;
   for (int j = 0; j < N; ++j) {
-    const double dG = -k * out.u * 0.5 * inflow_.b[j];
+    const double dG = -k * speed * 0.5 * inflow_.b[j];
     out.dmu(0, j) = dG;
     out.dmu(1, j) = arm * dG;
   }
   if (has_flap()) AddFlapTerms(m, f, &out);
-  // The decay of Peters' inflow (A9): (u/b) (mu_i + lag_i w34).
+  // The decay of Peters' inflow (A9): (|u|/b) (mu_i + lag_i w34).
   for (int i = 0; i < N; ++i) {
     const int row = 3 + i;
-    out.y[row] = out.u / b * (m.mu[i] + lag_[i] * out.w34);
-    out.dV.row(row) = ((m.mu[i] + lag_[i] * out.w34) * du_dV + out.u * lag_[i] * out.dw34_dV) / b;
-    out.dw.row(row) = out.u * lag_[i] / b * out.dw34_dw;
-    out.dflap.row(row) = out.u * lag_[i] / b * out.dw34_dflap;
-    out.dmu(row, i) = out.u / b;
+    out.y[row] = speed / b * (m.mu[i] + lag_[i] * out.w34);
+    out.dV.row(row) = ((m.mu[i] + lag_[i] * out.w34) * dspeed_dV + speed * lag_[i] * out.dw34_dV) / b;
+    out.dw.row(row) = speed * lag_[i] / b * out.dw34_dw;
+    out.dflap.row(row) = speed * lag_[i] / b * out.dw34_dflap;
+    out.dmu(row, i) = speed / b;
   }
   return out;
 }
