@@ -108,5 +108,31 @@ TEST(WingAileron, GustThrowsTheFlapOffItsStopWithBooksBalanced) {
   EXPECT_LT(books, kBooks * throughput) << output;
 }
 
+TEST(WingAileron, ReleasedInItsGapTheFlapLandsOnItsStop) {
+  // freeplay_below.yaml started from the undeformed wing instead of its static equilibrium (static_first: false),
+  // default adaptive steps: the air swings the flap, at rest in the middle of its +-0.5 deg gap, onto the upper
+  // stop within 6 ms. The first step crossed the gap from rest and the contact rule (C6), judging it by the
+  // approach speed at its start (none), cut it to 2e-8 s, below dt_min: the run failed at t = 0. Reference:
+  // fixed steps of 2e-5 and 1e-5 s put the contact's start at 5.5103 and 5.5005 ms (second order: 5.497 ms
+  // converged). The adaptive steps land it within a few steps of about 1e-5 s (measured 5.505 ms): 1%.
+  constexpr double kConvergedStart = 5.497e-3, kRelative = 0.01;
+  std::string yaml = Replaced(ReadFile(kDir + "freeplay_below.yaml"), "static_first: true", "static_first: false");
+  yaml = Replaced(yaml, "t_end: 3.0", "t_end: 0.02");
+  const std::string csv = testing::TempDir() + "wing_aileron_release.csv";
+  yaml = Replaced(yaml, "rate_hz: 500", "rate_hz: 0");
+  yaml = Replaced(yaml, "cycle_from: 2.0", "csv: " + csv);
+  const std::string output = test::RunnerOutput("config/wing_aileron/wing_aileron.urdf", yaml, "wing_aileron_release");
+  const test::CsvTable table = test::ReadCsv(csv);
+  ASSERT_FALSE(table.rows.empty()) << output;
+  EXPECT_NEAR(table.rows.back().at(table.Column("t")), 0.02, 1.0e-12) << output;
+  const size_t upper = table.Column("stop.aileron_hinge.upper.in_contact"), t = table.Column("t");
+  double start = NAN;
+  for (const std::vector<double>& row : table.rows) {
+    if (std::isnan(start) && row.at(upper) == 1.0) start = row.at(t);
+  }
+  std::printf("on the upper stop from %.6g s\n", start);
+  EXPECT_NEAR(start, kConvergedStart, kRelative * kConvergedStart) << output;
+}
+
 }  // namespace
 }  // namespace flexmbd

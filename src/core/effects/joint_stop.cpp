@@ -211,6 +211,11 @@ StepLimit ElasticStop::Limit(const StepContext& ctx, const State& end) const {
   // -e v_in along about half a period, changing by at most pi v_in / N per step of 1/N of it.
   const double budget = kPi * f.reference_speed / steps_per_contact_;
   const double change = std::abs(GapRate(MeanRateChange(ctx)));
+  // A step that starts far from the stop, over which the approach speed changes by more than its start value, is
+  // only redone to land just before the stop (C5): the speed at its start says nothing of the impact's, which sizes
+  // the contact's steps from there. (Judged by it, a joint released at rest in its gap, whose first step crossed
+  // the gap, had its steps cut below any dt_min.)
+  if (limit.retry < ctx.h && change > f.reference_speed) return limit;
   // Only the step that begins the contact is judged when the local error test (T12) resolves the rest of it, and
   // with fixed steps a contact that has come to rest (approach speed below a tenth of v_in at the start of the
   // step) is left alone: inside a contact a change of rate need not shrink with the step (a joint starting to
