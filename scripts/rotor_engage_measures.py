@@ -44,6 +44,15 @@ def up_to(run, until):
     return header, [values[:kept] for values in columns]
 
 
+def print_early_and_late(label, time, values):
+    """Prints the range of `values` [m] up to EARLY s and after it."""
+    early = [v for t, v in zip(time, values) if t <= EARLY]
+    late = [v for t, v in zip(time, values) if t > EARLY]
+    print("  %s: %.4f to %.4f m in the first %g s, %.4f to %.4f m after" %
+          (label, min(early), max(early), EARLY, min(late) if late else float("nan"),
+           max(late) if late else float("nan")))
+
+
 def report(path, thrust_window, until):
     run = up_to(plot_bag.read_columns(path), until)
     time = column(run, "t")
@@ -55,18 +64,8 @@ def report(path, thrust_window, until):
             span = " from %.3f to %.3f s" % (intervals[0][0], intervals[-1][1]) if intervals else ""
             print("  blade %d %s stop: %d contact interval(s)%s" % (blade, "droop" if stop == "lower" else "flap",
                                                                     len(intervals), span))
-        height = tip_height(run, blade)
-        early = [h for t, h in zip(time, height) if t <= EARLY]
-        late = [h for t, h in zip(time, height) if t > EARLY]
-        print("  blade %d tip height: %.4f to %.4f m in the first %g s, %.4f to %.4f m after" %
-              (blade, min(early), max(early), EARLY, min(late) if late else float("nan"),
-               max(late) if late else float("nan")))
-        bending = tip_bending(run, blade)
-        early = [d for t, d in zip(time, bending) if t <= EARLY]
-        late = [d for t, d in zip(time, bending) if t > EARLY]
-        print("  blade %d tip bending: %.4f to %.4f m in the first %g s, %.4f to %.4f m after" %
-              (blade, min(early), max(early), EARLY, min(late) if late else float("nan"),
-               max(late) if late else float("nan")))
+        print_early_and_late("blade %d tip height" % blade, time, tip_height(run, blade))
+        print_early_and_late("blade %d tip bending" % blade, time, tip_bending(run, blade))
         flap = column(run, "joint.flap_%d.position" % blade)
         print("  blade %d flap: %.3f to %.3f deg, %.3f deg at the end" %
               (blade, math.degrees(min(flap)), math.degrees(max(flap)), math.degrees(flap[-1])))
