@@ -14,8 +14,8 @@ const std::vector<std::string> kEigenKeys = {"modes", "static_first", "method", 
                                              "at_times"};
 const std::vector<std::string> kSweepKeys = {"velocity_scale", "airspeed"};
 const std::vector<std::string> kErrorFloorKeys = {"position", "rotation", "joint"};
-const std::vector<std::string> kOutputKeys = {"rate_hz", "csv", "bag", "beam_stations", "strip_stations", "allow_large_output",
-                                              "cycle_from"};
+const std::vector<std::string> kOutputKeys = {"rate_hz", "csv", "bag", "beam_stations", "strip_stations",
+                                              "allow_large_output", "cycle_from"};
 
 // "0.01", or "0.01 (default)" if the key was not given.
 std::string ValueText(const Field& map, const std::string& key, double value) {

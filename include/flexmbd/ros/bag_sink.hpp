@@ -2,8 +2,8 @@
 /// @file
 /// Records every sample to a bag through the rosbag C++ API (no master needed). Layout (docs/ros.md): the
 /// sample topics of TopicNames, each message recorded at its header stamp (~contacts, ~friction, ~beam_loads
-/// and ~aero_loads only for a model that has stops, frictional joints, beam stations or aero sections), plus the
-/// markers and the static transforms (if any) once at the start.
+/// and ~aero_loads only for a model that has stops, frictional joints, beam stations, or aero sections or strip
+/// stations), plus the markers and the static transforms (if any) once at the start.
 ///
 /// Every write is checked: a failed one (disk full, file size limit) throws OutputError. The bag cannot be
 /// closed then (closing writes its index, which fails as well), so it is left unindexed: `rosbag reindex`

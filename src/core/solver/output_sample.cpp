@@ -25,17 +25,14 @@ AeroSectionSample SampleAero(const TypicalSectionAero& section, const State& sta
   return sample;
 }
 
-AeroSectionSample SampleStrips(const StripStationInfo& station, const State& state, const StepContext& ctx) {
-  const double u = station.weight;
-  const Vec3 loads = (1.0 - u) * station.inner->StripLoads(ctx) / station.inner->length() +
-                     u * station.outer->StripLoads(ctx) / station.outer->length();
-  const int n = station.inner->num_states();
+// One strip's loads per unit span and its states.
+AeroSectionSample SampleStrip(const BeamStripAero& strip, const State& state, const StepContext& ctx) {
+  const Vec3 loads = strip.StripLoads(ctx) / strip.length();
   AeroSectionSample sample;
   sample.lift = loads[0];
   sample.moment = loads[1];
   sample.hinge_moment = loads[2];
-  sample.inflow = (1.0 - u) * state.element_states.segment(station.inner->first_state(), n) +
-                  u * state.element_states.segment(station.outer->first_state(), n);
+  sample.inflow = state.element_states.segment(strip.first_state(), strip.num_states());
   return sample;
 }
 
@@ -77,7 +74,12 @@ OutputSample MakeSample(const Model& model, const State& state, const StepContex
   s.numerical_dissipation = state.dissipated_numerical;
   for (const BeamStationInfo& station : model.beam_stations()) s.beam_stations.push_back(SampleStation(model, state, station));
   for (const TypicalSectionAero* section : model.aero_sections()) s.aero_sections.push_back(SampleAero(*section, state, ctx));
-  for (const StripStationInfo& station : model.strip_stations()) s.strip_stations.push_back(SampleStrips(station, state, ctx));
+  for (const StripStationInfo& station : model.strip_stations()) {
+    // A station at a node (weight 0) takes that node's strip alone.
+    const AeroSectionSample inner = SampleStrip(*station.inner, state, ctx);
+    const bool between = station.weight > 0.0;
+    s.strip_stations.push_back(between ? Mix(inner, SampleStrip(*station.outer, state, ctx), station.weight) : inner);
+  }
   s.dt = dt;
   s.iterations = iterations;
   return s;
