@@ -7,10 +7,9 @@
 
 #include <cmath>
 #include <string>
-#include <utility>
 #include <vector>
 
-#include "helpers/csv_table.hpp"
+#include "helpers/aero_loads_csv.hpp"
 #include "helpers/node_run.hpp"
 
 namespace flexmbd {
@@ -25,22 +24,12 @@ constexpr size_t kSampleCount = 51;  // t = 0, 0.01, ..., 0.5 s
 constexpr int kInflowStates = 6;     // aero.sections.conner.inflow_states
 // Same run, same steps: the node's records equal the runner's CSV to its 17 digits.
 constexpr double kSameRunTolerance = 1.0e-9;
-// Stamps are nanoseconds.
-constexpr double kStampResolution = 1.0e-9;
 
 NodeRun RecordRun() {
   return RecordNodeAndRunner({kNodeName, kUrdf, kConfig, /*record_bag=*/true,
                               [](const Samples& s) {
                                 return !s.aero_loads.empty() && TimeOf(s.aero_loads.back()) >= kEndTime - 1e-9;
                               }});
-}
-
-// The values of a section entry under their CSV column suffixes (docs/config.md, "aero").
-std::vector<std::pair<std::string, double>> SectionColumns(const AeroSectionLoads& m) {
-  std::vector<std::pair<std::string, double>> columns{
-      {"lift", m.lift}, {"moment", m.moment}, {"hinge_moment", m.hinge_moment}};
-  for (size_t k = 0; k < m.inflow.size(); ++k) columns.emplace_back("mu_" + std::to_string(k + 1), m.inflow[k]);
-  return columns;
 }
 
 class AeroLoads : public testing::Test {
@@ -69,21 +58,8 @@ TEST_F(AeroLoads, MessagesNameTheSectionAndItsInflowStates) {
 
 TEST_F(AeroLoads, RecordsMatchTheRunnersCsv) {
   // Reference: the aero.<section>.* columns the runner writes for the same case.
-  const CsvTable& csv = record_->csv;
-  const std::vector<AeroLoadsArray>& messages = record_->topics.aero_loads;
-  ASSERT_EQ(csv.rows.size(), kSampleCount) << "the runner did not write its CSV";
-  ASSERT_EQ(messages.size(), csv.rows.size());
-  for (size_t k = 0; k < messages.size(); ++k) {
-    const std::vector<double>& row = csv.rows[k];
-    EXPECT_NEAR(TimeOf(messages[k]), row[csv.Column("t")], kStampResolution) << "sample " << k;
-    for (const AeroSectionLoads& section : messages[k].sections) {
-      for (const auto& [suffix, value] : SectionColumns(section)) {
-        const std::string column = "aero." + section.section + "." + suffix;
-        const double expected = row[csv.Column(column)];
-        EXPECT_NEAR(value, expected, kSameRunTolerance * (1.0 + std::abs(expected))) << column << " at t = " << row[0];
-      }
-    }
-  }
+  ASSERT_EQ(record_->csv.rows.size(), kSampleCount) << "the runner did not write its CSV";
+  ExpectAeroLoadsMatchCsv(record_->topics.aero_loads, record_->csv, kSameRunTolerance);
 }
 
 TEST_F(AeroLoads, NodesBagHoldsWhatWasPublished) {
