@@ -14,13 +14,12 @@ Usage: plot_wing_aileron_lco.py CSV [--out PNG] [--float-deg X --float-aoa A]
 """
 
 import argparse
-import csv
 import os
 import sys
 
-import matplotlib
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402 (after the backend)
+from matplotlib.ticker import ScalarFormatter
+
+from plot_csv import CsvError, plt, read_csv  # the runner CSVs' reader beside this file; selects the Agg backend
 
 COLUMNS = ("aoa_deg", "freeplay_deg", "u_decays", "u_sustains", "u_flutter")
 DEFAULT_OUT = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "docs", "figures",
@@ -29,20 +28,14 @@ DEFAULT_OUT = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "do
 
 def read_rows(path):
     """The CSV's rows as dicts of floats, grouped by angle of attack (in file order)."""
+    header, columns = read_csv(path, first=(COLUMNS[0], "the root angle of attack [deg]"))
+    missing = [name for name in COLUMNS if name not in header]
+    if missing:
+        raise CsvError(f"{path}: header: missing column(s) {', '.join(missing)}; expected {', '.join(COLUMNS)}")
     groups = {}
-    with open(path, newline="", encoding="utf-8") as stream:
-        reader = csv.DictReader(stream)
-        missing = [name for name in COLUMNS if name not in (reader.fieldnames or [])]
-        if missing:
-            raise ValueError(f"{path}: missing column(s) {', '.join(missing)}; expected {', '.join(COLUMNS)}")
-        for line, row in enumerate(reader, start=2):
-            try:
-                values = {name: float(row[name]) for name in COLUMNS}
-            except (TypeError, ValueError):
-                raise ValueError(f"{path}: line {line}: expected numbers in {', '.join(COLUMNS)}") from None
-            groups.setdefault(values["aoa_deg"], []).append(values)
-    if not groups:
-        raise ValueError(f"{path}: no rows")
+    for values in zip(*(columns[header.index(name)] for name in COLUMNS)):
+        row = dict(zip(COLUMNS, values))
+        groups.setdefault(row["aoa_deg"], []).append(row)
     return groups
 
 
@@ -61,7 +54,7 @@ def plot(groups, out, float_deg, float_aoa):
                    label=f"free flap's floating angle at {float_aoa:g} deg")
     ax.set_xscale("log")
     ax.set_xticks(sorted({r["freeplay_deg"] for rows in groups.values() for r in rows}))
-    ax.get_xaxis().set_major_formatter(matplotlib.ticker.ScalarFormatter())
+    ax.get_xaxis().set_major_formatter(ScalarFormatter())
     ax.set_xlabel("freeplay +- [deg]")
     ax.set_ylabel("U_LCO / U_F")
     ax.set_ylim(0.0, 1.1)
@@ -82,7 +75,7 @@ def main(argv):
     args = parser.parse_args(argv)
     try:
         print(plot(read_rows(args.csv), args.out, args.float_deg, args.float_aoa))
-    except (OSError, ValueError) as error:
+    except (OSError, CsvError) as error:
         print(f"error: plot_wing_aileron_lco.py: {error}", file=sys.stderr)
         return 2
     return 0
