@@ -93,8 +93,10 @@ BeamStripAero::Motion BeamStripAero::MotionAt(const StepContext& ctx) const {
     acceleration = n.vdot_f;
   }
   const Vec3 air = free_stream_ + Evaluate(gust_scale_, t) * gust_;
+  // An equilibrium holds the air as it is at t, at rest: the gust's rate, like the node's, is no load on it.
+  const double gust_rate = ctx.mode == AnalysisMode::kStatic ? 0.0 : EvaluateRate(gust_scale_, t);
   m.V = m.R.transpose() * (air - v);
-  m.Vdot = m.R.transpose() * (EvaluateRate(gust_scale_, t) * gust_ - acceleration);
+  m.Vdot = m.R.transpose() * (gust_rate * gust_ - acceleration);
   if (has_flap()) {
     const NodeFrame flap = FrameAt((*ctx.nodes)[flap_.node], ctx);
     m.R_flap = flap.R;

@@ -173,7 +173,7 @@ EigenResult SolveDense(const Model& model, const LinearisedSystem& system, const
   } else {
     raw = FirstOrderRootsWithoutRigidMotions(Kt, Dt, T, scale, crossover);
   }
-  ClassifyModes(system, raw, symmetric, scale, 0.0, options, &result);
+  ClassifyModes(system, raw, symmetric, 0, scale, 0.0, options, &result);
   return result;
 }
 

@@ -54,7 +54,7 @@ EigenResult SolveDenseWithStates(const Model& model, const LinearisedSystem& sys
   // Frequency scale: the largest root, against which rigid-body roots are judged (theory (E5)).
   double scale = eig.eigenvalues().cwiseAbs().maxCoeff();
   if (!(scale > 0)) scale = 1.0;
-  ClassifyModes(system, raw, false, scale, 0.0, options, &result);
+  ClassifyModes(system, raw, false, ns, scale, 0.0, options, &result);
   return result;
 }
 

@@ -54,12 +54,13 @@ struct RawMode {
 /// engages (|x|^T |K| |x| and |x|^T |D| |x| over x^H M x) are at round-off level against scale. Rigid roots
 /// give one mode each in a symmetric problem (`symmetric`: one root omega^2 per degree of freedom), else half
 /// as many, rounded up (a rigid motion is a double root of the first-order problem), with shapes spanning the
-/// roots' vectors. Sorted rigid first, then by frequency, and cut to options.num_modes.
-void ClassifyModes(const LinearisedSystem& system, const std::vector<RawMode>& all, bool symmetric, double scale,
-                   double floor, const EigenOptions& options, EigenResult* result);
+/// roots' vectors. Sorted rigid first, then by frequency, and cut to options.num_modes. The last `num_states`
+/// components of each shape are element states: a root that moves them alone is never rigid.
+void ClassifyModes(const LinearisedSystem& system, const std::vector<RawMode>& all, bool symmetric, int num_states,
+                   double scale, double floor, const EigenOptions& options, EigenResult* result);
 
 /// The rigid-body test of ClassifyModes for one root.
-bool IsRigidRoot(const LinearisedSystem& system, const RawMode& mode, double scale, double floor,
+bool IsRigidRoot(const LinearisedSystem& system, const RawMode& mode, int num_states, double scale, double floor,
                  const EigenOptions& options);
 
 /// Every mode by null-space elimination and a dense eigensolver.

@@ -307,7 +307,7 @@ EigenResult SolveSparse(const Model& model, const LinearisedSystem& system, cons
   const double target = 2 * M_PI * options.shift_hz;
   const double offset = kShiftOffset * scale;
   // A rigid-body root comes out within a small fraction of this offset from 0 (below: with the second shift).
-  ClassifyModes(system, NearestRoots(system, Complex(-offset, target), wanted, max_krylov), false, scale,
+  ClassifyModes(system, NearestRoots(system, Complex(-offset, target), wanted, max_krylov), false, 0, scale,
                 kRigidFractionOfOffset * offset, all, &result);
   if (result.num_rigid_body > 0) {
     // A rigid-body motion is a defective double root at 0: with the shift that close, its Jordan block
@@ -318,7 +318,7 @@ EigenResult SolveSparse(const Model& model, const LinearisedSystem& system, cons
       if (!mode.rigid_body) lowest = std::min(lowest, 2 * M_PI * mode.frequency_hz);
     }
     const double second = kRigidShiftFraction * lowest;
-    ClassifyModes(system, NearestRoots(system, Complex(-second, target), wanted, max_krylov), false, scale,
+    ClassifyModes(system, NearestRoots(system, Complex(-second, target), wanted, max_krylov), false, 0, scale,
                   kRigidFractionOfSecondOffset * second, all, &result);
   }
   KeepNearest(options.shift_hz, num_modes, &result);
