@@ -9,16 +9,29 @@ namespace {
 // Pivots of the QR of B^T below this fraction of the largest are dependent constraint rows: redundant
 // constraints give pivots at round-off (1e-16 relative); genuine ones differ by the ratio of lever arms.
 constexpr double kRankTolerance = 1.0e-10;
+
+// A Jacobian without a nonzero entry constrains nothing (the QR's relative threshold needs a largest pivot).
+bool ConstrainsNothing(const Eigen::MatrixXd& B) { return B.size() == 0 || B.cwiseAbs().maxCoeff() == 0.0; }
+
+// The column-pivoted QR of B^T with the rank threshold.
+Eigen::ColPivHouseholderQR<Eigen::MatrixXd> PivotedQr(const Eigen::MatrixXd& B) {
+  Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(B.transpose());
+  qr.setThreshold(kRankTolerance);
+  return qr;
+}
 }  // namespace
 
+int ConstraintNullSpace::RankOf(const Eigen::MatrixXd& B) {
+  return ConstrainsNothing(B) ? 0 : static_cast<int>(PivotedQr(B).rank());
+}
+
 ConstraintNullSpace::ConstraintNullSpace(const Eigen::MatrixXd& B, int num_kinematic) : n_(num_kinematic) {
-  if (B.rows() == 0 || B.cwiseAbs().maxCoeff() == 0.0) {
+  if (ConstrainsNothing(B)) {
     Z_ = Eigen::MatrixXd::Identity(n_, n_);
     Q1_.resize(n_, 0);
     return;
   }
-  Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(B.transpose());
-  qr.setThreshold(kRankTolerance);
+  const Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr = PivotedQr(B);
   rank_ = static_cast<int>(qr.rank());
   const Eigen::MatrixXd Q = qr.householderQ() * Eigen::MatrixXd::Identity(n_, n_);
   Q1_ = Q.leftCols(rank_);

@@ -12,6 +12,8 @@ namespace flexmbd {
 class ConstraintNullSpace {
  public:
   ConstraintNullSpace(const Eigen::MatrixXd& B, int num_kinematic);
+  /// The rank of B by the same QR and pivot rule, without forming Q (the test for repeated rows needs only it).
+  static int RankOf(const Eigen::MatrixXd& B);
   const Eigen::MatrixXd& Z() const { return Z_; }
   int rank() const { return rank_; }
   /// The smallest-norm x with B x = c (c consistent with B when rows of B are dependent).

@@ -73,7 +73,7 @@ bool StickingRedundancy::Repeats(int row, const std::vector<bool>& kept) const {
   for (int i = 0; i <= m; ++i) {
     for (const auto& entry : rows_[i < m ? rows[i] : row]) B(i, local[entry.first]) += entry.second;
   }
-  return ConstraintNullSpace(B, n).rank() == ConstraintNullSpace(B.topRows(m), n).rank();
+  return ConstraintNullSpace::RankOf(B) == ConstraintNullSpace::RankOf(B.topRows(m));
 }
 
 void StickingRedundancy::Mark(const State& state, std::vector<EffectState>* modes) {
