@@ -121,7 +121,8 @@ Mat3 RotationVectorCalculus::AppliedDerivative(const Vec3& w, double sign) const
 Mat3 RotationVectorCalculus::TangentSecondDerivative(const Vec3& d1, const Vec3& d2) const {
   const double p1 = psi_.dot(d1), p2 = psi_.dot(d2);
   return b_ * SkewProductSum(d1, d2) + 2.0 * p2 * (-a_s_ * Skew(d1) + b_s_ * SkewProductSum(d1, psi_)) +
-         2.0 * p1 * (-a_s_ * Skew(d2) + b_s_ * SkewProductSum(d2, psi_)) + 2.0 * d1.dot(d2) * (-a_s_ * K_ + b_s_ * K2_) +
+         2.0 * p1 * (-a_s_ * Skew(d2) + b_s_ * SkewProductSum(d2, psi_)) +
+         2.0 * d1.dot(d2) * (-a_s_ * K_ + b_s_ * K2_) +
          4.0 * p1 * p2 * (-a_ss_ * K_ + b_ss_ * K2_);
 }
 
