@@ -74,6 +74,13 @@ TEST(RotationVectorCalculus, DerivativesMatchFiniteDifferences) {
         EXPECT_NEAR(form(i, j), contracted, 1e-13) << angle;
       }
     }
+    // The applied forms against DT[e_j] v and DT[e_j]^T v: the same terms regrouped, round-off only.
+    for (int j = 0; j < 3; ++j) {
+      const Mat3 DT = c.TangentDerivative(Vec3::Unit(j));
+      EXPECT_LT((c.TangentDerivativeApplied(v).col(j) - DT * v).cwiseAbs().maxCoeff(), 1e-13) << angle;
+      EXPECT_LT((c.TransposedTangentDerivativeApplied(v).col(j) - DT.transpose() * v).cwiseAbs().maxCoeff(), 1e-13)
+          << angle;
+    }
   }
 }
 

@@ -66,6 +66,9 @@ class BeamStrainField {
   /// K += sum_g B_g^T material_g B_g (if material) + d/dp [sum_g B_g^T stress_g] at fixed stress_g, rotations
   /// moved as R_k Exp(d phi_k) (Order kSecond).
   void AddTangent(const PointVectors& stress, const std::array<Mat6, kMaxPoints>* material, Matrix* K) const;
+  /// sum_g B_g^T material_g B'_g, B' the strain Jacobians of `right`, a field of the same shape (Order kFirst
+  /// or kSecond, both): the material tangent of stresses at one configuration that follow the strains of another.
+  Matrix MaterialTangent(const BeamStrainField& right, const std::array<Mat6, kMaxPoints>& material) const;
   /// d/dp [B_g v] at fixed v, for every point g (Order kSecond). Note sum_g D_g^T s_g = K^T v for the K that
   /// AddTangent(s) adds without material: both are the second derivative of s . strain with the same turn.
   std::array<Jacobian, kMaxPoints> StrainJacobianDerivatives(const Vector& v) const;
@@ -80,10 +83,10 @@ class BeamStrainField {
     Vec6 strain;
     std::optional<RotationVectorCalculus> calculus;
     Mat69 E;             // d strain / d q
-    std::array<Mat3, 3> DT;  // DT[e_j] at psi_g
   };
   struct Node {
     Vec3 y, psi;
+    Mat3 skew_y;
     Mat3 Q;  // R_r^T R_k
     std::optional<RotationVectorCalculus> calculus;
     Mat3 inverse_tangent_Qt;  // T(psi_k)^-1 Q_k^T
@@ -96,12 +99,16 @@ class BeamStrainField {
   // X dq_g/dz for X with 9 columns (rows x 6n), and (dq_g/dz)^T x for a 9-vector.
   template <int Rows>
   Wide<Rows, Rows> PointToLocal(int g, const Eigen::Matrix<double, Rows, 9>& X) const;
+  // Kz += (dq_g/dz)^T H (dq_g/dz), leaving out the reference node's blocks (its z is zero).
+  void AddPointToLocal(int g, const Mat9& H, Matrix* Kz) const;
   Vector PointToLocal(int g, const Eigen::Matrix<double, 9, 1>& x) const;
   // dz/dp applied: X (dz/dp) for X with 6n columns, and (dz/dp)^T c for a covector c of z.
   template <class Derived>
   Wide<Derived::RowsAtCompileTime, Derived::MaxRowsAtCompileTime>
   LocalToPerturbation(const Eigen::MatrixBase<Derived>& X) const;
   Vector LocalToPerturbation(const Vector& c) const;
+  // (dz/dp)^T X for X with 6n rows.
+  Matrix LocalToPerturbationRows(const Matrix& X) const;
   // dz/dp v.
   Vector LocalRate(const Vector& v) const;
   // dq_g/dz z_dot.

@@ -29,6 +29,10 @@ class RotationVectorCalculus {
   Mat3 SecantDerivative(const Vec3& d) const;
   /// DT[d]: the derivative of T along d (level kFirst or kSecond).
   Mat3 TangentDerivative(const Vec3& d) const;
+  /// The matrix of d -> DT[d] w, the derivative of T(psi) w at fixed w (level kFirst or kSecond).
+  Mat3 TangentDerivativeApplied(const Vec3& w) const;
+  /// The same for T(psi)^T w = T(-psi) w: entry (i, j) is w . (DT[e_j] e_i) (level kFirst or kSecond).
+  Mat3 TransposedTangentDerivativeApplied(const Vec3& w) const;
   /// D2T[d1, d2]: the second derivative of T (symmetric in d1, d2; level kSecond).
   Mat3 TangentSecondDerivative(const Vec3& d1, const Vec3& d2) const;
   /// The symmetric matrix B with d1^T B d2 = m . (D2T[d1, d2] v) (level kSecond): the second derivative
@@ -38,6 +42,9 @@ class RotationVectorCalculus {
   Mat3 InverseTangentDerivative(const Vec3& d) const;
 
  private:
+  // The derivative of T(sign psi) w along psi, sign = +-1.
+  Mat3 AppliedDerivative(const Vec3& w, double sign) const;
+
   Vec3 psi_;
   Mat3 K_, K2_;
   // T = I - a K + b K^2 and T^-1 = I + K/2 + c K^2; the suffixes _s, _ss are d/ds, d2/ds2.

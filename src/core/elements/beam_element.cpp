@@ -18,13 +18,24 @@ struct IncrementMap {
   double translation_rate = 1.0;
   std::array<Mat3, BeamShape::kMaxNodes> rotation;
 
-  template <class MatrixType>
-  void ApplyToColumns(int num_nodes, MatrixType* M) const {
+  // In strips of three rows, so that every product is a fixed-size 3x3 one.
+  void ApplyToColumns(int num_nodes, Field::Matrix* M) const {
     for (int k = 0; k < num_nodes; ++k) {
       M->middleCols(6 * k, 3) *= translation_rate;
-      const auto block = M->middleCols(6 * k + 3, 3).eval();
-      M->middleCols(6 * k + 3, 3).noalias() = block * rotation[k];
+      for (int i = 0; i < M->rows(); i += 3) {
+        const Mat3 block = M->block<3, 3>(i, 6 * k + 3);
+        M->block<3, 3>(i, 6 * k + 3).noalias() = block * rotation[k];
+      }
     }
+  }
+  // The map's transpose applied to a gradient: forces in the increments from forces in the perturbations.
+  Field::Vector ApplyTransposed(int num_nodes, const Field::Vector& f) const {
+    Field::Vector out(6 * num_nodes);
+    for (int k = 0; k < num_nodes; ++k) {
+      out.segment<3>(6 * k) = translation_rate * f.segment<3>(6 * k);
+      out.segment<3>(6 * k + 3).noalias() = rotation[k].transpose() * f.segment<3>(6 * k + 3);
+    }
+    return out;
   }
 };
 
@@ -136,10 +147,9 @@ void BeamElement::AddRateParts(const StepContext& ctx, Eigen::Ref<Eigen::MatrixX
   Field::Vector rates;
   EndNodesAndRates(ctx, &end, &rates);
   const Field field(shape_, end, Field::Order::kFirst);
-  for (int g = 0; g < field.num_points(); ++g) {
-    const Field::Jacobian B = field.StrainJacobian(g);
-    D.noalias() += B.transpose() * (damping_ * weighted_stiffness_[g]) * B;
-  }
+  std::array<Mat6, BeamShape::kMaxPoints> viscous;
+  for (int g = 0; g < field.num_points(); ++g) viscous[g] = damping_ * weighted_stiffness_[g];
+  D += field.MaterialTangent(field, viscous);
 }
 
 double BeamElement::StrainRoundOff(const StepContext& ctx) const {
@@ -238,22 +248,22 @@ void BeamElement::AddStepStressTangent(const StepFields& step, const StepStress&
                                        Field::Matrix* K) const {
   // The material part B_mid^T rate B_end and the derivative of the gap term; the geometric part K_mid came
   // with the middle configuration's tangent.
-  const int n = shape_.num_nodes(), dofs = 6 * n;
-  const bool moved = step.norm > 0.0;
+  const int n = shape_.num_nodes();
+  Field::Matrix material = step.mid->MaterialTangent(*step.end, stress.rate);
+  step.to_end.ApplyToColumns(n, &material);
+  *K += material;
+  if (step.norm == 0.0) return;
+  // d gap_work = sum_g [B_end^T rate^T gap + (B_end - B_mid)^T stress], the second term where a gap is left.
+  Field::PointVectors on_end, on_mid;
   bool any_gap = false;
-  Field::Vector dgap_work = Field::Vector::Zero(dofs);
   for (int g = 0; g < step.mid->num_points(); ++g) {
-    const Field::Jacobian B_mid = step.mid->StrainJacobian(g);
-    Field::Jacobian B_end = step.end->StrainJacobian(g);
-    step.to_end.ApplyToColumns(n, &B_end);
-    K->noalias() += B_mid.transpose() * stress.rate[g] * B_end;
-    if (!moved) continue;
-    dgap_work.noalias() += B_end.transpose() * (stress.rate[g].transpose() * stress.gap[g]);
-    if (stress.gap[g].isZero(0.0)) continue;
-    any_gap = true;
-    dgap_work.noalias() += (B_end - B_mid).transpose() * stress.stress[g];
+    const bool gap = !stress.gap[g].isZero(0.0);
+    any_gap = any_gap || gap;
+    on_mid[g] = gap ? stress.stress[g] : Vec6::Zero();
+    on_end[g] = stress.rate[g].transpose() * stress.gap[g] + on_mid[g];
   }
-  if (!moved) return;
+  Field::Vector dgap_work = step.to_end.ApplyTransposed(n, step.end->Gradient(on_end));
+  if (any_gap) dgap_work -= step.mid->Gradient(on_mid);
   // The gap's derivative through B_mid at fixed d, summed against the stresses, is K_mid^T d: both are the
   // second derivative of stress . strain at the middle configuration (BeamStrainField::AddTangent). It is
   // taken over every point once any gap is above round-off (a point whose gap was cut to zero at round-off

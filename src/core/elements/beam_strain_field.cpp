@@ -24,6 +24,7 @@ BeamStrainField::BeamStrainField(const BeamShape& shape, const Nodes& nodes, Ord
     node.Q = R_ref_.transpose() * nodes.R[k];
     node.psi = k == r ? Vec3::Zero() : Log(node.Q);
     node.y = R_ref_.transpose() * (nodes.x[k] - nodes.x[r]);
+    node.skew_y = Skew(node.y);
     if (order != Order::kStrains) node.calculus.emplace(node.psi, order == Order::kFirst ? Level::kFirst : Level::kSecond);
   }
   for (int g = 0; g < shape.num_points; ++g) {
@@ -49,10 +50,7 @@ BeamStrainField::BeamStrainField(const BeamShape& shape, const Nodes& nodes, Ord
     p.E.setZero();
     p.E.block<3, 3>(0, kDy) = c.exp().transpose();
     p.E.block<3, 3>(0, kPsi) = Skew(p.a) * c.tangent();
-    for (int j = 0; j < 3; ++j) {
-      p.DT[j] = c.TangentDerivative(Vec3::Unit(j));
-      p.E.block<3, 1>(3, kPsi + j) = p.DT[j] * p.dpsi;
-    }
+    p.E.block<3, 3>(3, kPsi) = c.TangentDerivativeApplied(p.dpsi);
     p.E.block<3, 3>(3, kDpsi) = c.tangent();
   }
 }
@@ -87,26 +85,48 @@ BeamStrainField::Vector BeamStrainField::PointToLocal(int g, const Eigen::Matrix
 template <class Derived>
 BeamStrainField::Wide<Derived::RowsAtCompileTime, Derived::MaxRowsAtCompileTime>
 BeamStrainField::LocalToPerturbation(const Eigen::MatrixBase<Derived>& X) const {
+  // Taken in strips of rows of fixed height, so that every product is a fixed-size 3-column one.
+  constexpr int kStrip = Derived::RowsAtCompileTime == 1 ? 1 : 3;
   const int n = shape_->num_nodes(), r = shape_->reference;
   BeamStrainField::Wide<Derived::RowsAtCompileTime, Derived::MaxRowsAtCompileTime> out;
   out.setZero(X.rows(), 6 * n);
-  const Mat3 Rt = R_ref_.transpose();
-  for (int k = 0; k < n; ++k) {
-    if (k == r) continue;
-    const Node& node = nodes_[k];
-    const auto Xy = X.template middleCols<3>(6 * k);
-    const auto Xpsi = X.template middleCols<3>(6 * k + kRotation);
-    out.template middleCols<3>(6 * k).noalias() = Xy * Rt;
-    out.template middleCols<3>(6 * r).noalias() -= Xy * Rt;
-    out.template middleCols<3>(6 * r + kRotation).noalias() += Xy * Skew(node.y);
-    out.template middleCols<3>(6 * r + kRotation).noalias() -= Xpsi * node.inverse_tangent_Qt;
-    out.template middleCols<3>(6 * k + kRotation).noalias() = Xpsi * node.calculus->inverse_tangent();
+  for (int i = 0; i < X.rows(); i += kStrip) {
+    for (int k = 0; k < n; ++k) {
+      if (k == r) continue;
+      const Node& node = nodes_[k];
+      const Eigen::Matrix<double, kStrip, 3> Xy = X.template block<kStrip, 3>(i, 6 * k);
+      const Eigen::Matrix<double, kStrip, 3> Xpsi = X.template block<kStrip, 3>(i, 6 * k + kRotation);
+      const Eigen::Matrix<double, kStrip, 3> XyRt = Xy * R_ref_.transpose();
+      out.template block<kStrip, 3>(i, 6 * k) = XyRt;
+      out.template block<kStrip, 3>(i, 6 * r) -= XyRt;
+      out.template block<kStrip, 3>(i, 6 * r + kRotation) += Xy * node.skew_y - Xpsi * node.inverse_tangent_Qt;
+      out.template block<kStrip, 3>(i, 6 * k + kRotation) = Xpsi * node.calculus->inverse_tangent();
+    }
   }
   return out;
 }
 
 BeamStrainField::Vector BeamStrainField::LocalToPerturbation(const Vector& c) const {
   return LocalToPerturbation(c.transpose()).transpose();
+}
+
+BeamStrainField::Matrix BeamStrainField::LocalToPerturbationRows(const Matrix& X) const {
+  // The transpose of LocalToPerturbation(X^T), in strips of three columns.
+  const int n = shape_->num_nodes(), r = shape_->reference;
+  Matrix out = Matrix::Zero(6 * n, X.cols());
+  for (int j = 0; j < X.cols(); j += 3) {
+    for (int k = 0; k < n; ++k) {
+      if (k == r) continue;
+      const Node& node = nodes_[k];
+      const Mat3 Xy = X.block<3, 3>(6 * k, j), Xpsi = X.block<3, 3>(6 * k + kRotation, j);
+      const Mat3 RXy = R_ref_ * Xy;
+      out.block<3, 3>(6 * k, j) = RXy;
+      out.block<3, 3>(6 * r, j) -= RXy;
+      out.block<3, 3>(6 * r + kRotation, j) -= node.skew_y * Xy + node.inverse_tangent_Qt.transpose() * Xpsi;
+      out.block<3, 3>(6 * k + kRotation, j) = node.calculus->inverse_tangent().transpose() * Xpsi;
+    }
+  }
+  return out;
 }
 
 BeamStrainField::Vector BeamStrainField::LocalRate(const Vector& v) const {
@@ -159,14 +179,13 @@ void BeamStrainField::AddTangent(const PointVectors& stress, const std::array<Ma
     const Point& p = points_[g];
     c += PointToLocal(g, p.E.transpose() * stress[g]);
     Mat9 H = PointHessian(p, stress[g]);
-    if (material != nullptr) H.noalias() += p.E.transpose() * (*material)[g] * p.E;
-    // A^T H A with A = dq/dz.
-    const Eigen::Matrix<double, 9, Eigen::Dynamic, 0, 9, kMaxDofs> HA = PointToLocal<9>(g, H);
-    Kz += PointToLocalColumns(*shape_, g, HA.transpose());
+    if (material != nullptr) {
+      const Mat69 CE = (*material)[g] * p.E;
+      H.noalias() += p.E.transpose().lazyProduct(CE);
+    }
+    AddPointToLocal(g, H, &Kz);
   }
-  // (dz/dp)^T Kz (dz/dp).
-  const Matrix KzJ = LocalToPerturbation(Kz);
-  *K += LocalToPerturbation(KzJ.transpose()).transpose();
+  *K += LocalToPerturbationRows(LocalToPerturbation(Kz));
   AddLocalCoordinateHessian(c, K);
   // The forces are gradients along R_k Exp(phi_k); moving R_k by Exp(d) turns them by half the rotation:
   // d/dd [grad at R Exp(d)] = Hessian + Skew(forces_phi) / 2 (docs/theory.md, (B12)).
@@ -176,23 +195,53 @@ void BeamStrainField::AddTangent(const PointVectors& stress, const std::array<Ma
   }
 }
 
+BeamStrainField::Matrix BeamStrainField::MaterialTangent(const BeamStrainField& right,
+                                                         const std::array<Mat6, kMaxPoints>& material) const {
+  Matrix Kz = Matrix::Zero(num_dofs(), num_dofs());
+  for (int g = 0; g < num_points(); ++g) {
+    const Mat69 CE = material[g] * right.points_[g].E;
+    const Mat9 H = points_[g].E.transpose().lazyProduct(CE);
+    AddPointToLocal(g, H, &Kz);
+  }
+  return LocalToPerturbationRows(right.LocalToPerturbation(Kz));
+}
+
+void BeamStrainField::AddPointToLocal(int g, const Mat9& H, Matrix* Kz) const {
+  // (dq_g/dz) is a scalar multiple of the identity per 3x3 block: node l's columns are N'_l on y', N_l on psi
+  // and N'_l on psi'. The reference node's blocks are skipped: its z is zero whatever the nodes do.
+  const int n = shape_->num_nodes(), r = shape_->reference;
+  for (int l = 0; l < n; ++l) {
+    if (l == r) continue;
+    const double N_l = shape_->N[g][l], dN_l = shape_->dNds[g][l];
+    Eigen::Matrix<double, 9, 6> HA;
+    HA.leftCols<3>() = dN_l * H.middleCols<3>(kDy);
+    HA.rightCols<3>() = N_l * H.middleCols<3>(kPsi) + dN_l * H.middleCols<3>(kDpsi);
+    for (int k = 0; k < n; ++k) {
+      if (k == r) continue;
+      const double N_k = shape_->N[g][k], dN_k = shape_->dNds[g][k];
+      Kz->block<3, 6>(6 * k, 6 * l) += dN_k * HA.middleRows<3>(kDy);
+      Kz->block<3, 6>(6 * k + kRotation, 6 * l) += N_k * HA.middleRows<3>(kPsi) + dN_k * HA.middleRows<3>(kDpsi);
+    }
+  }
+}
+
 BeamStrainField::Mat9 BeamStrainField::PointHessian(const Point& p, const Vec6& stress) const {
   const RotationVectorCalculus& c = *p.calculus;
   const Mat3& T = c.tangent();
   const Vec3 force = stress.head<3>(), moment = stress.tail<3>();
-  const std::array<Mat3, 3>& DT = p.DT;
   Mat9 H = Mat9::Zero();
   // eps = Exp(psi)^T y' - e1: d eps = Exp(psi)^T dy' + Skew(a) T dpsi.
   const Mat3 cross = -c.exp() * Skew(force) * T;
   H.block<3, 3>(kDy, kPsi) = cross;
   H.block<3, 3>(kPsi, kDy) = cross.transpose();
   Mat3 psi_psi = T.transpose() * (p.a * force.transpose() - force.dot(p.a) * Mat3::Identity()) * T;
-  const Vec3 force_cross_a = force.cross(p.a);
-  for (int j = 0; j < 3; ++j) psi_psi.col(j) += DT[j].transpose() * force_cross_a;
+  // Entry (i, j) of (n x a) . DT[e_j] e_i, the derivative of T^T (n x a).
+  psi_psi += c.TransposedTangentDerivativeApplied(force.cross(p.a));
   // kappa = T(psi) psi'.
   psi_psi += c.TangentSecondDerivativeForm(moment, p.dpsi);
   H.block<3, 3>(kPsi, kPsi) = psi_psi;
-  for (int i = 0; i < 3; ++i) H.block<1, 3>(kPsi + i, kDpsi) = (DT[i].transpose() * moment).transpose();
+  // Entry (i, j) is m . DT[e_i] e_j.
+  H.block<3, 3>(kPsi, kDpsi) = c.TransposedTangentDerivativeApplied(moment).transpose();
   H.block<3, 3>(kDpsi, kPsi) = H.block<3, 3>(kPsi, kDpsi).transpose();
   return H;
 }
@@ -207,9 +256,8 @@ BeamStrainField::Mat69 BeamStrainField::PointSecondDerivative(const Point& p,
   const Vec3 a_dot = c.exp().transpose() * dy_dot + p.a.cross(T * psi_dot);
   D.block<3, 3>(0, kDy) = -Skew(T * psi_dot) * c.exp().transpose();
   D.block<3, 3>(0, kPsi) = Skew(a_dot) * T + Skew(p.a) * DT_dot;
-  for (int j = 0; j < 3; ++j) {
-    D.block<3, 1>(3, kPsi + j) = c.TangentSecondDerivative(Vec3::Unit(j), psi_dot) * p.dpsi + p.DT[j] * dpsi_dot;
-  }
+  D.block<3, 3>(3, kPsi) = c.TangentDerivativeApplied(dpsi_dot);
+  for (int j = 0; j < 3; ++j) D.block<3, 1>(3, kPsi + j) += c.TangentSecondDerivative(Vec3::Unit(j), psi_dot) * p.dpsi;
   D.block<3, 3>(3, kDpsi) = DT_dot;
   return D;
 }
@@ -228,7 +276,7 @@ void BeamStrainField::AddLocalCoordinateHessian(const Vector& c, Matrix* K) cons
     K->block<3, 3>(phr, ur) -= Sa;
     K->block<3, 3>(uk, phr) += Sa.transpose();
     K->block<3, 3>(ur, phr) -= Sa.transpose();
-    K->block<3, 3>(phr, phr) += SymmetricPart(Skew(a) * Skew(node.y));
+    K->block<3, 3>(phr, phr) += SymmetricPart(Skew(a) * node.skew_y);
     // psi_k = Log(Q Exp(b)), b = c + phi_k + c x phi_k / 2, c = -Q^T phi_r (docs/theory.md, (B11)).
     const Vec3 b = c.segment<3>(phk);
     const Mat3& Tinv = node.calculus->inverse_tangent();
@@ -260,7 +308,7 @@ BeamStrainField::Matrix BeamStrainField::LocalCoordinateSecondDerivative(const V
     D.block<3, 3>(uk, uk) = -turn;
     D.block<3, 3>(uk, ur) = turn;
     D.block<3, 3>(uk, phr) = Skew(R_ref_.transpose() * (v.segment<3>(uk) - v.segment<3>(ur))) -
-                             0.5 * (Skew(phi_r) * Skew(node.y) + Skew(phi_r.cross(node.y)));
+                             0.5 * (Skew(phi_r) * node.skew_y + Skew(phi_r.cross(node.y)));
     const Mat3& Tinv = node.calculus->inverse_tangent();
     const Vec3 phi_k = v.segment<3>(phk);
     const Vec3 c = -node.Q.transpose() * phi_r, beta = c + phi_k;

@@ -58,6 +58,11 @@ Ratios ClosedRatios(double s, int highest) {
   return f;
 }
 
+// Skew(u) Skew(v) + Skew(v) Skew(u) = u v^T + v u^T - 2 (u . v) I, without the two products.
+Mat3 SkewProductSum(const Vec3& u, const Vec3& v) {
+  return u * v.transpose() + v * u.transpose() - 2.0 * u.dot(v) * Mat3::Identity();
+}
+
 }  // namespace
 
 RotationVectorCalculus::RotationVectorCalculus(const Vec3& psi, Level level) : psi_(psi) {
@@ -66,7 +71,7 @@ RotationVectorCalculus::RotationVectorCalculus(const Vec3& psi, Level level) : p
   const int highest = level == Level::kMaps ? 3 : level == Level::kFirst ? 5 : kHighest;
   const Ratios f = s < kSeriesLimit ? SeriesRatios(s, highest) : ClosedRatios(s, highest);
   K_ = Skew(psi);
-  K2_ = K_ * K_;
+  K2_ = psi * psi.transpose() - s * Mat3::Identity();
   a_ = f[2];
   b_ = f[3];
   exp_ = Mat3::Identity() + f[1] * K_ + f[2] * K2_;
@@ -95,15 +100,29 @@ Mat3 RotationVectorCalculus::SecantDerivative(const Vec3& d) const {
 }
 
 Mat3 RotationVectorCalculus::TangentDerivative(const Vec3& d) const {
-  const Mat3 D = Skew(d);
-  return -a_ * D + b_ * (D * K_ + K_ * D) + 2.0 * psi_.dot(d) * (-a_s_ * K_ + b_s_ * K2_);
+  const double pd = psi_.dot(d);
+  return -a_ * Skew(d) + b_ * SkewProductSum(psi_, d) + 2.0 * pd * (-a_s_ * K_ + b_s_ * K2_);
+}
+
+Mat3 RotationVectorCalculus::TangentDerivativeApplied(const Vec3& w) const { return AppliedDerivative(w, 1.0); }
+
+Mat3 RotationVectorCalculus::TransposedTangentDerivativeApplied(const Vec3& w) const {
+  return AppliedDerivative(w, -1.0);
+}
+
+Mat3 RotationVectorCalculus::AppliedDerivative(const Vec3& w, double sign) const {
+  // With K' = sign K, T(sign psi) w = w - a K' w + b K'^2 w; along d: -a d' x w + b (d' x K'w + K' (d' x w)) +
+  // 2 (psi . d) (-a' K'w + b' K'^2 w) with d' = sign d, and d x u = -Skew(u) d.
+  const Vec3 Kw = sign * (K_ * w);
+  const Vec3 v = -a_s_ * Kw + b_s_ * (K2_ * w);
+  return sign * (a_ * Skew(w) - b_ * (Skew(Kw) + sign * (K_ * Skew(w)))) + 2.0 * v * psi_.transpose();
 }
 
 Mat3 RotationVectorCalculus::TangentSecondDerivative(const Vec3& d1, const Vec3& d2) const {
-  const Mat3 D1 = Skew(d1), D2 = Skew(d2);
   const double p1 = psi_.dot(d1), p2 = psi_.dot(d2);
-  return b_ * (D1 * D2 + D2 * D1) + 2.0 * p2 * (-a_s_ * D1 + b_s_ * (D1 * K_ + K_ * D1)) +
-         2.0 * p1 * (-a_s_ * D2 + b_s_ * (D2 * K_ + K_ * D2)) + 2.0 * d1.dot(d2) * (-a_s_ * K_ + b_s_ * K2_) +
+  return b_ * SkewProductSum(d1, d2) + 2.0 * p2 * (-a_s_ * Skew(d1) + b_s_ * SkewProductSum(d1, psi_)) +
+         2.0 * p1 * (-a_s_ * Skew(d2) + b_s_ * SkewProductSum(d2, psi_)) +
+         2.0 * d1.dot(d2) * (-a_s_ * K_ + b_s_ * K2_) +
          4.0 * p1 * p2 * (-a_ss_ * K_ + b_ss_ * K2_);
 }
 
@@ -120,8 +139,7 @@ Mat3 RotationVectorCalculus::TangentSecondDerivativeForm(const Vec3& m, const Ve
 }
 
 Mat3 RotationVectorCalculus::InverseTangentDerivative(const Vec3& d) const {
-  const Mat3 D = Skew(d);
-  return 0.5 * D + c_ * (D * K_ + K_ * D) + 2.0 * c_s_ * psi_.dot(d) * K2_;
+  return 0.5 * Skew(d) + c_ * SkewProductSum(psi_, d) + 2.0 * c_s_ * psi_.dot(d) * K2_;
 }
 
 }  // namespace flexmbd
