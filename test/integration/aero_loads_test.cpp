@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "helpers/aero_loads_csv.hpp"
-#include "helpers/node_run.hpp"
+#include "helpers/recorded_run_suite.hpp"
 
 namespace flexmbd {
 namespace test {
@@ -25,25 +25,13 @@ constexpr int kInflowStates = 6;     // aero.sections.conner.inflow_states
 // Same run, same steps: the node's records equal the runner's CSV to its 17 digits.
 constexpr double kSameRunTolerance = 1.0e-9;
 
-NodeRun RecordRun() {
-  return RecordNodeAndRunner({kNodeName, kUrdf, kConfig, /*record_bag=*/true,
-                              [](const Samples& s) {
-                                return !s.aero_loads.empty() && TimeOf(s.aero_loads.back()) >= kEndTime - 1e-9;
-                              }});
-}
-
-class AeroLoads : public testing::Test {
- protected:
-  static void SetUpTestSuite() { record_ = new NodeRun(RecordRun()); }
-  static void TearDownTestSuite() { delete record_; }
-  void SetUp() override {
-    ASSERT_TRUE(record_->reached_end) << "~aero_loads did not reach t = " << kEndTime << " s; node output:\n"
-                                      << record_->node_output;
+class AeroLoads : public RecordedRunSuite<AeroLoads> {
+ public:
+  static constexpr char kAwaited[] = "~aero_loads";
+  static NodeRunCase Case() {
+    return {kNodeName, kUrdf, kConfig, /*record_bag=*/true, ReachesEnd(&Samples::aero_loads, kEndTime)};
   }
-  static NodeRun* record_;
 };
-
-NodeRun* AeroLoads::record_ = nullptr;
 
 TEST_F(AeroLoads, MessagesNameTheSectionAndItsInflowStates) {
   // Reference: aero.sections of the YAML: one section, conner, with 6 inflow states, in every sample.

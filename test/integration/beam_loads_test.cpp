@@ -9,7 +9,7 @@
 
 #include "helpers/beam_loads_csv.hpp"
 #include "helpers/csv_table.hpp"
-#include "helpers/node_run.hpp"
+#include "helpers/recorded_run_suite.hpp"
 
 namespace flexmbd {
 namespace test {
@@ -27,25 +27,13 @@ constexpr double kBeamMassPerLength = 2.5, kLength = 1.0, kTipMass = 2.0, kG = 9
 // Same run, same steps: the node's records equal the runner's CSV to its 17 digits.
 constexpr double kSameRunTolerance = 1.0e-9;
 
-NodeRun RecordRun() {
-  return RecordNodeAndRunner({kNodeName, kUrdf, kConfig, /*record_bag=*/true,
-                              [](const Samples& s) {
-                                return !s.beam_loads.empty() && TimeOf(s.beam_loads.back()) >= kEndTime - 1e-9;
-                              }});
-}
-
-class BeamLoads : public testing::Test {
- protected:
-  static void SetUpTestSuite() { record_ = new NodeRun(RecordRun()); }
-  static void TearDownTestSuite() { delete record_; }
-  void SetUp() override {
-    ASSERT_TRUE(record_->reached_end) << "~beam_loads did not reach t = " << kEndTime << " s; node output:\n"
-                                      << record_->node_output;
+class BeamLoads : public RecordedRunSuite<BeamLoads> {
+ public:
+  static constexpr char kAwaited[] = "~beam_loads";
+  static NodeRunCase Case() {
+    return {kNodeName, kUrdf, kConfig, /*record_bag=*/true, ReachesEnd(&Samples::beam_loads, kEndTime)};
   }
-  static NodeRun* record_;
 };
-
-NodeRun* BeamLoads::record_ = nullptr;
 
 TEST_F(BeamLoads, MessagesNameTheConfiguredStations) {
   // Reference: output.beam_stations.arm of the YAML: station k at kStations[k], every sample.

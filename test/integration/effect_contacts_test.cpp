@@ -7,7 +7,7 @@
 #include <cmath>
 
 #include "helpers/csv_table.hpp"
-#include "helpers/node_run.hpp"
+#include "helpers/recorded_run_suite.hpp"
 
 namespace flexmbd {
 namespace test {
@@ -23,21 +23,14 @@ constexpr double kStopAngle = 1.0472, kRadius = 0.1, kStiffness = 5.0e6, kExpone
 // Same run, same steps: the node's records equal the runner's CSV to its 17 digits.
 constexpr double kSameRunTolerance = 1.0e-9;
 
-NodeRun RecordRun() {
-  return RecordNodeAndRunner({kNodeName, kUrdf, kConfig, /*record_bag=*/false,
-                              [](const Samples& s) {
-                                return !s.contacts.empty() && TimeOf(s.contacts.back()) >= kEndTime - 1e-9;
-                              }});
-}
-
-class EffectContacts : public testing::Test {
- protected:
-  static void SetUpTestSuite() { record_ = new NodeRun(RecordRun()); }
-  static void TearDownTestSuite() { delete record_; }
-  void SetUp() override {
-    ASSERT_TRUE(record_->reached_end) << "~contacts did not reach t = " << kEndTime << " s; node output:\n"
-                                      << record_->node_output;
+class EffectContacts : public RecordedRunSuite<EffectContacts> {
+ public:
+  static constexpr char kAwaited[] = "~contacts";
+  static NodeRunCase Case() {
+    return {kNodeName, kUrdf, kConfig, /*record_bag=*/false, ReachesEnd(&Samples::contacts, kEndTime)};
   }
+
+ protected:
   // The droop stop's record in a message (the URDF <limit> gives stops "lower" and "upper"; upper is 60 deg).
   static const JointContact& Droop(const JointContactArray& message) {
     for (const JointContact& c : message.contacts) {
@@ -45,10 +38,7 @@ class EffectContacts : public testing::Test {
     }
     throw std::runtime_error("no stop hinge/upper in ~contacts");
   }
-  static NodeRun* record_;
 };
-
-NodeRun* EffectContacts::record_ = nullptr;
 
 TEST_F(EffectContacts, ImpactsHappenWithForcesBetweenRestAndTheElasticPeak) {
   // Released from rest, the rod meets the stop at w^2 = 2 m g a sin(60 deg) / I; the contact point then

@@ -7,7 +7,7 @@
 #include <cmath>
 
 #include "helpers/csv_table.hpp"
-#include "helpers/node_run.hpp"
+#include "helpers/recorded_run_suite.hpp"
 
 namespace flexmbd {
 namespace test {
@@ -22,25 +22,13 @@ constexpr double kSameRunTolerance = 1.0e-9;
 // The case: mu_k 0.15 on 0.02 m races, 50 N preload.
 constexpr double kKineticBoundPerNewton = 0.15 * 0.02, kPreload = 50.0;
 
-NodeRun RecordRun() {
-  return RecordNodeAndRunner({kNodeName, kUrdf, kConfig, /*record_bag=*/false,
-                              [](const Samples& s) {
-                                return !s.friction.empty() && TimeOf(s.friction.back()) >= kEndTime - 1e-9;
-                              }});
-}
-
-class EffectFriction : public testing::Test {
- protected:
-  static void SetUpTestSuite() { record_ = new NodeRun(RecordRun()); }
-  static void TearDownTestSuite() { delete record_; }
-  void SetUp() override {
-    ASSERT_TRUE(record_->reached_end) << "~friction did not reach t = " << kEndTime << " s; node output:\n"
-                                      << record_->node_output;
+class EffectFriction : public RecordedRunSuite<EffectFriction> {
+ public:
+  static constexpr char kAwaited[] = "~friction";
+  static NodeRunCase Case() {
+    return {kNodeName, kUrdf, kConfig, /*record_bag=*/false, ReachesEnd(&Samples::friction, kEndTime)};
   }
-  static NodeRun* record_;
 };
-
-NodeRun* EffectFriction::record_ = nullptr;
 
 TEST_F(EffectFriction, EveryHingeSlidesAndSticks) {
   const std::vector<JointFrictionArray>& friction = record_->topics.friction;

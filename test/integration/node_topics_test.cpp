@@ -8,7 +8,7 @@
 #include <cmath>
 
 #include "helpers/csv_table.hpp"
-#include "helpers/node_run.hpp"
+#include "helpers/recorded_run_suite.hpp"
 #include "helpers/sample_recorder.hpp"
 
 namespace flexmbd {
@@ -31,23 +31,14 @@ constexpr double kSameRunTolerance = 1.0e-12;
 // under a micrometre.
 constexpr double kJointPlacementTolerance = 1.0e-6;
 
-NodeRun RecordRun() {
-  return RecordNodeAndRunner({kNodeName, kUrdf, kConfig, /*record_bag=*/true,
-                              [](const Samples& s) { return EverySampleTopicReached(s, kEndTime); }});
-}
-
-class NodeTopics : public testing::Test {
- protected:
-  static void SetUpTestSuite() { record_ = new NodeRun(RecordRun()); }
-  static void TearDownTestSuite() { delete record_; }
-  void SetUp() override {
-    ASSERT_TRUE(record_->reached_end) << "the topics did not reach t = " << kEndTime << " s; node output:\n"
-                                      << record_->node_output;
+class NodeTopics : public RecordedRunSuite<NodeTopics> {
+ public:
+  static constexpr char kAwaited[] = "the topics";
+  static NodeRunCase Case() {
+    return {kNodeName, kUrdf, kConfig, /*record_bag=*/true,
+            [](const Samples& s) { return EverySampleTopicReached(s, kEndTime); }};
   }
-  static NodeRun* record_;
 };
-
-NodeRun* NodeTopics::record_ = nullptr;
 
 TEST_F(NodeTopics, NodeExitsWithZeroOnSigint) {
   EXPECT_EQ(record_->exit_status, std::optional<int>(0)) << record_->node_output;

@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "helpers/aero_loads_csv.hpp"
-#include "helpers/node_run.hpp"
+#include "helpers/recorded_run_suite.hpp"
 #include "helpers/wing_twist_closed_form.hpp"
 
 namespace flexmbd {
@@ -26,25 +26,13 @@ constexpr int kInflowStates = 4;     // aero.strips.wing.inflow_states
 // Same run, same steps: the node's records equal the runner's CSV to its 17 digits.
 constexpr double kSameRunTolerance = 1.0e-9;
 
-NodeRun RecordRun() {
-  return RecordNodeAndRunner({kNodeName, kUrdf, kConfig, /*record_bag=*/true,
-                              [](const Samples& s) {
-                                return !s.aero_loads.empty() && TimeOf(s.aero_loads.back()) >= kEndTime - 1e-9;
-                              }});
-}
-
-class StripLoads : public testing::Test {
- protected:
-  static void SetUpTestSuite() { record_ = new NodeRun(RecordRun()); }
-  static void TearDownTestSuite() { delete record_; }
-  void SetUp() override {
-    ASSERT_TRUE(record_->reached_end) << "~aero_loads did not reach t = " << kEndTime << " s; node output:\n"
-                                      << record_->node_output;
+class StripLoads : public RecordedRunSuite<StripLoads> {
+ public:
+  static constexpr char kAwaited[] = "~aero_loads";
+  static NodeRunCase Case() {
+    return {kNodeName, kUrdf, kConfig, /*record_bag=*/true, ReachesEnd(&Samples::aero_loads, kEndTime)};
   }
-  static NodeRun* record_;
 };
-
-NodeRun* StripLoads::record_ = nullptr;
 
 TEST_F(StripLoads, MessagesCarryTheStripStationsAlone) {
   // Reference: output.strip_stations of the YAML: five stations along the strip wing, no aero sections.
