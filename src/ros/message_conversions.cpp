@@ -76,6 +76,14 @@ void FillNamedRecords(const std::vector<Info>& infos, const std::vector<Record>&
   for (size_t k = 0; k < infos.size(); ++k) set(infos[k], records[k], &(*entries)[k]);
 }
 
+// The values of an aero section or strip station sample into its message (the fields share their names).
+template <typename AeroLoads>
+void SetAeroValues(const AeroSectionSample& value, AeroLoads* msg) {
+  msg->lift = value.lift;
+  msg->moment = value.moment;
+  msg->hinge_moment = value.hinge_moment;
+  SetVector(value.inflow, &msg->inflow);
+}
 }  // namespace
 
 ::ros::Time ToStamp(double t) { return ::ros::Time(t); }
@@ -164,20 +172,14 @@ void FillAeroLoads(const Model& model, const OutputSample& sample, AeroLoadsArra
   FillNamedRecords(model.aero_sections(), sample.aero_sections, &msg->sections,
                    [](const TypicalSectionAero* info, const AeroSectionSample& value, AeroSectionLoads* section) {
                      section->section = info->name();
-                     section->lift = value.lift;
-                     section->moment = value.moment;
-                     section->hinge_moment = value.hinge_moment;
-                     SetVector(value.inflow, &section->inflow);
+                     SetAeroValues(value, section);
                    });
   FillNamedRecords(model.strip_stations(), sample.strip_stations, &msg->strip_stations,
                    [](const StripStationInfo& info, const AeroSectionSample& value, AeroStripStationLoads* station) {
                      station->strip = info.strip;
                      station->station = info.index;
                      station->s = info.s;
-                     station->lift = value.lift;
-                     station->moment = value.moment;
-                     station->hinge_moment = value.hinge_moment;
-                     SetVector(value.inflow, &station->inflow);
+                     SetAeroValues(value, station);
                    });
 }
 

@@ -15,25 +15,24 @@ BeamStationSample SampleStation(const Model& model, const State& state, const Be
   return sample;
 }
 
-AeroSectionSample SampleAero(const TypicalSectionAero& section, const State& state, const StepContext& ctx) {
-  const Vec3 loads = section.SectionLoads(ctx);
+// The loads [lift, moment, hinge moment] of an aero element (a typical section's, or a strip's per unit span) and
+// its inflow states.
+AeroSectionSample AeroSample(const Vec3& loads, const Element& element, const State& state) {
   AeroSectionSample sample;
   sample.lift = loads[0];
   sample.moment = loads[1];
   sample.hinge_moment = loads[2];
-  sample.inflow = state.element_states.segment(section.first_state(), section.num_states());
+  sample.inflow = state.element_states.segment(element.first_state(), element.num_states());
   return sample;
+}
+
+AeroSectionSample SampleAero(const TypicalSectionAero& section, const State& state, const StepContext& ctx) {
+  return AeroSample(section.SectionLoads(ctx), section, state);
 }
 
 // One strip's loads per unit span and its states.
 AeroSectionSample SampleStrip(const BeamStripAero& strip, const State& state, const StepContext& ctx) {
-  const Vec3 loads = strip.StripLoads(ctx) / strip.length();
-  AeroSectionSample sample;
-  sample.lift = loads[0];
-  sample.moment = loads[1];
-  sample.hinge_moment = loads[2];
-  sample.inflow = state.element_states.segment(strip.first_state(), strip.num_states());
-  return sample;
+  return AeroSample(strip.StripLoads(ctx) / strip.length(), strip, state);
 }
 
 AeroSectionSample Mix(const AeroSectionSample& x, const AeroSectionSample& y, double u) {

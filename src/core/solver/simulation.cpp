@@ -98,10 +98,10 @@ void Simulation::Run(const SampleSink& sink, const std::vector<double>& instants
   }
   if (solver.static_first) SolveStaticEquilibrium();
   Begin(sink);
+  // Generalized-alpha damps the alternating velocity mode that the energy-consistent schemes' end rates carry.
+  const bool rates_alternate = solver.integrator != SolverSpec::Integrator::kGeneralizedAlpha;
   for (double t : instants) {
     AdvanceTo(t, t, sink);  // with t as the end, the last step is cut to land on it
-    // Generalized-alpha damps the alternating velocity mode that the energy-consistent schemes' end rates carry.
-    const bool rates_alternate = solver.integrator != SolverSpec::Integrator::kGeneralizedAlpha;
     at_instant(rates_alternate ? WithSmoothedRates(state_) : state_);
   }
   AdvanceTo(solver.t_end, solver.t_end, sink);
