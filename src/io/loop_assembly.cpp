@@ -26,7 +26,7 @@ constexpr double kContinuationStep = 0.1;
 constexpr int kMaxIncrements = 1000;
 // Central differences of the gaps: the error, h^2 times the third derivative, stays near 1e-14 for links of
 // metres, which slows the Newton convergence only by that factor.
-constexpr double kDifferenceStep = 1.0e-7;
+constexpr double kGapDifferenceStep = 1.0e-7;
 // Singular values below this fraction of the largest are taken as zero: directions the loops do not fix (a
 // dead centre, a joint outside every loop) get no change.
 constexpr double kRankThreshold = 1.0e-10;
@@ -80,8 +80,8 @@ class Assembler {
   Eigen::MatrixXd Jacobian() const {
     Eigen::MatrixXd J(Gaps().size(), free_.size());
     for (size_t i = 0; i < free_.size(); ++i) {
-      const Eigen::VectorXd step = Eigen::VectorXd::Unit(free_.size(), i) * kDifferenceStep;
-      J.col(i) = (GapsMoved(step) - GapsMoved(-step)) / (2.0 * kDifferenceStep);
+      const Eigen::VectorXd step = Eigen::VectorXd::Unit(free_.size(), i) * kGapDifferenceStep;
+      J.col(i) = (GapsMoved(step) - GapsMoved(-step)) / (2.0 * kGapDifferenceStep);
     }
     return J;
   }

@@ -24,7 +24,7 @@ constexpr double kClosingTolerance = 1.0e-9;
 // Gauss-Newton on the variables: the rotation factors make the pose nonlinear in them; it converges in a few
 // iterations from q = 0 when the frames are apart by the joint's own motion.
 constexpr int kFitIterations = 50;
-constexpr double kDifferenceStep = 1.0e-7;
+constexpr double kClosureDifferenceStep = 1.0e-7;
 
 template <class LinkSpec>
 FrameMotion MotionOf(const LinkSpec& link) {
@@ -50,9 +50,9 @@ Eigen::VectorXd FitVariables(const JointKinematics& kinematics, const Mat3& R_Jp
   for (int iteration = 0; iteration < kFitIterations && n > 0; ++iteration) {
     Jacobian J(6, n);
     for (int k = 0; k < n; ++k) {
-      const Eigen::VectorXd dq = Eigen::VectorXd::Unit(n, k) * kDifferenceStep;
+      const Eigen::VectorXd dq = Eigen::VectorXd::Unit(n, k) * kClosureDifferenceStep;
       J.col(k) = (PoseError(kinematics, q + dq, R_JpJc, p_JpJc) - PoseError(kinematics, q - dq, R_JpJc, p_JpJc)) /
-                 (2.0 * kDifferenceStep);
+                 (2.0 * kClosureDifferenceStep);
     }
     const Eigen::VectorXd step = J.colPivHouseholderQr().solve(-*left);
     q += step;

@@ -19,7 +19,7 @@ const std::vector<std::string> kGustKeys = {"velocity", "scale"};
 // Chord and normal axes count as perpendicular (to each other and to the beam axis) when their cosines are below
 // this: axes written to six figures are.
 constexpr double kPerpendicular = 1.0e-6;
-const std::vector<std::string> kSectionKeys = {"plunge", "pitch", "flap", "semichord", "a", "c",
+const std::vector<std::string> kAeroSectionKeys = {"plunge", "pitch", "flap", "semichord", "a", "c",
                                                "span", "velocity", "density", "inflow_states"};
 
 std::string ReadJointName(const Field& field, const UrdfModel& model, const std::string& what) {
@@ -51,7 +51,7 @@ double ReadChordPosition(const Field& field, const std::string& what) {
 }
 
 AeroSectionSpec ReadSection(const Field& entry, const std::string& name, const UrdfModel& model) {
-  CheckKeys(entry, kSectionKeys);
+  CheckKeys(entry, kAeroSectionKeys);
   AeroSectionSpec section;
   section.name = name;
   for (const char* key : {"plunge", "pitch", "flap", "semichord", "a", "c", "velocity"}) {

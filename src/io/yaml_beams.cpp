@@ -9,7 +9,7 @@ namespace {
 constexpr int kMaxBeamElements = 1000000;
 
 const std::vector<std::string> kBeamKeys = {"length", "elements", "order", "damping", "section"};
-const std::vector<std::string> kSectionKeys = {"EA",        "GA2", "GA3", "GJ",   "EI2",    "EI3",
+const std::vector<std::string> kBeamSectionKeys = {"EA",        "GA2", "GA3", "GJ",   "EI2",    "EI3",
                                                "stiffness", "m",   "m_ii", "offsets"};
 const std::vector<std::string> kOffsetKeys = {"cg", "shear_center"};
 const char* kDiagonalKeys[6] = {"EA", "GA2", "GA3", "GJ", "EI2", "EI3"};
@@ -57,7 +57,7 @@ void ReadOffsets(const Field& offsets, BeamSectionSpec* spec) {
 }
 
 void ReadSection(const Field& section, BeamSectionSpec* spec) {
-  CheckKeys(section, kSectionKeys);
+  CheckKeys(section, kBeamSectionKeys);
   spec->stiffness = ReadStiffness(section);
   RequireKey(section, "m", "the mass per length m [kg/m]");
   spec->mass_per_length = ReadNumber(section.Child("m"), Quantity{"a mass per length", Bound::kPositive, "kg/m"});

@@ -3,12 +3,11 @@
 // symmetric stiffness) or the first-order state-space problem.
 
 #include <Eigen/Dense>
-#include <Eigen/Eigenvalues>
-#include <Eigen/SVD>
 #include <algorithm>
 #include <cmath>
 #include <iterator>
 
+#include "dense_decompositions.hpp"
 #include "eigen_internal.hpp"
 
 namespace flexmbd {
@@ -36,13 +35,13 @@ std::vector<RawMode> SymmetricRoots(const Eigen::MatrixXd& Kt, const Eigen::Matr
     matrix.diagonal().array() += a;
     matrix = Eigen::PartialPivLU<Eigen::MatrixXd>(matrix).inverse();
   }
-  const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig(0.5 * (matrix + matrix.transpose()));
+  const dense::SymmetricEigenpairs eig = dense::SymmetricEigen(0.5 * (matrix + matrix.transpose()));
   std::vector<RawMode> out;
   for (int i = 0; i < static_cast<int>(Kt.rows()); ++i) {
-    const double lambda = a > 0 ? 1.0 / eig.eigenvalues()[i] - a : eig.eigenvalues()[i];
+    const double lambda = a > 0 ? 1.0 / eig.values[i] - a : eig.values[i];
     RawMode mode;
     mode.s = lambda >= 0 ? std::complex<double>(0.0, std::sqrt(lambda)) : std::complex<double>(std::sqrt(-lambda), 0.0);
-    mode.x = (T * eig.eigenvectors().col(i)).cast<std::complex<double>>();
+    mode.x = (T * eig.vectors.col(i)).cast<std::complex<double>>();
     out.push_back(std::move(mode));
   }
   return out;
@@ -77,12 +76,12 @@ std::vector<RawMode> FirstOrderRoots(const Eigen::MatrixXd& Kt, const Eigen::Mat
     A.diagonal().array() += k;
     A = Eigen::PartialPivLU<Eigen::MatrixXd>(A).inverse();
   }
-  const Eigen::EigenSolver<Eigen::MatrixXd> eig(A, true);
+  const dense::Eigenpairs eig = dense::GeneralEigen(A);
   std::vector<RawMode> out;
   for (int i = 0; i < 2 * r; ++i) {
     RawMode mode;
-    mode.s = k > 0 ? w * (1.0 / eig.eigenvalues()[i] - k) : w * eig.eigenvalues()[i];
-    mode.x = eig.eigenvectors().col(i).head(r);
+    mode.s = k > 0 ? w * (1.0 / eig.values[i] - k) : w * eig.values[i];
+    mode.x = eig.vectors.col(i).head(r);
     out.push_back(std::move(mode));
   }
   return out;
@@ -98,11 +97,11 @@ RigidSplit SplitRigidMotions(const Eigen::MatrixXd& Kt, const Eigen::MatrixXd& D
   const int r = static_cast<int>(Kt.rows());
   Eigen::MatrixXd stacked(2 * r, r);
   stacked << Kt, w * Dt;
-  const Eigen::BDCSVD<Eigen::MatrixXd> svd(stacked, Eigen::ComputeThinV);
-  const Eigen::VectorXd& sigma = svd.singularValues();
+  const dense::SingularBasis svd = dense::RightSingularBasis(stacked);
+  const Eigen::VectorXd& sigma = svd.values;
   int engaged = 0;
   while (engaged < r && sigma[engaged] > kRigidCancellation * sigma[0]) ++engaged;
-  return {svd.matrixV().rightCols(r - engaged), svd.matrixV().leftCols(engaged)};
+  return {svd.vectors.rightCols(r - engaged), svd.vectors.leftCols(engaged)};
 }
 
 // The roots of the first-order problem without its rigid-body motions: those of the problem restricted to Q,

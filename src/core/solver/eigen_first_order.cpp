@@ -3,8 +3,8 @@
 // first-order rows, and the generalized problem E z' = A z is solved for every root.
 
 #include <Eigen/Dense>
-#include <Eigen/Eigenvalues>
 
+#include "dense_decompositions.hpp"
 #include "eigen_internal.hpp"
 
 namespace flexmbd {
@@ -41,18 +41,18 @@ EigenResult SolveDenseWithStates(const Model& model, const LinearisedSystem& sys
   A.block(2 * r, r, ns, r) = -D.bottomLeftCorner(ns, nq) * T;
   A.bottomRightCorner(ns, ns) = -K.bottomRightCorner(ns, ns);
   const Eigen::MatrixXd system_matrix = Eigen::PartialPivLU<Eigen::MatrixXd>(E).solve(A);
-  const Eigen::EigenSolver<Eigen::MatrixXd> eig(system_matrix, true);
+  const dense::Eigenpairs eig = dense::GeneralEigen(system_matrix);
   std::vector<RawMode> raw;
   for (int i = 0; i < n; ++i) {
     RawMode mode;
-    mode.s = eig.eigenvalues()[i];
+    mode.s = eig.values[i];
     mode.x.resize(nk);
-    mode.x.head(nq) = T.cast<std::complex<double>>() * eig.eigenvectors().col(i).head(r);
-    mode.x.tail(ns) = eig.eigenvectors().col(i).tail(ns);
+    mode.x.head(nq) = T.cast<std::complex<double>>() * eig.vectors.col(i).head(r);
+    mode.x.tail(ns) = eig.vectors.col(i).tail(ns);
     raw.push_back(std::move(mode));
   }
   // Frequency scale: the largest root, against which rigid-body roots are judged (theory (E5)).
-  double scale = eig.eigenvalues().cwiseAbs().maxCoeff();
+  double scale = eig.values.cwiseAbs().maxCoeff();
   if (!(scale > 0)) scale = 1.0;
   ClassifyModes(system, raw, false, ns, scale, 0.0, options, &result);
   return result;

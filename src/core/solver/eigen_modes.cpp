@@ -2,10 +2,10 @@
 // modes, normalisation and order.
 
 #include <Eigen/Dense>
-#include <Eigen/SVD>
 #include <algorithm>
 #include <cmath>
 
+#include "dense_decompositions.hpp"
 #include "eigen_internal.hpp"
 
 namespace flexmbd {
@@ -84,12 +84,12 @@ void ClassifyModes(const LinearisedSystem& system, const std::vector<RawMode>& a
       vectors.col(2 * i) = rigid[i]->x.real();
       vectors.col(2 * i + 1) = rigid[i]->x.imag();
     }
-    const Eigen::BDCSVD<Eigen::MatrixXd> svd(vectors, Eigen::ComputeThinU);
+    const Eigen::MatrixXd U = dense::LeftSingularBasis(vectors).vectors;
     for (int i = 0; i < num_rigid; ++i) {
       Mode mode;
       mode.eigenvalue = 0.0;
       mode.rigid_body = true;
-      mode.shape = Normalised(system, svd.matrixU().col(i).cast<std::complex<double>>());
+      mode.shape = Normalised(system, U.col(i).cast<std::complex<double>>());
       modes.push_back(std::move(mode));
     }
   }

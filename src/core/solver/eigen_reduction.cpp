@@ -5,6 +5,7 @@
 #include <cmath>
 #include <sstream>
 
+#include "dense_decompositions.hpp"
 #include "eigen_internal.hpp"
 #include "flexmbd/common/error.hpp"
 
@@ -38,12 +39,12 @@ Eigen::MatrixXd MassNormalisingBasis(const Model& model, const Eigen::MatrixXd& 
     scale[i] = 1.0 / std::sqrt(symmetric(i, i));
   }
   const Eigen::MatrixXd scaled = scale.asDiagonal() * symmetric * scale.asDiagonal();
-  const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig(scaled);
-  const Eigen::VectorXd& values = eig.eigenvalues();
+  const dense::SymmetricEigenpairs eig = dense::SymmetricEigen(scaled);
+  const Eigen::VectorXd& values = eig.values;
   if (!(values[0] > kMassTolerance * values[r - 1])) {
-    fail(scale.asDiagonal() * eig.eigenvectors().col(0), values[0] / values[r - 1]);
+    fail(scale.asDiagonal() * eig.vectors.col(0), values[0] / values[r - 1]);
   }
-  return scale.asDiagonal() * eig.eigenvectors() * values.cwiseSqrt().cwiseInverse().asDiagonal();
+  return scale.asDiagonal() * eig.vectors * values.cwiseSqrt().cwiseInverse().asDiagonal();
 }
 
 }  // namespace eigen_internal
