@@ -35,9 +35,17 @@ StaticResult SolveStatic(const Model& model, SparseSystem* system, State* state)
   const int n_steps = model.solver().load_steps;
   StartFromReleaseMultipliers(model, 1.0 / n_steps, state);
   Eigen::VectorXd unknowns = Eigen::VectorXd::Zero(model.num_unknowns());
+  // Full Newton: a load step moves the structure far from where the last tangent was assembled, and the simplified
+  // iteration's contraction test, one max norm over unknowns of different units, let the inflow states (m/s) hide
+  // a stale tangent's divergence in the motion (docs/theory.md, "Newton iteration").
+  NewtonOptions options;
+  options.fresh_tangent_every_iteration = true;
   for (int step = 1; step <= n_steps; ++step) {
     const double load_factor = static_cast<double>(step) / n_steps;
     result.load_steps = step;
+    // The joints' reactions grow with the load: the last step's, raised to this one, start it (exact for loads
+    // carried without deformation, such as a pendulum's weight, which then converges on its first iteration).
+    if (step > 1) state->lambda *= static_cast<double>(step) / (step - 1);
     double travelled = 0;  // size of the motion within this load step, for the increment test
     result.last = SolveNewton(
         model, system, model.solver().tol, model.solver().max_iterations, RoundOffFloor(model.length_scale()),
@@ -57,7 +65,8 @@ StaticResult SolveStatic(const Model& model, SparseSystem* system, State* state)
           state->lambda += increment.tail(model.num_multipliers());
           travelled = std::max(travelled, increment.head(model.num_unknowns() - model.num_multipliers()).cwiseAbs().maxCoeff());
           return travelled + kMotionFloor;
-        });
+        },
+        options);
     system->set_factorisation_key(std::numeric_limits<double>::quiet_NaN());  // a static tangent: not reusable
     result.iterations += result.last.iterations;
     if (!result.last.converged) return result;
