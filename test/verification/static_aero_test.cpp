@@ -150,15 +150,15 @@ TEST(StaticAero, WingAileronWithTheStreamAlongItsChordStaysWhereItIs) {
   EXPECT_LE(std::abs(equilibrium.at(table.Column("joint.aileron_hinge.position"))), kRoundOff);
 }
 
-// The free hinge (flutter_eigen.yaml without its hinge spring) at 5 deg and `speed` with `inflow_states` per strip
-// in `load_steps`: the flap's floating angle [rad] and the tip's twist [rad].
+// The free hinge (flutter_eigen.yaml without its hinge spring; `hinge` its block instead) at 5 deg and `speed`
+// with `inflow_states` per strip in `load_steps`: the flap's floating angle [rad] and the tip's twist [rad].
 std::pair<double, double> FreeAileronEquilibrium(double speed, int inflow_states, int load_steps,
-                                                 const std::string& name) {
+                                                 const std::string& name, const std::string& hinge = "{}") {
   char stream[64];
   std::snprintf(stream, sizeof(stream), "[0.0, %.17g, 0.0]", speed);
   const std::string states = "inflow_states: " + std::to_string(inflow_states);
   const std::string yaml =
-      WingAileronStatic(stream, {{"spring: {k: 4.12771e4, rest: 0.0}", "{}"}, {"inflow_states: 6", states}}) +
+      WingAileronStatic(stream, {{"spring: {k: 4.12771e4, rest: 0.0}", hinge}, {"inflow_states: 6", states}}) +
       "  load_steps: " + std::to_string(load_steps) + "\n";
   const test::CsvTable table = StaticRun("config/wing_aileron/wing_aileron.urdf", yaml, name);
   if (table.rows.empty()) return {std::nan(""), std::nan("")};
@@ -183,6 +183,24 @@ TEST(StaticAero, FreeAileronAt70MetresPerSecondFloatsAsWithQuasiSteadyStrips) {
   EXPECT_NEAR(twist / twist_qs, 1.0, kSolveTolerance);
   EXPECT_NEAR(flap20 / flap_qs, 1.0, kSolveTolerance);
   EXPECT_NEAR(twist20 / twist_qs, 1.0, kSolveTolerance);
+}
+
+TEST(StaticAero, FreeAileronBetweenOpenStopsFloatsAsWithoutThem) {
+  // The flap between linear stops at +-5 deg (freeplay_lco.yaml's) floats at 3.3 deg at 80 m/s, off both stops, so
+  // the equilibrium is the free hinge's. It failed (any number of load steps): an open linear stop's static
+  // tangent kept the stop's stiffness (docs/theory.md, (C2b)). Both solves to Newton's tolerance, 1e-6 of the
+  // motion.
+  const std::string stops =
+      "{backlash: {lower_deg: -5.0, upper_deg: 5.0, radius_lower: 0.02032, radius_upper: 0.02032, "
+      "stop: {type: elastic, law: linear, stiffness: 9.99682e7, restitution: 1.0}}}";
+  const auto [flap, twist] = FreeAileronEquilibrium(80.0, 6, 10, "static_aileron_stops_80", stops);
+  const auto [flap_free, twist_free] = FreeAileronEquilibrium(80.0, 6, 10, "static_free_aileron_80");
+  std::printf("flap at 80 m/s between +-5 deg stops: %.10g rad, free %.10g rad; tip twist %.10g, %.10g rad\n", flap,
+              flap_free, twist, twist_free);
+  ASSERT_LT(std::abs(flap), 5.0 * M_PI / 180.0) << "the flap should float off its stops";
+  constexpr double kSolveTolerance = 1.0e-6;
+  EXPECT_NEAR(flap / flap_free, 1.0, kSolveTolerance);
+  EXPECT_NEAR(twist / twist_free, 1.0, kSolveTolerance);
 }
 
 }  // namespace
