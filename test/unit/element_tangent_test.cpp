@@ -235,6 +235,21 @@ TEST(ElementTangent, ElasticStopMatchesFiniteDifference) {
   ExpectStaticTangents<ElasticStop>(model, 217, AtStop(model, -0.03, -0.02, JointStop::kContact));
 }
 
+TEST(ElementTangent, LinearElasticStopMatchesFiniteDifferenceInStaticsOpenAndInContact) {
+  // Reference: central differences of -s rho k a (a > 0; zero for an open gap). A static tangent took the linear
+  // law's slope k also for an open gap, so a hinge with stops far away was stiffened against a residual without
+  // them (the wing with aileron's free flap between +-5 deg stops: no equilibrium found).
+  StopSpec linear;
+  linear.radius = 0.3;
+  linear.kind = StopSpec::Kind::kElastic;
+  linear.law = StopSpec::Law::kLinear;
+  linear.stiffness = 1.0e4;
+  linear.restitution = 1.0;
+  const Model model = ModelWithStop(linear);
+  ExpectStaticTangents<ElasticStop>(model, 218, AtStop(model, 0.05, 0.01, JointStop::kOpen));
+  ExpectStaticTangents<ElasticStop>(model, 219, AtStop(model, -0.03, -0.02, JointStop::kContact));
+}
+
 TEST(ElementInterface, ResidualAndTangentTogetherEqualSeparateCalls) {
   // Reference: AddResidualAndTangent (used by the assembly) must add exactly what AddResidual and AddTangent add,
   // and with J null exactly the residual; for every element of both models, dynamic and static.

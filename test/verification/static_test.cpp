@@ -3,7 +3,9 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <string>
+#include <vector>
 
 #include "case_builders.hpp"
 #include "flexmbd/solver/simulation.hpp"
@@ -97,6 +99,53 @@ TEST(StaticAnalysis, PendulumRestsOnItsDroopStopPressedByItsWeight) {
   // The balance at the angle reached, to the static solve's Newton tolerance (1e-6 relative of the motion).
   const double contact_moment = k * std::pow((angle - stop) * r, 1.5) * r;
   EXPECT_NEAR(contact_moment / (m * g * l * std::cos(angle)), 1.0, 1.0e-6);
+}
+
+// A model with nothing to carry is at equilibrium where it starts: each load step's first correction is round-off
+// in every unknown, so it converges there (docs/theory.md, "Newton iteration"), one iteration per load step (10 by
+// default), and nothing moves beyond the coordinates' round-off. Before, the residual was judged against a zero
+// load and the wing with aileron failed in its first load step.
+constexpr int kDefaultLoadSteps = 10;
+
+TEST(StaticAnalysis, UnloadedCantileverStaysWhereItIsInOneIterationPerLoadStep) {
+  // The Goland wing's beam (config/goland_wing, EA 1e10 N) clamped at its root, no air and no gravity.
+  const std::string csv = testing::TempDir() + "static_unloaded_cantilever.csv";
+  const std::string out = test::RunnerOutput(
+      "config/goland_wing/goland_wing.urdf",
+      "beams:\n  wing:\n    length: 6.096\n    elements: 8\n"
+      "    section: {EA: 1.0e10, GA2: 1.0e10, GA3: 1.0e10, GJ: 0.987e6, EI2: 9.77e6, EI3: 9.77e8, m: 35.71,"
+      " m_ii: [7.446, 0.016, 7.43], offsets: {cg: [0.18288, 0.0]}}\n"
+      "solver: {analysis: static, gravity: [0.0, 0.0, 0.0]}\n"
+      "output: {csv: " + csv + ", beam_stations: {wing: [6.096]}}\n",
+      "static_unloaded_cantilever");
+  const test::CsvTable table = test::ReadCsv(csv);
+  ASSERT_FALSE(table.rows.empty()) << out;
+  const std::vector<double>& equilibrium = table.rows.back();
+  EXPECT_EQ(equilibrium.at(table.Column("solver.iterations")), kDefaultLoadSteps);
+  // RoundOffFloor of the 6.1 m wing: 100 eps x 6.1 = 1.4e-13 m or rad (measured 0).
+  constexpr double kRoundOff = 1.4e-13;
+  for (const char* motion : {"ux", "uy", "uz", "rx", "ry", "rz"}) {
+    EXPECT_LE(std::abs(equilibrium.at(table.Column(std::string("beam.wing.s0.") + motion))), kRoundOff) << motion;
+  }
+}
+
+TEST(StaticAnalysis, PendulumHangingAtRestStaysInOneIterationPerLoadStep) {
+  // The rod of config/pendulum_stop hanging straight down (pi/2, as above): its weight is carried by the hinge from
+  // the first load step's start (the multipliers of the model released at rest), so the hinge stays put.
+  char hinge[64];
+  std::snprintf(hinge, sizeof(hinge), "initial: {position: %.17g}", M_PI / 2);
+  const std::string csv = testing::TempDir() + "static_pendulum_at_rest.csv";
+  const std::string out = test::RunnerOutput(
+      "config/pendulum_stop/pendulum_stop.urdf",
+      std::string("joints: {hinge: {") + hinge + "}}\nsolver: {analysis: static, gravity: [0.0, 0.0, -9.81]}\n"
+      "output: {csv: " + csv + "}\n",
+      "static_pendulum_at_rest");
+  const test::CsvTable table = test::ReadCsv(csv);
+  ASSERT_FALSE(table.rows.empty()) << out;
+  const std::vector<double>& equilibrium = table.rows.back();
+  EXPECT_EQ(equilibrium.at(table.Column("solver.iterations")), kDefaultLoadSteps);
+  // The angle to its round-off (100 eps x pi/2 = 3.5e-14 rad).
+  EXPECT_NEAR(equilibrium.at(table.Column("joint.hinge.position")), M_PI / 2, 3.5e-14);
 }
 
 }  // namespace

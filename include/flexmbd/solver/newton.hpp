@@ -2,7 +2,8 @@
 /// @file
 /// Newton iteration shared by static and dynamic analyses (simplified: the tangent is refreshed only when
 /// convergence is slow). Converged when the force rows are small relative to the magnitude of the forces that
-/// make them up, the constraint rows are below kConstraintTolerance, and the error left after the increment
+/// make them up (or the correction computed from them is round-off in every unknown), the constraint rows are
+/// below kConstraintTolerance, and the error left after the increment
 /// computed from that residual (the increment, or less where the iteration's contraction was measured) is small
 /// (for an approximate solve, that test alone: NewtonOptions); the increment is applied.
 
@@ -47,6 +48,8 @@ struct NewtonOptions {
   /// For such a solve, theta / (1 - theta) to assume for its first increment, the error it leaves being that
   /// times the increment (NaN: unknown, the increment itself is the bound).
   double expected_contraction_factor = std::numeric_limits<double>::quiet_NaN();
+  /// Assemble and factorise a fresh tangent at every iteration (full Newton), as a static solve does.
+  bool fresh_tangent_every_iteration = false;
 };
 
 /// Round-off of a configuration with coordinates up to `magnitude` [m or rad]: increments below it are noise.

@@ -39,8 +39,12 @@ double ContactLaw::DiscreteForce(double a_i, double a_f, double* d_da_f) const {
   const double da = a_f - a_i;
   if (std::abs(da) <= kCoincidentFraction * std::max(std::abs(a_i), std::abs(a_f))) {
     const double mid = 0.5 * (a_i + a_f);
-    const double slope = exponent_ == 1.0 ? stiffness_ : exponent_ * stiffness_ * std::pow(std::max(mid, 0.0), exponent_ - 1.0);
-    *d_da_f = mid > 0 || exponent_ == 1.0 ? 0.5 * slope : 0.0;
+    // Out of contact the force is zero and so is its slope, for the linear law too: a slope there stiffened a
+    // static tangent (where the approaches always coincide) against a residual without it. Touching (a = 0), the
+    // linear law takes its contact side's slope: a joint pressed onto its stop.
+    const bool touching = mid > 0 || (mid == 0 && exponent_ == 1.0);
+    const double slope = touching ? exponent_ * stiffness_ * std::pow(mid, exponent_ - 1.0) : 0.0;
+    *d_da_f = 0.5 * slope;
     return Force(mid);
   }
   const double gradient = (Potential(a_f) - Potential(a_i)) / da;

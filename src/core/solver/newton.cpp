@@ -15,6 +15,7 @@ constexpr double kForceFloor = 1.0e-9;
 
 struct ResidualCheck {
   double force = 0, constraint = 0;
+  double force_round_off = 0;  ///< largest round-off of a force row [N or N m]
   int worst = -1;
 };
 
@@ -34,7 +35,9 @@ ResidualCheck CheckResidual(const Model& model, const SparseSystem& system) {
   double worst_scaled = -1;
   for (int k = 0; k < r.size(); ++k) {
     const bool force = model.is_force_row(k);
-    const double beyond_noise = std::max(0.0, std::abs(r[k]) - coordinate_round_off * system.row_abs_sum()[k]);
+    const double round_off = coordinate_round_off * system.row_abs_sum()[k];
+    const double beyond_noise = std::max(0.0, std::abs(r[k]) - round_off);
+    if (force && !model.is_state_row(k)) check.force_round_off = std::max(check.force_round_off, round_off);
     const double row_scale = model.is_state_row(k) ? state_scale : scale;
     const double scaled = force ? beyond_noise / row_scale : std::abs(r[k]) / kConstraintTolerance;
     if (force) check.force = std::max(check.force, scaled);
@@ -45,6 +48,19 @@ ResidualCheck CheckResidual(const Model& model, const SparseSystem& system) {
     }
   }
   return check;
+}
+
+// A residual whose Newton correction is round-off in every unknown is round-off itself, however it compares with
+// the loads (docs/theory.md, "Newton iteration"): r = -J dx bounds each row by sum_j |J_kj| |dx_j|, the row's own
+// round-off when the coordinates move by less than theirs, plus what the multipliers carry. Those balance the
+// element forces, so they are known no better than the largest round-off of a force row. An unloaded model's
+// residual is all such round-off, and relative to its zero load it never passed. The correction is applied, so
+// the iterate returned has what was left removed to first order.
+bool CorrectionIsRoundOff(const Model& model, const Eigen::VectorXd& increment, double kinematic_size,
+                          double noise_floor, const ResidualCheck& check) {
+  const int n_multipliers = model.num_multipliers();
+  const double multiplier_size = n_multipliers > 0 ? increment.tail(n_multipliers).cwiseAbs().maxCoeff() : 0.0;
+  return kinematic_size <= noise_floor && multiplier_size <= check.force_round_off;
 }
 }  // namespace
 
@@ -97,7 +113,8 @@ NewtonReport SolveNewton(const Model& model, SparseSystem* system, double tol, i
     // On the increment test alone only an increment from a fresh tangent, or one that contracted, is trusted.
     const bool increment_trusted = refresh || std::isfinite(previous_size);
     const bool residual_passes = (options.increment_test_only && increment_trusted) ||
-                                 (check.force <= tol && check.constraint <= kConstraintTolerance);
+                                 (check.force <= tol && check.constraint <= kConstraintTolerance) ||
+                                 CorrectionIsRoundOff(model, increment, size, noise_floor, check);
     // The error left in the iterate: an iteration contracting at the rate theta leaves about
     // theta / (1 - theta) times its last increment (Hairer and Wanner, Solving ODEs II, sec. IV.8, (8.10)); the
     // rate is measured on increments of one factorisation, otherwise the increment itself is the bound.
@@ -117,7 +134,8 @@ NewtonReport SolveNewton(const Model& model, SparseSystem* system, double tol, i
     }
     // Refresh the tangent when the simplified iteration would need too many more iterations at its observed
     // contraction rate (ibid.).
-    refresh = contraction >= 1.0 || std::log(target / size) / std::log(contraction) > kMaxSimplifiedIterations;
+    refresh = options.fresh_tangent_every_iteration || contraction >= 1.0 ||
+              std::log(target / size) / std::log(contraction) > kMaxSimplifiedIterations;
     previous_size = size;
   }
   return report;

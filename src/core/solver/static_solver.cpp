@@ -1,8 +1,11 @@
 #include "flexmbd/solver/static_solver.hpp"
 
+#include <algorithm>
 #include <limits>
+#include <vector>
 
 #include "flexmbd/common/error.hpp"
+#include "flexmbd/effects/joint_stop.hpp"
 #include "flexmbd/model/model.hpp"
 #include "flexmbd/solver/eigen_analysis.hpp"
 #include "flexmbd/solver/joint_rates.hpp"
@@ -25,6 +28,32 @@ void StartFromReleaseMultipliers(const Model& model, double load_factor, State* 
   }
 }
 
+// An increment that would close an open elastic stop is cut to end just past it: an open stop has no stiffness in
+// the tangent the increment came from, and the whole increment can end deep inside the stop (a flap floating to 3
+// deg through its 0.5 deg stop), from where Newton diverges. Just past it, the next tangent holds the stop. As a
+// dynamic step lands on a contact ((C5), kEventLanding), but on the contact's side.
+constexpr double kStopLanding = 1.02;
+
+// The fraction of `increment` to take: 1, or less where it would close one of `stops` from `state`.
+double StopLandingFraction(const std::vector<const ElasticStop*>& stops, const Model& model, const State& state,
+                           const Eigen::VectorXd& increment, double round_off) {
+  double fraction = 1.0;
+  for (const ElasticStop* stop : stops) {
+    const double q = state.q[stop->variable()];
+    const double g_i = stop->Gap(q), g_f = stop->Gap(q + increment[model.variable_unknown(stop->variable())]);
+    if (g_i > round_off && g_f < 0) fraction = std::min(fraction, kStopLanding * g_i / (g_i - g_f));
+  }
+  return std::min(fraction, 1.0);
+}
+
+std::vector<const ElasticStop*> ElasticStops(const Model& model) {
+  std::vector<const ElasticStop*> stops;
+  for (const auto& element : model.elements()) {
+    if (const auto* stop = dynamic_cast<const ElasticStop*>(element.get())) stops.push_back(stop);
+  }
+  return stops;
+}
+
 }  // namespace
 
 StaticResult SolveStatic(const Model& model, SparseSystem* system, State* state) {
@@ -35,29 +64,42 @@ StaticResult SolveStatic(const Model& model, SparseSystem* system, State* state)
   const int n_steps = model.solver().load_steps;
   StartFromReleaseMultipliers(model, 1.0 / n_steps, state);
   Eigen::VectorXd unknowns = Eigen::VectorXd::Zero(model.num_unknowns());
+  // Full Newton: a load step moves the structure far from where the last tangent was assembled, and the simplified
+  // iteration's contraction test, one max norm over unknowns of different units, let the inflow states (m/s) hide
+  // a stale tangent's divergence in the motion (docs/theory.md, "Newton iteration").
+  NewtonOptions options;
+  options.fresh_tangent_every_iteration = true;
+  const std::vector<const ElasticStop*> stops = ElasticStops(model);
+  const double round_off = RoundOffFloor(model.length_scale());
   for (int step = 1; step <= n_steps; ++step) {
     const double load_factor = static_cast<double>(step) / n_steps;
     result.load_steps = step;
+    // The joints' reactions grow with the load: the last step's, raised to this one, start it (exact for loads
+    // carried without deformation, such as a pendulum's weight, which then converges on its first iteration).
+    if (step > 1) state->lambda *= static_cast<double>(step) / (step - 1);
     double travelled = 0;  // size of the motion within this load step, for the increment test
     result.last = SolveNewton(
-        model, system, model.solver().tol, model.solver().max_iterations, RoundOffFloor(model.length_scale()),
+        model, system, model.solver().tol, model.solver().max_iterations, round_off,
         [&](int, bool) -> const StepContext& {
           unknowns.setZero();
           unknowns.tail(model.num_multipliers()) = state->lambda;
           return builder.Static(*state, unknowns, state->t, load_factor);
         },
         [&](const Eigen::VectorXd& increment) {
+          const double f = StopLandingFraction(stops, model, *state, increment, round_off);
           for (int k = 0; k < model.num_nodes(); ++k) {
             NodeState& n = state->nodes[k];
-            n.x += increment.segment<3>(model.node_unknown(k));
-            n.R = n.R * Exp(increment.segment<3>(model.node_unknown(k) + 3));
+            n.x += f * increment.segment<3>(model.node_unknown(k));
+            n.R = n.R * Exp(f * increment.segment<3>(model.node_unknown(k) + 3));
           }
-          for (int k = 0; k < model.num_variables(); ++k) state->q[k] += increment[model.variable_unknown(k)];
-          state->element_states += increment.segment(model.element_state_unknown(0), model.num_element_states());
-          state->lambda += increment.tail(model.num_multipliers());
-          travelled = std::max(travelled, increment.head(model.num_unknowns() - model.num_multipliers()).cwiseAbs().maxCoeff());
+          for (int k = 0; k < model.num_variables(); ++k) state->q[k] += f * increment[model.variable_unknown(k)];
+          state->element_states += f * increment.segment(model.element_state_unknown(0), model.num_element_states());
+          state->lambda += f * increment.tail(model.num_multipliers());
+          const int n_kinematic = model.num_unknowns() - model.num_multipliers();
+          travelled = std::max(travelled, f * increment.head(n_kinematic).cwiseAbs().maxCoeff());
           return travelled + kMotionFloor;
-        });
+        },
+        options);
     system->set_factorisation_key(std::numeric_limits<double>::quiet_NaN());  // a static tangent: not reusable
     result.iterations += result.last.iterations;
     if (!result.last.converged) return result;
