@@ -7,9 +7,10 @@ the blade-element estimate at the mean Omega^2 of that window.
 
 Thrust: the share of the machine's weight the rotor carries, i.e. the vertical reaction of the joints to the world
 (rotor_drive under the shaft, collective under the slider) at the start (static, at rest) less their mean over
-the window. The blade-element estimate for blades of chord c from r0 to R at pitch theta_0, no inflow (the strips
-have none), lift slope a = 2 pi: T = N rho a c Omega^2 theta_0 (R^3 - r0^3) / 6 (docs/validation.md says what
-separates the two).
+the window. The blade-element estimates for blades of chord c from r0 to R at pitch theta_0, lift slope a = 2 pi:
+without inflow T = N rho a c Omega^2 theta_0 (R^3 - r0^3) / 6, and with the rotor's uniform inflow (aero.rotors)
+the hover momentum balance 2 rho A nu^2 = T(nu) closed with the strips' own thrust (docs/theory.md (A13): a
+quadratic in nu); docs/validation.md says what separates them from the run.
 
 --until T reads the run only up to T s (e.g. before an instability).
 
@@ -30,6 +31,18 @@ LAST = 2.0  # s at the end (full speed, 8.8 revolutions) for the full-speed load
 GROUND_JOINTS = ("rotor_drive", "collective")
 # The blade data of the YAML header: rho [kg/m^3], chord [m], root and tip radii [m], Omega_0 [rad/s], theta_0.
 RHO, CHORD, ROOT, TIP, OMEGA0, THETA0 = 1.225, 0.47, 0.65, 7.77, 27.61, math.radians(3.0)
+
+
+def hover_thrust_with_inflow(omega):
+    """The strips' hover thrust [N] with the uniform inflow of docs/theory.md (A13): untwisted quasi-steady strips
+    at theta_0, T(nu) = K [Omega^2 s c I2 - Omega nu (c^2 - s^2) I1 - nu^2 s c I0] = 2 rho A nu^2."""
+    s, c = math.sin(THETA0), math.cos(THETA0)
+    i0, i1, i2 = TIP - ROOT, (TIP ** 2 - ROOT ** 2) / 2, (TIP ** 3 - ROOT ** 3) / 3
+    k = 2 * math.pi * RHO * (CHORD / 2) * BLADES * c
+    area = math.pi * TIP ** 2
+    a, b, free = 2 * RHO * area + k * s * c * i0, k * omega * (s * s - c * c) * i1, k * omega ** 2 * s * c * i2
+    nu = (b + math.sqrt(b * b + 4 * a * free)) / (2 * a)
+    return 2 * RHO * area * nu * nu
 
 
 def mean_over(time, values, begin, end):
@@ -79,10 +92,11 @@ def report(path, thrust_window, until):
     begin, stop = thrust_window or (end - LAST, end)
     thrust = vertical[0] - mean_over(time, vertical, begin, stop)
     omega_squared = mean_over(time, [w * w for w in column(run, "joint.rotor_drive.velocity")], begin, stop)
-    estimate = BLADES * RHO * 2 * math.pi * CHORD * omega_squared * THETA0 * (TIP ** 3 - ROOT ** 3) / 6
+    without = BLADES * RHO * 2 * math.pi * CHORD * omega_squared * THETA0 * (TIP ** 3 - ROOT ** 3) / 6
+    estimate = hover_thrust_with_inflow(math.sqrt(omega_squared))
     print("  weight carried at rest %.0f N; thrust over [%g, %g] s (Omega %.4g rad/s rms) %.0f N; blade-element "
-          "estimate %.0f N (ratio %.4f)" % (vertical[0], begin, stop, math.sqrt(omega_squared), thrust, estimate,
-                                             thrust / estimate))
+          "estimate with uniform inflow %.0f N (ratio %.4f), without inflow %.0f N" %
+          (vertical[0], begin, stop, math.sqrt(omega_squared), thrust, estimate, thrust / estimate, without))
 
 
 def main(argv):

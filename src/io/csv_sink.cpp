@@ -62,6 +62,7 @@ CsvSink::CsvSink(const Model& model, const std::string& path) : path_(path), fil
     for (const char* column : {"lift", "moment", "hinge_moment"}) out_ << prefix << column;
     for (int k = 0; k < station.inner->num_states(); ++k) out_ << prefix << station.inner->StateName(k);
   }
+  for (const RotorInflow* rotor : model.aero_rotors()) out_ << ",aero." << rotor->name() << ".inflow,aero." << rotor->name() << ".thrust";
   out_ << ",energy.kinetic,energy.potential,energy.total,energy.external_work,energy.dissipated,"
           "energy.numerical_dissipation,solver.dt,solver.iterations\n";
   if (!out_) ThrowWriteError();
@@ -95,6 +96,9 @@ void CsvSink::Write(const OutputSample& s) {
       for (double value : {a.lift, a.moment, a.hinge_moment}) PutField(out_, value);
       for (int k = 0; k < a.inflow.size(); ++k) PutField(out_, a.inflow[k]);
     }
+  }
+  for (const AeroRotorSample& rotor : s.aero_rotors) {
+    for (double value : {rotor.inflow, rotor.thrust}) PutField(out_, value);
   }
   for (double value : {s.kinetic, s.potential, s.total(), s.external_work, s.dissipated, s.numerical_dissipation, s.dt}) {
     PutField(out_, value);

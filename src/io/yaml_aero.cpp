@@ -11,7 +11,8 @@
 namespace flexmbd {
 namespace io {
 namespace {
-const std::vector<std::string> kAeroKeys = {"sections", "strips", "free_stream", "density", "gust"};
+const std::vector<std::string> kAeroKeys = {"sections", "strips", "rotors", "free_stream", "density", "gust"};
+const std::vector<std::string> kRotorKeys = {"strips", "radius", "axis"};
 const std::vector<std::string> kStripKeys = {"beam",        "semichord",     "a",   "chord_axis",
                                              "normal_axis", "inflow_states", "flap"};
 const std::vector<std::string> kFlapKeys = {"beam", "c"};
@@ -128,6 +129,33 @@ AeroStripSpec ReadStrip(const Field& entry, const std::string& name, const UrdfM
   return strip;
 }
 
+// A rotor's uniform inflow (docs/config.md, "aero"); its strips are checked against aero.strips when the model is
+// built.
+AeroRotorSpec ReadRotor(const Field& entry, const std::string& name) {
+  CheckKeys(entry, kRotorKeys);
+  AeroRotorSpec rotor;
+  rotor.name = name;
+  for (const char* key : {"strips", "radius"}) {
+    RequireKey(entry, key, "the rotor's " + std::string(key) + " (docs/config.md, \"aero\")");
+  }
+  for (const Field& strip : ListEntries(entry.Child("strips"), "a list of strip names (under aero.strips): the blades")) {
+    rotor.strips.push_back(ReadString(strip, "the name of a strip under aero.strips"));
+  }
+  if (rotor.strips.empty()) {
+    entry.Child("strips").Fail("lists no strip; expected the names of the blades' strips under aero.strips");
+  }
+  rotor.radius = ReadNumber(entry.Child("radius"), Quantity{"a rotor radius", Bound::kPositive, "m"});
+  if (entry.Child("axis").present()) {
+    const Field axis = entry.Child("axis");
+    rotor.axis = ReadVec3(axis, Quantity{"a shaft axis in the world frame (along the thrust)", Bound::kAny, ""});
+    if (!(rotor.axis.norm() > 0.0)) {
+      axis.Fail(axis.Text() + " has no direction; expected a non-zero shaft axis [x, y, z] in the world frame");
+    }
+    rotor.axis.normalize();
+  }
+  return rotor;
+}
+
 void ReadFlow(const Field& aero, AeroFlowSpec* flow) {
   OverlayVec3(aero, "free_stream", Quantity{"a free-stream velocity in the world frame", Bound::kAny, "m/s"},
               &flow->free_stream);
@@ -153,6 +181,10 @@ void ReadAero(const Field& aero, UrdfModel* model) {
   const Field strips = aero.Child("strips");
   for (const std::string& name : MapKeys(strips, "a map from strip names to strips along beams")) {
     model->spec.aero_strips.push_back(ReadStrip(strips.Child(name), name, *model));
+  }
+  const Field rotors = aero.Child("rotors");
+  for (const std::string& name : MapKeys(rotors, "a map from rotor names to rotors (their blades' strips)")) {
+    model->spec.aero_rotors.push_back(ReadRotor(rotors.Child(name), name));
   }
   ReadFlow(aero, &model->spec.aero_flow);
 }

@@ -10,19 +10,14 @@
 
 #include "flexmbd/io/config_loader.hpp"
 #include "flexmbd/model/model.hpp"
+#include "goland_wing_fixture.hpp"
 #include "io_test_util.hpp"
 
 namespace flexmbd {
 namespace {
 
-std::string GolandUrdf() {
-  std::ifstream in(std::string(FLEXMBD_SOURCE_DIR) + "/config/goland_wing/goland_wing.urdf");
-  return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
-}
-
-const std::string kBeam =
-    "beams: {wing: {length: 6.0, elements: 2, section: {EA: 1.0e9, GA2: 1.0e9, GA3: 1.0e9, GJ: 1.0e6, EI2: 1.0e7, "
-    "EI3: 1.0e8, m: 35.0, m_ii: [8.0, 0.1, 8.0]}}}\n";
+using test::GolandUrdf;
+const std::string& kBeam = test::kGolandBeam;
 
 ModelSpec Load(const std::string& aero) { return test::LoadInline(GolandUrdf(), kBeam + "aero: {" + aero + "}"); }
 

@@ -6,7 +6,9 @@
 /// the beam axis (the elastic axis) in their general form, with Peters' inflow states of the strip's own, act on
 /// the node over the node's lumped length. A strip may carry a trailing-edge flap: the rotation of a node of
 /// another beam (the control surface) relative to the strip's node about the pitch axis (A10); the flap's terms
-/// join the lift and moment, and the hinge moment acts on the two nodes, equal and opposite.
+/// join the lift and moment, and the hinge moment acts on the two nodes, equal and opposite. A strip on a rotor's
+/// blade reads the rotor's induced inflow as a velocity of its air and adds its lift along the shaft to the
+/// inflow's row (docs/theory.md, (A13)).
 
 #include <string>
 
@@ -26,13 +28,20 @@ struct StripFlap {
   Mat3 R_rest = Mat3::Identity();  ///< the strip node's frame in the flap node's at rest: R_flap^T R_strip
 };
 
+/// The rotor whose blade carries a strip (docs/theory.md, (A13)).
+struct StripRotor {
+  int state = -1;             ///< the rotor's inflow nu in State::element_states (-1: no rotor)
+  int unknown = -1;           ///< its unknown
+  Vec3 axis = Vec3::UnitZ();  ///< the shaft axis in W; the inflow blows along -axis
+};
+
 class BeamStripAero : public Element {
  public:
   /// @param node the beam node; its unknowns start at node_unknown. @param length the strip's span [m].
   /// @param first_state_unknown the unknown of the strip's first inflow state. @param flap the flap, if any
-  /// (spec.flap.c its hinge).
+  /// (spec.flap.c its hinge). @param rotor the rotor, if the strip is on a blade.
   BeamStripAero(const AeroStripSpec& spec, const AeroFlowSpec& flow, int node, int node_unknown, double length,
-                int first_state_unknown, const StripFlap& flap = StripFlap());
+                int first_state_unknown, const StripFlap& flap = StripFlap(), const StripRotor& rotor = StripRotor());
 
   int num_states() const override { return inflow_.b.size(); }
   double StateScale(int) const override { return scale_; }
@@ -54,6 +63,8 @@ class BeamStripAero : public Element {
   double length() const { return length_; }
   /// The flap's deflection [rad] (trailing edge down) at ctx; zero without a flap.
   double FlapAngle(const StepContext& ctx) const;
+  /// The strip's lift along its rotor's axis [N] at ctx; zero without a rotor.
+  double Thrust(const StepContext& ctx) const;
 
  private:
   using States = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, kMaxInflowStates, 1>;
@@ -71,6 +82,7 @@ class BeamStripAero : public Element {
     Mat3 R_flap, turn_flap;
     Vec3 w_flap, wdot_flap;
     States mu, mu_rate;
+    double nu = 0, nu_rate = 0;  // the rotor's inflow and its rate
   };
   // The flap's deflection, its rate and acceleration, and the deflection's gradients by the rotation increments.
   struct Flap {
@@ -95,6 +107,11 @@ class BeamStripAero : public Element {
   Eigen::Matrix<double, 12, 3> ForceMap(const Motion& m) const;
   int num_node_unknowns() const { return has_flap() ? 12 : 6; }
   bool has_flap() const { return flap_.node >= 0; }
+  bool has_rotor() const { return rotor_.state >= 0; }
+  // The local unknown (and row) of the rotor's inflow: after the strip's own states.
+  int rotor_local() const { return num_node_unknowns() + num_states(); }
+  // The thrust per unit lift (per span): the strip's length times the chord normal's share along the axis.
+  double ThrustShare(const Motion& m) const { return has_rotor() ? length_ * rotor_.axis.dot(m.R * normal_) : 0.0; }
 
   std::string name_;
   int node_;
@@ -109,6 +126,7 @@ class BeamStripAero : public Element {
   StripFlap flap_;
   ThinAirfoilLoads flap_loads_;  ///< the section's generalised loads with the flap's hinge (A4), (A5)
   Vec3 flap_chord_, flap_pitch_axis_;  ///< chord and pitch axes in the flap node's frame
+  StripRotor rotor_;
 };
 
 }  // namespace flexmbd

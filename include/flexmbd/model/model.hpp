@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "flexmbd/aero/beam_strip_aero.hpp"
+#include "flexmbd/aero/rotor_inflow.hpp"
 #include "flexmbd/aero/typical_section_aero.hpp"
 #include "flexmbd/effects/friction_effect.hpp"
 #include "flexmbd/effects/joint_stop.hpp"
@@ -116,6 +117,8 @@ class Model {
   const std::vector<const BeamStripAero*>& aero_strips() const { return aero_strips_; }
   /// The stations of output.strip_stations, strip by strip (in name order), then in the order given.
   const std::vector<StripStationInfo>& strip_stations() const { return strip_stations_; }
+  /// The rotors' inflows (aero.rotors), in the order given.
+  const std::vector<const RotorInflow*>& aero_rotors() const { return aero_rotors_; }
   /// The friction elements, in frictions() order.
   const std::vector<const FrictionEffect*>& friction_effects() const { return friction_effects_; }
   /// Name of each joint variable: the joint name, with "/k" appended for the k-th of several.
@@ -154,6 +157,7 @@ class Model {
   std::vector<const TypicalSectionAero*> aero_sections_;
   std::vector<const BeamStripAero*> aero_strips_;
   std::vector<StripStationInfo> strip_stations_;
+  std::vector<const RotorInflow*> aero_rotors_;
   std::vector<std::string> node_names_;  ///< "body <name>" or "beam <name> node <k>", per node
   std::vector<std::string> variable_names_;
   std::vector<bool> driven_;  ///< per variable

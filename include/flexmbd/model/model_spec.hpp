@@ -294,6 +294,15 @@ struct AeroFlowSpec {
   AeroFlowSpec() { gust_scale.value = 1.0; }
 };
 
+/// A rotor's uniform induced inflow (docs/config.md, "aero"; docs/theory.md, (A13)): one state, the induced
+/// velocity nu through the disc, driven by the thrust of the rotor's strips and blown through every one of them.
+struct AeroRotorSpec {
+  std::string name;
+  std::vector<std::string> strips;  ///< names under aero.strips: the blades
+  double radius = 0.0;              ///< R [m]: the disc's area pi R^2 and its air's apparent mass (8/3) rho R^3
+  Vec3 axis = Vec3::UnitZ();        ///< unit shaft axis in W, along the thrust; the inflow blows along -axis
+};
+
 class Element;
 class Model;
 
@@ -315,6 +324,7 @@ struct ModelSpec {
   std::vector<LoadSpec> loads;
   std::vector<AeroSectionSpec> aero_sections;
   std::vector<AeroStripSpec> aero_strips;
+  std::vector<AeroRotorSpec> aero_rotors;
   AeroFlowSpec aero_flow;
   std::vector<CustomElementSpec> custom_elements;
   SolverSpec solver;

@@ -48,6 +48,12 @@ struct AeroSectionSample {
   Eigen::VectorXd inflow;   ///< Peters' states mu_1..mu_N (docs/theory.md, (A6), (A9)) [m/s]
 };
 
+/// One rotor (aero.rotors) at a sample (docs/theory.md, (A13)).
+struct AeroRotorSample {
+  double inflow = 0;  ///< the induced velocity nu through the disc, along -axis [m/s]
+  double thrust = 0;  ///< the blades' strips' lift along the axis [N]
+};
+
 struct OutputSample {
   double t = 0;                  ///< [s]
   Eigen::VectorXd position;      ///< joint variables [rad or m] (num_variables)
@@ -60,6 +66,7 @@ struct OutputSample {
   std::vector<BeamStationSample> beam_stations;  ///< per station, in Model::beam_stations() order
   std::vector<AeroSectionSample> aero_sections;  ///< per section, in Model::aero_sections() order
   std::vector<AeroSectionSample> strip_stations;  ///< per unit span, in Model::strip_stations() order
+  std::vector<AeroRotorSample> aero_rotors;       ///< in Model::aero_rotors() order
   double kinetic = 0;            ///< [J]
   double potential = 0;          ///< gravity, springs and beam strain energy [J]
   double external_work = 0;      ///< cumulative work of applied loads, drives and commanded efforts [J]

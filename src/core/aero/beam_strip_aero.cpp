@@ -10,8 +10,8 @@
 
 namespace flexmbd {
 namespace {
-// Local unknowns: the node's increment (dx in W, theta in the node frame), the flap node's if there is one, then
-// the inflow states.
+// Local unknowns: the node's increment (dx in W, theta in the node frame), the flap node's if there is one, the
+// inflow states, then the rotor's inflow if the strip is on a rotor.
 constexpr int kRotation = 3, kFlapRotation = 9;
 using Row3 = Eigen::Matrix<double, 1, 3>;
 
@@ -43,7 +43,7 @@ NodeFrame FrameAt(const NodeStep& n, const StepContext& ctx) {
 }  // namespace
 
 BeamStripAero::BeamStripAero(const AeroStripSpec& spec, const AeroFlowSpec& flow, int node, int node_unknown,
-                             double length, int first_state_unknown, const StripFlap& flap)
+                             double length, int first_state_unknown, const StripFlap& flap, const StripRotor& rotor)
     : name_(spec.name),
       node_(node),
       semichord_(spec.semichord),
@@ -61,7 +61,8 @@ BeamStripAero::BeamStripAero(const AeroStripSpec& spec, const AeroFlowSpec& flow
       flap_(flap),
       flap_loads_(spec.semichord, spec.a, spec.flap.c),
       flap_chord_(flap.R_rest * chord_),
-      flap_pitch_axis_(flap.R_rest * pitch_axis_) {
+      flap_pitch_axis_(flap.R_rest * pitch_axis_),
+      rotor_(rotor) {
   FLEXMBD_DEMAND(spec.inflow_states >= 0 && spec.inflow_states <= kMaxInflowStates);
   FLEXMBD_DEMAND(!has_flap() || (flap.fraction > 0.0 && flap.fraction <= 1.0));
   for (int k = 0; k < 6; ++k) unknowns_.push_back(node_unknown + k);
@@ -69,6 +70,7 @@ BeamStripAero::BeamStripAero(const AeroStripSpec& spec, const AeroFlowSpec& flow
     for (int k = 0; k < 6; ++k) unknowns_.push_back(flap.node_unknown + k);
   }
   for (int k = 0; k < spec.inflow_states; ++k) unknowns_.push_back(first_state_unknown + k);
+  if (has_rotor()) unknowns_.push_back(rotor.unknown);
   if (spec.inflow_states > 0) {
     lag_ = inflow_.A.partialPivLu().solve(inflow_.c);
     lag0_ = 0.5 * inflow_.b.dot(lag_);
@@ -92,11 +94,17 @@ BeamStripAero::Motion BeamStripAero::MotionAt(const StepContext& ctx) const {
     v = n.v_f;
     acceleration = n.vdot_f;
   }
-  const Vec3 air = free_stream_ + Evaluate(gust_scale_, t) * gust_;
+  if (has_rotor()) {
+    const ElementStateStep& x = (*ctx.element_states)[rotor_.state];
+    m.nu = x.value;
+    m.nu_rate = x.rate;
+  }
+  // The rotor's inflow blows along -axis (A13).
+  const Vec3 air = free_stream_ + Evaluate(gust_scale_, t) * gust_ - m.nu * rotor_.axis;
   // An equilibrium holds the air as it is at t, at rest: the gust's rate, like the node's, is no load on it.
   const double gust_rate = ctx.mode == AnalysisMode::kStatic ? 0.0 : EvaluateRate(gust_scale_, t);
   m.V = m.R.transpose() * (air - v);
-  m.Vdot = m.R.transpose() * (gust_rate * gust_ - acceleration);
+  m.Vdot = m.R.transpose() * (gust_rate * gust_ - m.nu_rate * rotor_.axis - acceleration);
   if (has_flap()) {
     const NodeFrame flap = FrameAt((*ctx.nodes)[flap_.node], ctx);
     m.R_flap = flap.R;
@@ -282,6 +290,12 @@ void BeamStripAero::AddResidual(const StepContext& ctx, Eigen::Ref<Eigen::Vector
     r[nn + i] += lag + decay;
     magnitude[nn + i] += std::abs(lag) + std::abs(decay);
   }
+  // The strip's share of the rotor's thrust in the inflow's row (A13); an equilibrium keeps the inflow it has.
+  if (has_rotor() && ctx.mode != AnalysisMode::kStatic) {
+    const double thrust = ThrustShare(m) * loads.y[0];
+    r[rotor_local()] -= thrust;
+    magnitude[rotor_local()] += std::abs(thrust);
+  }
 }
 
 void BeamStripAero::AddTangent(const StepContext& ctx, Eigen::Ref<Eigen::MatrixXd> J) const {
@@ -306,6 +320,20 @@ void BeamStripAero::AddTangent(const StepContext& ctx, Eigen::Ref<Eigen::MatrixX
   const double mid = ctx.mid_rate();
   J.block(0, nn, nn, N) -= mid * F.topRows(nn) * loads.dmu.topRows(3);
   J.block(nn, nn, N, N) += mid * loads.dmu.bottomRows(N);
+  if (!has_rotor()) return;
+  // The rotor's inflow moves the air along -axis: V changes by -R^T axis per unit nu.
+  const int ri = rotor_local();
+  const Rows by_nu = -loads.dV * (m.R.transpose() * rotor_.axis);
+  J.block(0, ri, nn, 1) -= mid * F.topRows(nn) * by_nu.head<3>();
+  J.block(nn, ri, N, 1) += mid * by_nu.tail(N);
+  if (ctx.mode == AnalysisMode::kStatic) return;
+  // The thrust row: the lift's gradients times the share along the axis, which turns with the chord normal.
+  const double share = ThrustShare(m);
+  J.block<1, 3>(ri, kRotation) -= share * by_node.row(0);
+  J.block<1, 3>(ri, kRotation) += length_ * loads.y[0] * rotor_.axis.transpose() * m.R * Skew(normal_) * m.turn;
+  if (has_flap()) J.block<1, 3>(ri, kFlapRotation) -= share * loads.dflap(0, 0) * f.d_flap;
+  J.block(ri, nn, 1, N) -= mid * share * loads.dmu.block(0, 0, 1, N);
+  J(ri, ri) -= mid * share * by_nu[0];
 }
 
 void BeamStripAero::AddRateParts(const StepContext& ctx, Eigen::Ref<Eigen::MatrixXd> D,
@@ -319,9 +347,11 @@ void BeamStripAero::AddRateParts(const StepContext& ctx, Eigen::Ref<Eigen::Matri
   // rates and accelerations themselves.
   const double rate = mid ? 0.5 : 1.0, acceleration = mid ? 1.0 / ctx.h : 1.0;
   Eigen::Ref<Eigen::MatrixXd> acceleration_part = mid ? D : M;
+  const double share = ThrustShare(m);  // zero without a rotor
   auto add = [&](Eigen::Ref<Eigen::MatrixXd> target, int column, const RowGradient& g, double factor) {
     target.block(0, column, nn, 3) -= factor * F.topRows(nn) * g.topRows<3>();
     target.block(nn, column, N, 3) += factor * g.bottomRows(N);
+    if (has_rotor()) target.block<1, 3>(rotor_local(), column) -= factor * share * g.row(0);
   };
   // Columns: node translation rate (V = R^T (air - v)), body-frame angular rates (the flap's rate and
   // acceleration are the flap node's minus the node's about the pitch axis).
@@ -335,6 +365,14 @@ void BeamStripAero::AddRateParts(const StepContext& ctx, Eigen::Ref<Eigen::Matri
     add(acceleration_part, kFlapRotation, loads.dflap.col(2) * flap_pitch_axis_.transpose(), acceleration);
   }
   D.block(nn, nn, N, N) += inflow_.A;
+  if (!has_rotor()) return;
+  // The inflow's rate turns the air's rate: Vdot changes by -R^T axis per unit nu' (the state's rate part, for any
+  // scheme).
+  const int ri = rotor_local();
+  const Rows by_nu_rate = -loads.dVdot * (Rt * rotor_.axis);
+  D.block(0, ri, nn, 1) -= F.topRows(nn) * by_nu_rate.head<3>();
+  D.block(nn, ri, N, 1) += by_nu_rate.tail(N);
+  D(ri, ri) -= share * by_nu_rate[0];
 }
 
 void BeamStripAero::AddStepWork(const StepContext& ctx, StepWork* work) const {
@@ -349,6 +387,11 @@ void BeamStripAero::AddStepWork(const StepContext& ctx, StepWork* work) const {
 Vec3 BeamStripAero::StripLoads(const StepContext& ctx) const {
   const Motion m = MotionAt(ctx);
   return length_ * Compute(m, FlapOf(m)).y.head<3>();
+}
+
+double BeamStripAero::Thrust(const StepContext& ctx) const {
+  const Motion m = MotionAt(ctx);
+  return ThrustShare(m) * Compute(m, FlapOf(m)).y[0];
 }
 
 double BeamStripAero::FlapAngle(const StepContext& ctx) const { return FlapOf(MotionAt(ctx)).delta[0]; }

@@ -75,7 +75,7 @@ const BeamInfo& StripBeam(const Model& model, const std::string& prefix, const A
 
 std::vector<std::unique_ptr<BeamStripAero>> MakeAeroStrips(const Model& model, const std::string& prefix,
                                                            const AeroStripSpec& strip, const AeroFlowSpec& flow,
-                                                           int first_state) {
+                                                           int first_state, const StripRotor& rotor) {
   const BeamInfo& beam = StripBeam(model, prefix, strip);
   const std::vector<StripFlap> flaps = StripFlaps(model, prefix, strip, beam);
   std::vector<std::unique_ptr<BeamStripAero>> strips;
@@ -85,9 +85,35 @@ std::vector<std::unique_ptr<BeamStripAero>> MakeAeroStrips(const Model& model, c
     const int state = first_state + static_cast<int>(k) * strip.inflow_states;
     strips.push_back(std::make_unique<BeamStripAero>(node_strip, flow, beam.nodes[k],
                                                      model.node_unknown(beam.nodes[k]), beam.lumped_lengths[k],
-                                                     model.element_state_unknown(state), flaps[k]));
+                                                     model.element_state_unknown(state), flaps[k], rotor));
   }
   return strips;
+}
+
+std::vector<StripRotor> StripRotors(const Model& model, const std::string& prefix, const ModelSpec& spec,
+                                    int first_state) {
+  std::vector<StripRotor> rotors(spec.aero_strips.size());
+  std::vector<std::string> owner(spec.aero_strips.size());
+  for (size_t r = 0; r < spec.aero_rotors.size(); ++r) {
+    const AeroRotorSpec& rotor = spec.aero_rotors[r];
+    for (size_t k = 0; k < rotor.strips.size(); ++k) {
+      const std::string field = prefix + "aero.rotors." + rotor.name + ".strips[" + std::to_string(k) + "]";
+      const auto strip = std::find_if(spec.aero_strips.begin(), spec.aero_strips.end(),
+                                      [&](const AeroStripSpec& s) { return s.name == rotor.strips[k]; });
+      if (strip == spec.aero_strips.end()) {
+        throw ConfigError(field + ": no strip '" + rotor.strips[k] + "'; expected a name under aero.strips");
+      }
+      const size_t index = strip - spec.aero_strips.begin();
+      if (!owner[index].empty()) {
+        throw ConfigError(field + ": strip '" + rotor.strips[k] + "' is already a blade of rotor '" + owner[index] +
+                          "'; expected each strip on one rotor at most");
+      }
+      owner[index] = rotor.name;
+      rotors[index] = {first_state + static_cast<int>(r), model.element_state_unknown(first_state + static_cast<int>(r)),
+                       rotor.axis};
+    }
+  }
+  return rotors;
 }
 
 std::vector<StripStationInfo> LocateStripStations(const Model& model, const std::string& prefix, const ModelSpec& spec) {

@@ -243,6 +243,9 @@ Model BuildModel(const ModelSpec& spec) {
   for (const AeroStripSpec& strip : spec.aero_strips) {
     model.num_element_states_ += strip.inflow_states * StripBeam(model, Prefix(spec), strip).nodes.size();
   }
+  // The rotors' inflows follow the strips' states (their strips need the inflows' unknowns).
+  const int first_rotor_state = model.num_element_states_;
+  model.num_element_states_ += spec.aero_rotors.size();
   for (const CustomElementSpec& custom : spec.custom_elements) model.num_element_states_ += custom.num_states;
   State& state = model.initial_state_;
   state.element_states = Eigen::VectorXd::Zero(model.num_element_states_);
@@ -336,11 +339,23 @@ Model BuildModel(const ModelSpec& spec) {
     model.aero_sections_.push_back(element.get());
     add_state_owner(std::move(element));
   }
-  for (const AeroStripSpec& strip : spec.aero_strips) {
-    for (auto& element : MakeAeroStrips(model, Prefix(spec), strip, spec.aero_flow, first_state)) {
+  const std::vector<StripRotor> strip_rotors = StripRotors(model, Prefix(spec), spec, first_rotor_state);
+  std::vector<std::vector<const BeamStripAero*>> blades(spec.aero_rotors.size());
+  for (size_t k = 0; k < spec.aero_strips.size(); ++k) {
+    const StripRotor& rotor = strip_rotors[k];
+    for (auto& element : MakeAeroStrips(model, Prefix(spec), spec.aero_strips[k], spec.aero_flow, first_state, rotor)) {
       model.aero_strips_.push_back(element.get());
+      if (rotor.state >= 0) blades[rotor.state - first_rotor_state].push_back(element.get());
       add_state_owner(std::move(element));
     }
+  }
+  FLEXMBD_DEMAND(first_state == first_rotor_state);
+  for (size_t r = 0; r < spec.aero_rotors.size(); ++r) {
+    auto element = std::make_unique<RotorInflow>(spec.aero_rotors[r], spec.aero_flow,
+                                                 model.element_state_unknown(first_state));
+    element->set_strips(blades[r]);
+    model.aero_rotors_.push_back(element.get());
+    add_state_owner(std::move(element));
   }
   model.strip_stations_ = LocateStripStations(model, Prefix(spec), spec);
   for (const CustomElementSpec& custom : spec.custom_elements) {

@@ -79,6 +79,9 @@ OutputSample MakeSample(const Model& model, const State& state, const StepContex
     const bool between = station.weight > 0.0;
     s.strip_stations.push_back(between ? Mix(inner, SampleStrip(*station.outer, state, ctx), station.weight) : inner);
   }
+  for (const RotorInflow* rotor : model.aero_rotors()) {
+    s.aero_rotors.push_back({state.element_states[rotor->first_state()], rotor->Thrust(ctx)});
+  }
   s.dt = dt;
   s.iterations = iterations;
   return s;
@@ -117,6 +120,10 @@ OutputSample Interpolate(const OutputSample& a, const OutputSample& b, double t)
   }
   for (size_t k = 0; k < s.aero_sections.size(); ++k) s.aero_sections[k] = Mix(a.aero_sections[k], b.aero_sections[k], u);
   for (size_t k = 0; k < s.strip_stations.size(); ++k) s.strip_stations[k] = Mix(a.strip_stations[k], b.strip_stations[k], u);
+  for (size_t k = 0; k < s.aero_rotors.size(); ++k) {
+    s.aero_rotors[k].inflow = (1.0 - u) * a.aero_rotors[k].inflow + u * b.aero_rotors[k].inflow;
+    s.aero_rotors[k].thrust = (1.0 - u) * a.aero_rotors[k].thrust + u * b.aero_rotors[k].thrust;
+  }
   return s;
 }
 

@@ -1,0 +1,68 @@
+// `aero.rotors` (src/io/yaml_aero.cpp, docs/config.md "aero"): a rotor's uniform inflow read from YAML with its
+// defaults, one inflow state whose unknown the blades' strips share, and the messages of bad input. Reference: the
+// values written in the inline documents below and config/goland_wing/goland_wing.urdf (its wing as a blade).
+
+#include <gtest/gtest.h>
+
+#include "flexmbd/io/config_loader.hpp"
+#include "flexmbd/model/model.hpp"
+#include "goland_wing_fixture.hpp"
+#include "io_test_util.hpp"
+
+namespace flexmbd {
+namespace {
+
+using test::GolandUrdf;
+const std::string& kBeam = test::kGolandBeam;
+
+ModelSpec LoadRotor(const std::string& rotor) {
+  return test::LoadInline(GolandUrdf(), kBeam + "aero: {strips: {blade: {beam: wing, semichord: 0.9, a: -0.34, "
+                                                "inflow_states: 2}}, rotors: {main: {" + rotor + "}}}");
+}
+
+TEST(AeroRotorConfig, RotorWithDefaultsSharesOneInflowStateWithItsStrips) {
+  const ModelSpec spec = LoadRotor("strips: [blade], radius: 6.5");
+  ASSERT_EQ(spec.aero_rotors.size(), 1u);
+  const AeroRotorSpec& r = spec.aero_rotors[0];
+  EXPECT_EQ(r.name, "main");
+  EXPECT_EQ(r.strips, std::vector<std::string>{"blade"});
+  EXPECT_EQ(r.radius, 6.5);
+  EXPECT_EQ(r.axis, Vec3::UnitZ());
+  // Seven strips of two states each, then the rotor's inflow, which every strip reads as its last unknown.
+  const Model model = BuildModel(spec);
+  ASSERT_EQ(model.aero_rotors().size(), 1u);
+  EXPECT_EQ(model.num_element_states(), 15);
+  const int inflow = model.element_state_unknown(14);
+  EXPECT_EQ(model.DescribeUnknown(inflow), "rotor main nu");
+  EXPECT_EQ(model.aero_rotors()[0]->strips().size(), 7u);
+  for (const BeamStripAero* strip : model.aero_strips()) EXPECT_EQ(strip->unknowns().back(), inflow);
+}
+
+TEST(AeroRotorConfig, AxisIsNormalised) {
+  EXPECT_EQ(LoadRotor("strips: [blade], radius: 6.5, axis: [0, 0, -2]").aero_rotors.at(0).axis, -Vec3::UnitZ());
+}
+
+TEST(AeroRotorConfig, BadKeysAndValuesAreRejected) {
+  EXPECT_CONFIG_ERROR(LoadRotor("strips: [blade], radius: 6.5, hub: spin"), "test.yaml: aero.rotors.main.hub: unknown key; valid keys are: strips, radius, axis");
+  EXPECT_CONFIG_ERROR(LoadRotor("strips: [blade]"), "test.yaml: aero.rotors.main: missing key 'radius'");
+  EXPECT_CONFIG_ERROR(LoadRotor("radius: 6.5"), "test.yaml: aero.rotors.main: missing key 'strips'");
+  EXPECT_CONFIG_ERROR(LoadRotor("strips: [], radius: 6.5"),
+                      "test.yaml: aero.rotors.main.strips: lists no strip; expected the names of the blades' strips");
+  EXPECT_CONFIG_ERROR(LoadRotor("strips: blade, radius: 6.5"), "test.yaml: aero.rotors.main.strips: ");
+  EXPECT_CONFIG_ERROR(LoadRotor("strips: [blade], radius: 0"), "test.yaml: aero.rotors.main.radius: 0");
+  EXPECT_CONFIG_ERROR(LoadRotor("strips: [blade], radius: 6.5, axis: [0, 0, 0]"),
+                      "test.yaml: aero.rotors.main.axis: [0, 0, 0] has no direction; expected a non-zero shaft axis");
+}
+
+TEST(AeroRotorConfig, StripsMustBeUnderAeroStripsAndOnOneRotor) {
+  EXPECT_CONFIG_ERROR(BuildModel(LoadRotor("strips: [blades], radius: 6.5")),
+                      "aero.rotors.main.strips[0]: no strip 'blades'; expected a name under aero.strips");
+  ModelSpec spec = LoadRotor("strips: [blade], radius: 6.5");
+  spec.aero_rotors.push_back(spec.aero_rotors[0]);
+  spec.aero_rotors[1].name = "tail";
+  EXPECT_CONFIG_ERROR(BuildModel(spec), "aero.rotors.tail.strips[0]: strip 'blade' is already a blade of rotor "
+                                        "'main'; expected each strip on one rotor at most");
+}
+
+}  // namespace
+}  // namespace flexmbd
