@@ -89,7 +89,8 @@ class FrictionEffect : public ModalEffect {
   // Where, as a fraction of the step ctx solved sticking, the friction force of a joint stuck before it reaches
   // the static bound (0 if at the start or before): the excess |lambda| - mu_s rho N on the line through the
   // mean forces of the step before and of this one, at their mid-steps (F3'). Infinity when the start was not a
-  // steady stick or the excess does not grow.
+  // steady stick, the excess does not grow, or it passes the bound by no more than it departs from the trend of
+  // the two steps before (a vibrating force: the step's mean force judges it).
   double BreakawayFraction(const StepContext& ctx) const;
   // True in a step that began stuck and is solved sliding: the static bound did not hold.
   bool BreakingAway(const StepContext& ctx) const;
@@ -98,6 +99,17 @@ class FrictionEffect : public ModalEffect {
   // True when a rigid stop of the joint is in contact in these effect modes (a step's trial modes or a state's),
   // or the joint sticks in them with its sticking row left out as a repeat of the other constraints (F7).
   bool Held(const std::vector<EffectState>& effects) const;
+  // The slip speed at the end of the step ctx that F4 captures and F5 bands judge [m/s]: the larger of the end
+  // rate's and the mean rates' extrapolated to the end, u + (u - u_prev) h / (h + h_prev), u = dq / h at the
+  // mid-step. After a step that left an unresolved mode's end rate, v_f = 2 u - v_i may be small while the
+  // joint still slips at u (docs/theory.md (F4)).
+  double EndSpeed(const StepContext& ctx, const State& end) const;
+  // The mean rate dq / h of the step ctx, that of the step before it (the start rate before the first step) and
+  // the time between their mid-steps [rad/s or m/s, s].
+  struct MeanRates {
+    double now = 0, before = 0, span = 0;
+  };
+  MeanRates StepMeanRates(const StepContext& ctx) const;
   // End rate of q from the scheme's relation over the step, 2 dq / h - qdot_i.
   static double EndRate(const StepContext& ctx, int variable);
 

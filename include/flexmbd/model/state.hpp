@@ -42,6 +42,9 @@ struct EffectState {
   /// Friction: the sticking force of the last accepted step if it began stuck and stayed stuck (a steady stick,
   /// whose force locates a breakaway, docs/theory.md (F3')) [N m or N]; NaN otherwise.
   double steady_force = std::numeric_limits<double>::quiet_NaN();
+  /// Friction: the excess |force| - mu_s rho N of the steady stick's step before the last, when that step was one
+  /// too; with steady_force it gives the trend the last force departed from (F3') [N m or N]; NaN otherwise.
+  double steady_excess_before = std::numeric_limits<double>::quiet_NaN();
   /// Friction: the joint sticks in the step being solved (or that led to this state) and its sticking row
   /// repeats the other constraint rows, which then hold it: the row is left out and friction applies no force
   /// (docs/theory.md (F7)).

@@ -103,6 +103,24 @@ bool FrictionEffect::BreakingAway(const StepContext& ctx) const {
   return ctx.start->effects[slot()].mode == kSticking && TrialMode(ctx) != kSticking;
 }
 
+FrictionEffect::MeanRates FrictionEffect::StepMeanRates(const StepContext& ctx) const {
+  const State& start = *ctx.start;
+  const VariableStep& q = (*ctx.variables)[variable_];
+  MeanRates rates;
+  rates.now = (q.q_f - q.q_i) / ctx.h;
+  const bool has_history = start.h_prev > 0 && start.mean_qdot[0].size() > variable_;
+  // Without a step before, the start rate stands in for its mean rate, half a step back: the line then ends at v_f.
+  rates.before = has_history ? start.mean_qdot[0][variable_] : q.qdot_i;
+  rates.span = has_history ? 0.5 * (ctx.h + start.h_prev) : 0.5 * ctx.h;
+  return rates;
+}
+
+double FrictionEffect::EndSpeed(const StepContext& ctx, const State& end) const {
+  const MeanRates rates = StepMeanRates(ctx);
+  const double extrapolated = rates.now + (rates.now - rates.before) * 0.5 * ctx.h / rates.span;
+  return spec_.radius * std::max(std::abs(end.qdot[variable_]), std::abs(extrapolated));
+}
+
 double FrictionEffect::EndRate(const StepContext& ctx, int variable) {
   const VariableStep& q = (*ctx.variables)[variable];
   return 2.0 * (q.q_f - q.q_i) / ctx.h - q.qdot_i;
@@ -228,7 +246,18 @@ double FrictionEffect::BreakawayFraction(const StepContext& ctx) const {
   const double excess_f = std::abs((*ctx.lambda)[stick_multiplier_]) - StaticBound(*ctx.lambda, start);
   if (excess_f <= excess_i) return kNoBreakaway;  // not pressing harder
   // The multipliers are the mean forces of their steps, taken at the mid-steps t - h_prev / 2 and t + h / 2.
-  const double crossing = -0.5 * start.h_prev + 0.5 * (start.h_prev + ctx.h) * -excess_i / (excess_f - excess_i);
+  const double span = 0.5 * (start.h_prev + ctx.h);
+  const double crossing = -0.5 * start.h_prev + span * -excess_i / (excess_f - excess_i);
+  // A force that vibrates about its trend passes the bound on the line only by as much as the line can be trusted
+  // to: where its excess at the step's end stays within the force's departure from the trend of the two steps
+  // before, the crossing is no event to locate, and the step's mean force judges it (F3').
+  const double excess_before = start.effects[slot()].steady_excess_before;
+  if (!std::isnan(excess_before)) {
+    const double span_before = 0.5 * (start.recent_h[1] + start.h_prev);
+    const double trend = excess_i + (excess_i - excess_before) * span / span_before;
+    const double excess_end = excess_f + (excess_f - excess_i) * 0.5 * ctx.h / span;
+    if (excess_end <= std::abs(excess_f - trend)) return kNoBreakaway;
+  }
   return std::max(0.0, crossing / ctx.h);
 }
 
@@ -261,7 +290,7 @@ StepLimit FrictionEffect::Limit(const StepContext& ctx, const State& end) const 
     limit.retry = kEventLanding * ctx.h * std::abs(v_i) / (std::abs(v_i) + std::abs(v_f));
     return limit;
   }
-  const double speed = spec_.radius * std::abs(v_f), change = spec_.radius * std::abs(v_f - v_i);
+  const double speed = EndSpeed(ctx, end), change = spec_.radius * std::abs(v_f - v_i);
   const double v0 = StickingSpeed(ctx.start->effects[slot()]);
   if (std::abs(v_f) >= std::abs(v_i) || change == 0) return limit;  // not slowing down
   for (int k = 0; k < 4; ++k) {
@@ -276,7 +305,12 @@ StepLimit FrictionEffect::Limit(const StepContext& ctx, const State& end) const 
 void FrictionEffect::Commit(const StepContext& ctx, const State& end, EffectState* effect) const {
   effect->work += StepDissipation(ctx);
   const bool steady = Constrained(ctx) && ctx.start->effects[slot()].mode == kSticking;
-  effect->steady_force = steady ? (*ctx.lambda)[stick_multiplier_] : std::numeric_limits<double>::quiet_NaN();
+  const double no_force = std::numeric_limits<double>::quiet_NaN();
+  const double force_before = ctx.start->effects[slot()].steady_force;
+  effect->steady_excess_before = steady && !std::isnan(force_before)
+                                     ? std::abs(force_before) - StaticBound(ctx.start->lambda, *ctx.start)
+                                     : no_force;
+  effect->steady_force = steady ? (*ctx.lambda)[stick_multiplier_] : no_force;
   const double speed = spec_.radius * std::abs(end.qdot[variable_]);
   effect->reference = std::max(effect->reference, speed);
   if (spec_.law == FrictionSpec::Law::kRegularised) return;
@@ -288,9 +322,12 @@ void FrictionEffect::Commit(const StepContext& ctx, const State& end, EffectStat
     const bool slow = speed <= kCaptureSpeeds * StickingSpeed(*effect);
     effect->mode = slow ? kSticking : InitialMode(end.qdot[variable_]);
   } else {
-    // A joint slowing down below v0 sticks from the next step on (one speeding up is breaking away).
-    const bool slowing = std::abs(end.qdot[variable_]) < std::abs(ctx.start->qdot[variable_]);
-    if (effect->mode != kSticking && slowing && speed <= StickingSpeed(*effect)) effect->mode = kSticking;
+    // A joint slowing down below v0 sticks from the next step on (one speeding up is breaking away). Both are read
+    // from the mean rates too: end rates carry the alternating mode of the scheme (F4).
+    const MeanRates rates = StepMeanRates(ctx);
+    const bool slowing = std::abs(end.qdot[variable_]) < std::abs(ctx.start->qdot[variable_]) &&
+                         std::abs(rates.now) < std::abs(rates.before);
+    if (effect->mode != kSticking && slowing && EndSpeed(ctx, end) <= StickingSpeed(*effect)) effect->mode = kSticking;
   }
   if (effect->mode == kSticking && ctx.start->effects[slot()].mode != kSticking) ++effect->events;
 }
