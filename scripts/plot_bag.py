@@ -38,7 +38,7 @@ OPTIONAL_TYPES = {
     "contacts": "flexmbd/JointContactArray",
     "friction": "flexmbd/JointFrictionArray",
     "beam_loads": "flexmbd/BeamLoadsArray",  # models with output.beam_stations
-    "aero_loads": "flexmbd/AeroLoadsArray",  # models with aero.sections or output.strip_stations
+    "aero_loads": "flexmbd/AeroLoadsArray",  # models with aero.sections, output.strip_stations or aero.rotors
 }
 # a beam station's CSV columns beam.<beam>.s<k>.<field>, in the CSV's order
 STATION_FIELDS = ("N", "V2", "V3", "T", "M2", "M3", "e1", "g2", "g3", "k1", "k2", "k3")
@@ -123,6 +123,9 @@ def read_columns(path):
                 add(prefix + field, getattr(station, field))
             for k, mu in enumerate(station.inflow):
                 add(prefix + "mu_%d" % (k + 1), mu)
+        for rotor in loads.rotors:
+            add("aero.%s.inflow" % rotor.rotor, rotor.inflow)
+            add("aero.%s.thrust" % rotor.rotor, rotor.thrust)
     for energy in messages["energy"]:
         for field in ENERGY_FIELDS:
             add("energy." + field, energy.kinetic + energy.potential if field == "total" else getattr(energy, field))

@@ -101,7 +101,10 @@ void BagSink::WriteSample(const SampleMessages& messages) {
   if (!messages.contacts.contacts.empty()) bag_->write(topics_.contacts, time, messages.contacts);
   if (!messages.friction.joints.empty()) bag_->write(topics_.friction, time, messages.friction);
   if (!messages.beam_loads.stations.empty()) bag_->write(topics_.beam_loads, time, messages.beam_loads);
-  if (!messages.aero_loads.sections.empty() || !messages.aero_loads.strip_stations.empty()) bag_->write(topics_.aero_loads, time, messages.aero_loads);
+  const AeroLoadsArray& aero = messages.aero_loads;
+  if (!aero.sections.empty() || !aero.strip_stations.empty() || !aero.rotors.empty()) {
+    bag_->write(topics_.aero_loads, time, aero);
+  }
   if (messages.has_transforms && !messages.transforms.transforms.empty()) {
     bag_->write(topics_.tf, BagTime(messages.transforms.transforms.front().header.stamp), messages.transforms);
   }

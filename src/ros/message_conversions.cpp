@@ -181,6 +181,12 @@ void FillAeroLoads(const Model& model, const OutputSample& sample, AeroLoadsArra
                      station->s = info.s;
                      SetAeroValues(value, station);
                    });
+  FillNamedRecords(model.aero_rotors(), sample.aero_rotors, &msg->rotors,
+                   [](const RotorInflow* info, const AeroRotorSample& value, AeroRotorInflow* rotor) {
+                     rotor->rotor = info->name();
+                     rotor->inflow = value.inflow;
+                     rotor->thrust = value.thrust;
+                   });
 }
 
 void FillTransforms(const std::vector<TransformFrame>& frames, const State& state, tf2_msgs::TFMessage* msg) {

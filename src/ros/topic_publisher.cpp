@@ -60,7 +60,7 @@ TopicPublisher::TopicPublisher(::ros::NodeHandle& node, ::ros::NodeHandle& priva
   if (!model.beam_stations().empty()) {
     beam_loads_ = AdvertiseSamples<BeamLoadsArray>(private_node, kBeamLoadsTopic, on_connect);
   }
-  if (!model.aero_sections().empty() || !model.strip_stations().empty()) {
+  if (!model.aero_sections().empty() || !model.strip_stations().empty() || !model.aero_rotors().empty()) {
     aero_loads_ = AdvertiseSamples<AeroLoadsArray>(private_node, kAeroLoadsTopic, on_connect);
   }
   if (publish_clock) clock_ = node.advertise<rosgraph_msgs::Clock>(kClockTopic, kClockQueueSize);
