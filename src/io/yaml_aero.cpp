@@ -20,8 +20,8 @@ const std::vector<std::string> kGustKeys = {"velocity", "scale"};
 // Chord and normal axes count as perpendicular (to each other and to the beam axis) when their cosines are below
 // this: axes written to six figures are.
 constexpr double kPerpendicular = 1.0e-6;
-const std::vector<std::string> kAeroSectionKeys = {"plunge", "pitch", "flap", "semichord", "a", "c",
-                                               "span", "velocity", "density", "inflow_states"};
+const std::vector<std::string> kAeroSectionKeys = {"plunge", "pitch",    "flap",    "semichord", "a",
+                                                   "c",      "span",     "velocity", "density",  "inflow_states"};
 
 std::string ReadJointName(const Field& field, const UrdfModel& model, const std::string& what) {
   const std::string name = ReadString(field, "the name of the " + what + " joint (a URDF joint)");

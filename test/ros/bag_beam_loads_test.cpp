@@ -4,9 +4,7 @@
 #include <gtest/gtest.h>
 
 #include "../integration/helpers/bag_samples.hpp"
-#include "flexmbd/ros/bag_sink.hpp"
-#include "flexmbd/solver/simulation.hpp"
-#include "ros_test_util.hpp"
+#include "recorded_bag.hpp"
 
 namespace flexmbd {
 namespace ros {
@@ -21,18 +19,8 @@ TEST(BagBeamLoads, HoldsTheBeamLoadsOfEverySample) {
   spec.output.rate_hz = 0.0;
   spec.solver.t_end = 3.0e-3;
   spec.output.beam_stations["arm"] = {0.25, 1.0};
-  const Model model = BuildModel(spec);
-  SampleConverter converter(model, test::FramesOf(test::kBeamArmUrdf, model));
-  Simulation simulation(model);
-  std::vector<SampleMessages> written;
-  {
-    BagSink bag(path, BagCompression::kNone, DefaultTopicNames(), ToBodyMarkers(model), tf2_msgs::TFMessage());
-    simulation.Run([&](const OutputSample& sample) {
-      written.emplace_back();
-      converter.Convert(sample, simulation.state(), &written.back());
-      bag.Write(written.back());
-    });
-  }
+  const std::vector<SampleMessages> written =
+      test::RecordRunToBag(BuildModel(spec), test::kBeamArmUrdf, path).messages;
   const test::Samples bag = test::ReadBagSamples(path, std::string(kDefaultNodeName).substr(1));
   ASSERT_GT(written.size(), 2u);
   ASSERT_EQ(bag.beam_loads.size(), written.size());

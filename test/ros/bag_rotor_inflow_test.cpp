@@ -7,9 +7,7 @@
 #include <cmath>
 
 #include "../integration/helpers/bag_samples.hpp"
-#include "flexmbd/ros/bag_sink.hpp"
-#include "flexmbd/solver/simulation.hpp"
-#include "ros_test_util.hpp"
+#include "recorded_bag.hpp"
 
 namespace flexmbd {
 namespace ros {
@@ -28,18 +26,7 @@ TEST(BagRotorInflow, HoldsTheRotorsInflowAndThrustOfEverySample) {
   ASSERT_TRUE(model.aero_sections().empty());
   ASSERT_TRUE(model.strip_stations().empty());
   ASSERT_EQ(model.aero_rotors().size(), 1u);
-  SampleConverter converter(model, test::FramesOf(kRotorUrdf, model));
-  Simulation simulation(model);
-  std::vector<OutputSample> samples;
-  {
-    BagSink bag(path, BagCompression::kNone, DefaultTopicNames(), ToBodyMarkers(model), tf2_msgs::TFMessage());
-    simulation.Run([&](const OutputSample& sample) {
-      samples.push_back(sample);
-      SampleMessages messages;
-      converter.Convert(sample, simulation.state(), &messages);
-      bag.Write(messages);
-    });
-  }
+  const std::vector<OutputSample> samples = test::RecordRunToBag(model, kRotorUrdf, path).samples;
   const test::Samples bag = test::ReadBagSamples(path, std::string(kDefaultNodeName).substr(1));
   ASSERT_GT(samples.size(), 2u);
   ASSERT_EQ(bag.aero_loads.size(), samples.size());

@@ -4,9 +4,7 @@
 #include <gtest/gtest.h>
 
 #include "../integration/helpers/bag_samples.hpp"
-#include "flexmbd/ros/bag_sink.hpp"
-#include "flexmbd/solver/simulation.hpp"
-#include "ros_test_util.hpp"
+#include "recorded_bag.hpp"
 
 namespace flexmbd {
 namespace ros {
@@ -24,18 +22,7 @@ TEST(BagStripStations, HoldsTheStripLoadsOfEverySample) {
   spec.output.rate_hz = 0.0;
   const Model model = BuildModel(spec);
   ASSERT_TRUE(model.aero_sections().empty());
-  SampleConverter converter(model, test::FramesOf(kWingUrdf, model));
-  Simulation simulation(model);
-  std::vector<OutputSample> samples;
-  {
-    BagSink bag(path, BagCompression::kNone, DefaultTopicNames(), ToBodyMarkers(model), tf2_msgs::TFMessage());
-    simulation.Run([&](const OutputSample& sample) {
-      samples.push_back(sample);
-      SampleMessages messages;
-      converter.Convert(sample, simulation.state(), &messages);
-      bag.Write(messages);
-    });
-  }
+  const std::vector<OutputSample> samples = test::RecordRunToBag(model, kWingUrdf, path).samples;
   const test::Samples bag = test::ReadBagSamples(path, std::string(kDefaultNodeName).substr(1));
   ASSERT_GT(samples.size(), 2u);
   ASSERT_EQ(bag.aero_loads.size(), samples.size());

@@ -107,6 +107,8 @@ struct StepContext {
   bool at_end() const { return mode != AnalysisMode::kDynamic; }
   /// d(mid-step value)/d(increment): 1/2 with mid-step forces, 1 at the end configuration.
   double mid_rate() const { return at_end() ? 1.0 : 0.5; }
+  /// The time forces are evaluated at: the step's end, or its middle for mid-step forces.
+  double force_time() const { return at_end() ? t_f : 0.5 * (t_i + t_f); }
 };
 
 /// Energy terms of one element at one state.

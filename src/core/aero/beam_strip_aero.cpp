@@ -79,7 +79,7 @@ BeamStripAero::BeamStripAero(const AeroStripSpec& spec, const AeroFlowSpec& flow
 
 BeamStripAero::Motion BeamStripAero::MotionAt(const StepContext& ctx) const {
   const NodeStep& n = (*ctx.nodes)[node_];
-  const double t = ctx.at_end() ? ctx.t_f : 0.5 * (ctx.t_i + ctx.t_f);
+  const double t = ctx.force_time();
   const NodeFrame frame = FrameAt(n, ctx);
   Motion m;
   m.R = frame.R;

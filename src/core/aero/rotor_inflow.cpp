@@ -39,7 +39,7 @@ void RotorInflow::AddResidual(const StepContext& ctx, Eigen::Ref<Eigen::VectorXd
     r[0] += x.x_f - ctx.start->element_states[first_state()];
     return;
   }
-  const double t = ctx.at_end() ? ctx.t_f : 0.5 * (ctx.t_i + ctx.t_f);
+  const double t = ctx.force_time();
   double slope = 0;
   const double lag = apparent_mass_ * x.rate, momentum = Momentum(t, x.value, &slope);
   r[0] += lag + momentum;
@@ -51,7 +51,7 @@ void RotorInflow::AddTangent(const StepContext& ctx, Eigen::Ref<Eigen::MatrixXd>
     J(0, 0) += 1.0;
     return;
   }
-  const double t = ctx.at_end() ? ctx.t_f : 0.5 * (ctx.t_i + ctx.t_f);
+  const double t = ctx.force_time();
   double slope = 0;
   Momentum(t, (*ctx.element_states)[first_state()].value, &slope);
   J(0, 0) += ctx.mid_rate() * slope;

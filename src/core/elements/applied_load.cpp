@@ -11,7 +11,7 @@ AppliedLoad::AppliedLoad(int node, int first_unknown, const LoadSpec& spec, cons
 }
 
 Vec6 AppliedLoad::GeneralisedForce(const StepContext& ctx, const NodeStep& n) const {
-  const double t = ctx.at_end() ? ctx.t_f : 0.5 * (ctx.t_i + ctx.t_f);
+  const double t = ctx.force_time();
   const Vec3 value = ctx.load_factor * Evaluate(spec_.scale, t) * spec_.vector;
   const Mat3 R_mid = n.R_i * Exp(0.5 * n.theta);
   Vec6 q = Vec6::Zero();
@@ -39,7 +39,7 @@ void AppliedLoad::AddTangent(const StepContext& ctx, Eigen::Ref<Eigen::MatrixXd>
   // T(theta/2)/2 dtheta in a step, by dtheta at the end configuration, where R_i moves with it and S = I.
   if (ctx.mode != AnalysisMode::kStatic && !ctx.geometric_stiffness) return;
   const NodeStep& n = (*ctx.nodes)[node_];
-  const double t = ctx.at_end() ? ctx.t_f : 0.5 * (ctx.t_i + ctx.t_f);
+  const double t = ctx.force_time();
   const Vec3 value = ctx.load_factor * Evaluate(spec_.scale, t) * spec_.vector;
   const RotationVectorCalculus half(0.5 * n.theta, RotationVectorCalculus::Level::kMaps);
   const Mat3 R_mid = n.R_i * half.exp();

@@ -48,8 +48,8 @@ double StopLandingFraction(const std::vector<const ElasticStop*>& stops, const M
 
 std::vector<const ElasticStop*> ElasticStops(const Model& model) {
   std::vector<const ElasticStop*> stops;
-  for (const auto& element : model.elements()) {
-    if (const auto* stop = dynamic_cast<const ElasticStop*>(element.get())) stops.push_back(stop);
+  for (const JointStop* stop : model.stop_effects()) {
+    if (const auto* elastic = dynamic_cast<const ElasticStop*>(stop)) stops.push_back(elastic);
   }
   return stops;
 }
