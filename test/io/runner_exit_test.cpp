@@ -146,6 +146,32 @@ std::string DoublePendulumCase() {
          "/config/double_pendulum/double_pendulum.yaml";
 }
 
+// The freeplay oscillator of test/data (a disk of 0.5 kg m^2 between linear elastic stops of 20 N m/rad at
+// +-2 deg, started at 0.41 rad/s) on fixed steps of 0.1 s with dt_min 0.05 s: a contact lasts pi sqrt(I / k) =
+// 0.497 s, and resolving it in 20 steps (docs/theory.md (C6)) needs steps of about 0.025 s, below dt_min. The run
+// fails in its first contact, and the message names what to change for fixed steps; doing so (here the smaller
+// dt_min) runs the case.
+std::string FreeplayOnFixedSteps(const std::string& name, const std::string& dt_min) {
+  return "--urdf " + Data("urdf/freeplay_disk.urdf") + " --config " +
+         WriteFile(name, "joints:\n  hinge:\n    initial: {velocity: 0.41166339}\n"
+                         "    backlash: {lower_deg: -2.0, upper_deg: 2.0,"
+                         " stop: {type: elastic, law: linear, stiffness: 20.0}}\n"
+                         "solver: {t_end: 2.0, gravity: [0.0, 0.0, 0.0], adaptive: false, dt: 0.1, dt_min: " +
+                             dt_min + "}\n");
+}
+
+TEST(RunnerExit, FixedStepsTooLongForAContactExitWithThreeAndSayWhatToTry) {
+  const RunOutcome failed = RunRunner(FreeplayOnFixedSteps("freeplay_long_steps.yaml", "0.05"));
+  EXPECT_EQ(failed.exit_status, kRunFailedExit);
+  EXPECT_NE(failed.stderr_text.find("run failed: step size fell below dt_min"), std::string::npos)
+      << failed.stderr_text;
+  EXPECT_NE(failed.stderr_text.find("try a smaller solver.dt (fixed steps may leave the motion unresolved), "
+                                    "adaptive steps, or a smaller solver.dt_min"),
+            std::string::npos)
+      << failed.stderr_text;
+  EXPECT_EQ(RunRunner(FreeplayOnFixedSteps("freeplay_long_steps_hint_taken.yaml", "0.001")).exit_status, 0);
+}
+
 TEST(RunnerExit, CsvOnAFullDeviceExitsWithThreeInOneLineNamingTheFile) {
   const RunOutcome out = RunRunner(DoublePendulumCase() + " --csv /dev/full");
   EXPECT_EQ(out.exit_status, kRunFailedExit);
