@@ -72,13 +72,18 @@ struct LevelRun {
   test::CsvTable table;
 };
 
-LevelRun RunLevel(double gap_deg) {
-  std::string yaml = ReadFile(kDir + "freeplay_lco_level.yaml");
+// `yaml` with the hinge's stops moved from +-from_deg to +-gap_deg (`from_deg` as the file writes it).
+std::string WithGap(std::string yaml, const std::string& from_deg, double gap_deg) {
   char text[64];
   std::snprintf(text, sizeof(text), "lower_deg: %.6g", -gap_deg);
-  yaml = Replaced(yaml, "lower_deg: -0.5", text);
+  yaml = Replaced(yaml, "lower_deg: -" + from_deg, text);
   std::snprintf(text, sizeof(text), "upper_deg: %.6g", gap_deg);
-  yaml = Replaced(yaml, "upper_deg: 0.5", text);
+  return Replaced(yaml, "upper_deg: " + from_deg, text);
+}
+
+LevelRun RunLevel(double gap_deg) {
+  std::string yaml = WithGap(ReadFile(kDir + "freeplay_lco_level.yaml"), "0.5", gap_deg);
+  char text[64];
   std::snprintf(text, sizeof(text), "initial: {velocity: %.6g}", 8 * gap_deg);
   yaml = Replaced(yaml, "initial: {velocity: 0.5}", text);
   yaml = Replaced(yaml, "t_end: 10.0", "t_end: 4.0");
@@ -232,13 +237,8 @@ TEST(WingAileronLco, DISABLED_TheYamlFilesOwnRunSettlesOnTheSameCycle) {
 
 // freeplay_lco.yaml (5 deg, 46 m/s, from the undeformed wing with a gust pulse) with stops at +-gap_deg, 2 s.
 test::CsvTable OnsetRun(double gap_deg, const std::string& name) {
-  std::string yaml = ReadFile(kDir + "freeplay_lco.yaml");
-  char text[64];
-  std::snprintf(text, sizeof(text), "lower_deg: %.6g", -gap_deg);
-  yaml = Replaced(yaml, "lower_deg: -5.0", text);
-  std::snprintf(text, sizeof(text), "upper_deg: %.6g", gap_deg);
-  yaml = Replaced(yaml, "upper_deg: 5.0", text);
-  yaml = Replaced(yaml, "t_end: 8.0", "t_end: 2.0");
+  std::string yaml =
+      Replaced(WithGap(ReadFile(kDir + "freeplay_lco.yaml"), "5.0", gap_deg), "t_end: 8.0", "t_end: 2.0");
   const std::string csv = testing::TempDir() + name + ".csv";
   yaml = Replaced(yaml, "cycle_from: 6.0}", "cycle_from: 1.0, csv: " + csv + "}");
   const std::string output = test::RunnerOutput(kUrdf, yaml, name);
