@@ -7,8 +7,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <fstream>
-#include <iterator>
 #include <string>
 #include <vector>
 
@@ -18,16 +16,15 @@
 #include "flexmbd/solver/sparse_system.hpp"
 #include "flexmbd/solver/static_solver.hpp"
 #include "runner_output.hpp"
+#include "yaml_text.hpp"
 
 namespace flexmbd {
 namespace {
 
-const std::string kDir = std::string(FLEXMBD_SOURCE_DIR) + "/config/wing_aileron/";
+using test::ReadFile;
+using test::Replaced;
 
-std::string ReadFile(const std::string& path) {
-  std::ifstream file(path);
-  return std::string((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
-}
+const std::string kDir = std::string(FLEXMBD_SOURCE_DIR) + "/config/wing_aileron/";
 
 // Modes growing at speed U (damping ratio below -1e-6 at a frequency below 10% of the frequency scale: the
 // round-off margins of theory (E9)), by an eigen-analysis of flutter_sweep.yaml's model at that one speed, about the
@@ -64,13 +61,6 @@ TEST(WingAileron, RunnerFlutterSpeedIsWhereAModeStartsToGrow) {
   // find one more growing mode above than below.
   constexpr double kAccuracy = 1.0e-3;
   EXPECT_EQ(GrowingModes(speed * (1.0 + kAccuracy)), GrowingModes(speed * (1.0 - kAccuracy)) + 1) << output;
-}
-
-// Replaces the one occurrence of `from` in `text` by `to`.
-std::string Replaced(std::string text, const std::string& from, const std::string& to) {
-  const size_t at = text.find(from);
-  EXPECT_NE(at, std::string::npos) << from;
-  return at == std::string::npos ? text : text.replace(at, from.size(), to);
 }
 
 TEST(WingAileron, GustThrowsTheFlapOffItsStopWithBooksBalanced) {
