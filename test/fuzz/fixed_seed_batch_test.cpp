@@ -9,7 +9,7 @@
 
 namespace flexmbd {
 namespace fuzz {
-namespace {
+namespace fixed_seed_batch_test {
 
 const std::string kRoot = FLEXMBD_SOURCE_DIR;
 
@@ -36,6 +36,6 @@ TEST(FuzzBatch, FixedSeedBatchHasNoFindings) {
   EXPECT_GT(counts.config_errors, kBatchInputs / 5);
 }
 
-}  // namespace
+}  // namespace fixed_seed_batch_test
 }  // namespace fuzz
 }  // namespace flexmbd

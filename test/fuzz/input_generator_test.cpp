@@ -6,7 +6,7 @@
 
 namespace flexmbd {
 namespace fuzz {
-namespace {
+namespace input_generator_test {
 
 const std::string kRoot = FLEXMBD_SOURCE_DIR;
 
@@ -37,6 +37,6 @@ TEST(InputGenerator, InputsDifferFromEverySeed) {
   EXPECT_LT(unchanged, kInputs / 20);
 }
 
-}  // namespace
+}  // namespace input_generator_test
 }  // namespace fuzz
 }  // namespace flexmbd

@@ -10,7 +10,7 @@
 
 namespace flexmbd {
 namespace fuzz {
-namespace {
+namespace isolated_run_test {
 
 IsolationLimits OneSecond() {
   IsolationLimits limits;
@@ -76,6 +76,6 @@ TEST(IsolatedRun, ExitWithoutResultIsReported) {
   EXPECT_EQ(isolated.exit_code, 3);
 }
 
-}  // namespace
+}  // namespace isolated_run_test
 }  // namespace fuzz
 }  // namespace flexmbd

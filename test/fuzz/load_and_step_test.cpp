@@ -7,7 +7,7 @@
 
 namespace flexmbd {
 namespace fuzz {
-namespace {
+namespace load_and_step_test {
 
 const std::string kRoot = FLEXMBD_SOURCE_DIR;
 
@@ -49,6 +49,6 @@ TEST(LoadAndStep, HugeEndTimeRunsOnlyTheFirstSteps) {
   EXPECT_EQ(result.outcome, Outcome::kCompleted) << result.message;
 }
 
-}  // namespace
+}  // namespace load_and_step_test
 }  // namespace fuzz
 }  // namespace flexmbd

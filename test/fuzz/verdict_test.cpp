@@ -8,7 +8,7 @@
 
 namespace flexmbd {
 namespace fuzz {
-namespace {
+namespace verdict_test {
 
 IsolatedResult Returned(Outcome outcome, const std::string& message) {
   IsolatedResult isolated;
@@ -50,6 +50,6 @@ TEST(Verdict, CrashAndHangAreFindings) {
   EXPECT_EQ(Judge(timed_out).finding, Finding::kHang);
 }
 
-}  // namespace
+}  // namespace verdict_test
 }  // namespace fuzz
 }  // namespace flexmbd

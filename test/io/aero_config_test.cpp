@@ -13,7 +13,7 @@
 #include "io_test_util.hpp"
 
 namespace flexmbd {
-namespace {
+namespace aero_config_test {
 
 std::string ConnerUrdf() {
   std::ifstream in(std::string(FLEXMBD_SOURCE_DIR) + "/config/conner_section/conner_section.urdf");
@@ -139,5 +139,5 @@ TEST(AeroConfig, AirspeedSweepWithoutSectionsIsRejected) {
                       "strips, but there are none; expected aero.sections or aero.strips");
 }
 
-}  // namespace
+}  // namespace aero_config_test
 }  // namespace flexmbd

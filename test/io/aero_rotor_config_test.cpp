@@ -10,7 +10,7 @@
 #include "io_test_util.hpp"
 
 namespace flexmbd {
-namespace {
+namespace aero_rotor_config_test {
 
 using test::GolandUrdf;
 const std::string& kBeam = test::kGolandBeam;
@@ -64,5 +64,5 @@ TEST(AeroRotorConfig, StripsMustBeUnderAeroStripsAndOnOneRotor) {
                                         "'main'; expected each strip on one rotor at most");
 }
 
-}  // namespace
+}  // namespace aero_rotor_config_test
 }  // namespace flexmbd

@@ -14,7 +14,7 @@
 #include "io_test_util.hpp"
 
 namespace flexmbd {
-namespace {
+namespace aero_strip_config_test {
 
 using test::GolandUrdf;
 const std::string& kBeam = test::kGolandBeam;
@@ -192,5 +192,5 @@ TEST(AeroConfig, StripAirspeedSweepNeedsTheStreamsDirection) {
                       "aero.free_stream, which is zero; expected aero.free_stream to give the stream's direction");
 }
 
-}  // namespace
+}  // namespace aero_strip_config_test
 }  // namespace flexmbd

@@ -11,7 +11,7 @@
 #include "io_test_util.hpp"
 
 namespace flexmbd {
-namespace {
+namespace backlash_config_test {
 using test::LoadInline;
 
 // A hinge about y with a URDF <limit> of [-0.5, 0.7] rad, a continuous hub and a slide along x.
@@ -162,5 +162,5 @@ TEST(BacklashConfig, GeneralizedAlphaWithStopsIsRejectedByBuildModel) {
                                         "expected energy_decaying or energy_preserving");
 }
 
-}  // namespace
+}  // namespace backlash_config_test
 }  // namespace flexmbd

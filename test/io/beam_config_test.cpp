@@ -8,7 +8,7 @@
 #include "io_test_util.hpp"
 
 namespace flexmbd {
-namespace {
+namespace beam_config_test {
 using test::ConfigErrorOf;
 using test::DataPath;
 using test::LoadDataUrdf;
@@ -107,5 +107,5 @@ TEST(BeamConfig, NotPositiveDefiniteCouplingIsRejectedAtModelBuild) {
       << message;
 }
 
-}  // namespace
+}  // namespace beam_config_test
 }  // namespace flexmbd

@@ -8,7 +8,7 @@
 #include "io_test_util.hpp"
 
 namespace flexmbd {
-namespace {
+namespace beam_extensions_config_test {
 using test::ConfigErrorOf;
 using test::LoadDataUrdf;
 
@@ -105,5 +105,5 @@ TEST(BeamExtensionsConfig, StationsOffTheBeamAreRejectedAtModelBuild) {
       << message;
 }
 
-}  // namespace
+}  // namespace beam_extensions_config_test
 }  // namespace flexmbd

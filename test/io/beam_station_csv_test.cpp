@@ -14,7 +14,7 @@
 #include "io_test_util.hpp"
 
 namespace flexmbd {
-namespace {
+namespace beam_station_csv_test {
 
 const char kArmYaml[] = R"(
 beams:
@@ -47,5 +47,5 @@ TEST(BeamStationCsv, EachStationHasEighteenNamedColumnsFilledInEveryRow) {
   EXPECT_EQ(std::count(header.begin(), header.end(), ','), std::count(row.begin(), row.end(), ','));
 }
 
-}  // namespace
+}  // namespace beam_station_csv_test
 }  // namespace flexmbd

@@ -8,7 +8,7 @@
 #include "io_test_util.hpp"
 
 namespace flexmbd {
-namespace {
+namespace closure_config_test {
 
 const std::string kClosure =
     "closures: {wrist_pin: {type: universal, parent: rod, child: slider, xyz: [0.3, 0.0, 0.0], axis: [0, 0, 1], "
@@ -164,5 +164,5 @@ TEST(ClosureConfig, ClosuresMotionIsNotSetUnderJoints) {
                       "is given under closures.wrist_pin");
 }
 
-}  // namespace
+}  // namespace closure_config_test
 }  // namespace flexmbd

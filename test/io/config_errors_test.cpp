@@ -7,7 +7,7 @@
 #include "io_test_util.hpp"
 
 namespace flexmbd {
-namespace {
+namespace config_errors_test {
 using test::DataPath;
 using test::LoadDataUrdf;
 using test::LoadInline;
@@ -345,5 +345,5 @@ TEST(ConfigErrors, ErrorFloorIsReadAndChecked) {
   EXPECT_CONFIG_ERROR(Pendulum("solver: {error_floor: {angle: 1.0}}"), "pendulum.yaml: solver.error_floor.angle");
 }
 
-}  // namespace
+}  // namespace config_errors_test
 }  // namespace flexmbd

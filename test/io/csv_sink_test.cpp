@@ -17,7 +17,7 @@
 #include "io_test_util.hpp"
 
 namespace flexmbd {
-namespace {
+namespace csv_sink_test {
 
 // Far more rows than the cap below takes (a double pendulum row at rest is about 120 bytes, its numbers in their
 // shortest round-trip form).
@@ -76,5 +76,5 @@ TEST(CsvSink, FullDeviceFailsAtCloseSayingNothingWasWritten) {
   }
 }
 
-}  // namespace
+}  // namespace csv_sink_test
 }  // namespace flexmbd

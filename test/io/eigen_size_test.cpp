@@ -10,7 +10,7 @@
 #include "io_test_util.hpp"
 
 namespace flexmbd {
-namespace {
+namespace eigen_size_test {
 using test::LoadDataUrdf;
 
 // The beam arm of test/data with its element count and eigen settings replaced: 6 (3 elements + 1) unknowns
@@ -37,5 +37,5 @@ TEST(EigenSize, BelowTheBoundAndOtherMethodsLoad) {
   EXPECT_NO_THROW(BeamArm(300, "auto"));
 }
 
-}  // namespace
+}  // namespace eigen_size_test
 }  // namespace flexmbd

@@ -6,7 +6,7 @@
 #include "io_test_util.hpp"
 
 namespace flexmbd {
-namespace {
+namespace friction_config_test {
 
 const std::string kHingeUrdf = test::HingeUrdf("0 0 1");
 
@@ -63,5 +63,5 @@ TEST(FrictionConfig, RegularisedFrictionOnADrivenVariableIsBuilt) {
   EXPECT_NO_THROW(BuildModel(spec));
 }
 
-}  // namespace
+}  // namespace friction_config_test
 }  // namespace flexmbd

@@ -11,7 +11,7 @@
 #include "io_test_util.hpp"
 
 namespace flexmbd {
-namespace {
+namespace initial_placement_test {
 using test::DataPath;
 
 // Poses and velocities of O(1) size built from a few dozen products of O(1) numbers, including cos(pi/2)
@@ -118,5 +118,5 @@ TEST(InitialPlacement, ChildFrameOffsetFromJointFrame) {
   EXPECT_LT((C.v_WFo_W - Vec3(0.0, -1.0, 0.0)).norm(), kTolerance);
 }
 
-}  // namespace
+}  // namespace initial_placement_test
 }  // namespace flexmbd

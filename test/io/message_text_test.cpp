@@ -6,7 +6,7 @@
 
 namespace flexmbd {
 namespace io {
-namespace {
+namespace message_text_test {
 
 TEST(MessageText, EditDistanceCountsEditsAndTranspositions) {
   EXPECT_EQ(EditDistance("dt", "dt"), 0);
@@ -37,6 +37,6 @@ TEST(MessageText, NotFoundMessageListsCandidates) {
             "no body 'x' in arm.urdf; bodies are: upper_arm");
 }
 
-}  // namespace
+}  // namespace message_text_test
 }  // namespace io
 }  // namespace flexmbd

@@ -7,7 +7,7 @@
 #include "io_test_util.hpp"
 
 namespace flexmbd {
-namespace {
+namespace nothing_to_move_test {
 using test::LoadInline;
 
 TEST(NothingToMove, WorldAloneIsRejected) {
@@ -36,5 +36,5 @@ TEST(NothingToMove, SpecWithoutBodiesOrBeamsIsRejectedByBuildModel) {
   EXPECT_CONFIG_ERROR(BuildModel(spec), "hand.urdf: nothing can move: the model has no body and no beam");
 }
 
-}  // namespace
+}  // namespace nothing_to_move_test
 }  // namespace flexmbd

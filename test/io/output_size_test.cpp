@@ -8,7 +8,7 @@
 #include "io_test_util.hpp"
 
 namespace flexmbd {
-namespace {
+namespace output_size_test {
 using test::LoadDataUrdf;
 
 Model Pendulum(const std::string& yaml) { return BuildModel(LoadDataUrdf("pendulum.urdf", yaml, "pendulum.yaml")); }
@@ -86,5 +86,5 @@ TEST(OutputSize, OptInMustBeABoolean) {
   EXPECT_CONFIG_ERROR(Pendulum("output: {allow_large_output: 3}"), "pendulum.yaml: output.allow_large_output: ");
 }
 
-}  // namespace
+}  // namespace output_size_test
 }  // namespace flexmbd

@@ -11,7 +11,7 @@
 #include "../integration/helpers/runner.hpp"
 
 namespace flexmbd {
-namespace {
+namespace pendulum_stop_case_test {
 
 constexpr char kUrdf[] = "config/pendulum_stop/pendulum_stop.urdf";
 constexpr char kConfig[] = "config/pendulum_stop/pendulum_stop.yaml";
@@ -70,5 +70,5 @@ TEST(PendulumStopCase, CsvRecordsTheContactsOfTheDroopStop) {
   EXPECT_NEAR(before[velocity], free_fall_rate, kFreeFallTolerance * free_fall_rate);
 }
 
-}  // namespace
+}  // namespace pendulum_stop_case_test
 }  // namespace flexmbd

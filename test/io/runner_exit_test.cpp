@@ -14,7 +14,7 @@
 #include "../integration/helpers/file_size_limit.hpp"
 #include "cut_csv.hpp"
 
-namespace {
+namespace runner_exit_test {
 
 struct RunOutcome {
   int exit_status = -1;
@@ -213,4 +213,4 @@ TEST(RunnerExit, CheckOfBadInputExitsWithTwoAndNamesField) {
   EXPECT_NE(out.stderr_text.find("joints.B1.spring.k"), std::string::npos) << out.stderr_text;
 }
 
-}  // namespace
+}  // namespace runner_exit_test

@@ -7,7 +7,7 @@
 #include "io_test_util.hpp"
 
 namespace flexmbd {
-namespace {
+namespace static_hold_config_test {
 
 const std::string kHingeUrdf = test::HingeUrdf("0 1 0");
 
@@ -37,5 +37,5 @@ TEST(StaticHoldConfig, NotABoolIsRejected) {
                       "joints.hinge.initial.static_hold");
 }
 
-}  // namespace
+}  // namespace static_hold_config_test
 }  // namespace flexmbd

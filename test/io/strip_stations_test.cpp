@@ -12,7 +12,7 @@
 #include "../integration/helpers/wing_twist_closed_form.hpp"
 
 namespace flexmbd {
-namespace {
+namespace strip_stations_test {
 
 constexpr char kUrdf[] = "config/goland_wing/goland_wing.urdf";
 constexpr char kConfig[] = "test/data/yaml/wing_twist_strips.yaml";
@@ -55,5 +55,5 @@ TEST(StripStations, StaticTwistOfAUniformWingMatchesTheClosedForm) {
   EXPECT_NE(inflow_per_lift[0], 0.0);
 }
 
-}  // namespace
+}  // namespace strip_stations_test
 }  // namespace flexmbd

@@ -7,7 +7,7 @@
 #include "io_test_util.hpp"
 
 namespace flexmbd {
-namespace {
+namespace urdf_reader_test {
 using test::DataPath;
 
 // Values copied from the URDF or rotated by one exact quarter turn: only rounding of a few products.
@@ -156,5 +156,5 @@ TEST(UrdfReader, FloatingJointChildIsFreeBodyAtItsOrigin) {
   EXPECT_TRUE(spec.bodies[0].p_WB.isApprox(Vec3(1.0, 2.0, 3.0)));
 }
 
-}  // namespace
+}  // namespace urdf_reader_test
 }  // namespace flexmbd

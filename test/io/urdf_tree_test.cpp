@@ -15,7 +15,7 @@
 #include "io_test_util.hpp"
 
 namespace flexmbd {
-namespace {
+namespace urdf_tree_test {
 using test::LoadInline;
 using test::WorldUrdf;
 
@@ -153,5 +153,5 @@ TEST(UrdfTree, OwnerDestroysADeepChainWithoutRecursion) {
   SUCCEED();  // reaching here is the test: the recursive destruction crashes the process
 }
 
-}  // namespace
+}  // namespace urdf_tree_test
 }  // namespace flexmbd

@@ -15,7 +15,7 @@
 #include "../integration/helpers/file_size_limit.hpp"
 
 namespace flexmbd {
-namespace {
+namespace whole_line_file_buffer_test {
 
 // Each line is "row NNNNN\n": 10 bytes.
 constexpr int kLineBytes = 10;
@@ -96,5 +96,5 @@ TEST(WholeLineFileBuffer, UnwritablePathIsNotOpenAndSaysWhy) {
   EXPECT_EQ(file.error(), "No such file or directory");
 }
 
-}  // namespace
+}  // namespace whole_line_file_buffer_test
 }  // namespace flexmbd

@@ -11,7 +11,7 @@
 #include "io_test_util.hpp"
 
 namespace flexmbd {
-namespace {
+namespace yaml_document_test {
 using test::DataPath;
 
 // Writes a YAML file for one test and returns its path.
@@ -84,5 +84,5 @@ TEST(YamlDocument, DeviceAsUrdfIsRejected) {
                       "cannot read URDF file '/dev/zero': it is a device; expected a text file");
 }
 
-}  // namespace
+}  // namespace yaml_document_test
 }  // namespace flexmbd

@@ -9,7 +9,7 @@
 #include "io_test_util.hpp"
 
 namespace flexmbd {
-namespace {
+namespace yaml_overlay_test {
 using test::DataPath;
 
 // Degree conversions and drive rates are one or two roundings away from the hand values.
@@ -232,5 +232,5 @@ TEST(YamlOverlay, GeneralizedAlphaIntegratorSelected) {
   EXPECT_EQ(spec.solver.rho_inf, 0.2);
 }
 
-}  // namespace
+}  // namespace yaml_overlay_test
 }  // namespace flexmbd

@@ -12,7 +12,7 @@
 
 namespace flexmbd {
 namespace ros {
-namespace {
+namespace async_sample_writer_test {
 
 // A live sink that keeps the sequence numbers it is given and, for each EndBatch, how many it had been
 // given by then (read after Flush, which orders the threads).
@@ -113,6 +113,6 @@ TEST(AsyncSampleWriter, SinkErrorReachesTheRunLoopOnceAndLaterSamplesAreDropped)
   EXPECT_EQ(written, (std::vector<uint32_t>{0, 1, 2}));
 }
 
-}  // namespace
+}  // namespace async_sample_writer_test
 }  // namespace ros
 }  // namespace flexmbd

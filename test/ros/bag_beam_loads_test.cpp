@@ -8,7 +8,7 @@
 
 namespace flexmbd {
 namespace ros {
-namespace {
+namespace bag_beam_loads_test {
 
 TEST(BagBeamLoads, HoldsTheBeamLoadsOfEverySample) {
   // Reference: the messages the converter made of a run of the beam arm (test/data) with two stations, sampled
@@ -35,6 +35,6 @@ TEST(BagBeamLoads, HoldsTheBeamLoadsOfEverySample) {
   EXPECT_EQ(bag.beam_loads.back().stations[1].s, 1.0);
 }
 
-}  // namespace
+}  // namespace bag_beam_loads_test
 }  // namespace ros
 }  // namespace flexmbd

@@ -11,7 +11,7 @@
 
 namespace flexmbd {
 namespace ros {
-namespace {
+namespace bag_rotor_inflow_test {
 
 constexpr char kRotorUrdf[] = "test/data/urdf/hover_rotor.urdf";
 
@@ -50,6 +50,6 @@ TEST(BagRotorInflow, HoldsTheRotorsInflowAndThrustOfEverySample) {
   EXPECT_NEAR(last.inflow, last.thrust * samples.back().t / apparent_mass, 0.03 * last.inflow);
 }
 
-}  // namespace
+}  // namespace bag_rotor_inflow_test
 }  // namespace ros
 }  // namespace flexmbd

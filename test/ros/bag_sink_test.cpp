@@ -12,7 +12,7 @@
 
 namespace flexmbd {
 namespace ros {
-namespace {
+namespace bag_sink_test {
 
 template <typename Message>
 std::vector<Message> ReadTopic(const std::string& path, const std::string& topic) {
@@ -197,6 +197,6 @@ TEST(BagSink, ParsesTheCompressionNames) {
   EXPECT_FALSE(ParseBagCompression("bz2").has_value());
 }
 
-}  // namespace
+}  // namespace bag_sink_test
 }  // namespace ros
 }  // namespace flexmbd

@@ -8,7 +8,7 @@
 
 namespace flexmbd {
 namespace ros {
-namespace {
+namespace bag_strip_stations_test {
 
 constexpr char kWingUrdf[] = "config/goland_wing/goland_wing.urdf";
 
@@ -49,6 +49,6 @@ TEST(BagStripStations, HoldsTheStripLoadsOfEverySample) {
   EXPECT_GT(bag.aero_loads.back().strip_stations[0].lift, 1.5);
 }
 
-}  // namespace
+}  // namespace bag_strip_stations_test
 }  // namespace ros
 }  // namespace flexmbd

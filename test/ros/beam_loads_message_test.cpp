@@ -8,7 +8,7 @@
 
 namespace flexmbd {
 namespace ros {
-namespace {
+namespace beam_loads_message_test {
 
 // Hand-made stations: two on one beam (indices 0 and 1), one on another; element pointers are not read.
 const std::vector<BeamStationInfo> kStations{{"arm", 0, 0.0, nullptr, 0.0},
@@ -96,6 +96,6 @@ TEST(BeamLoadsMessage, ModelWithoutStationsGivesNoBeamLoads) {
   EXPECT_TRUE(msg.stations.empty());
 }
 
-}  // namespace
+}  // namespace beam_loads_message_test
 }  // namespace ros
 }  // namespace flexmbd

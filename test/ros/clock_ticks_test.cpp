@@ -8,7 +8,7 @@
 
 namespace flexmbd {
 namespace ros {
-namespace {
+namespace clock_ticks_test {
 
 std::vector<double> Drain(ClockTicks* ticks) {
   std::vector<double> times;
@@ -43,6 +43,6 @@ TEST(ClockTicks, RestartStartsOverAtTheNewTime) {
   EXPECT_EQ(Drain(&ticks), (std::vector<double>{1.0, 1.0 + 1 / 10.0}));
 }
 
-}  // namespace
+}  // namespace clock_ticks_test
 }  // namespace ros
 }  // namespace flexmbd

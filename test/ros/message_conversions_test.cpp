@@ -13,7 +13,7 @@
 
 namespace flexmbd {
 namespace ros {
-namespace {
+namespace message_conversions_test {
 
 // Poses are a few products of rotations and lengths of order 1 m: round-off is a few ulp of 1.
 constexpr double kRoundOff = 1.0e-12;
@@ -258,6 +258,6 @@ TEST(MessageConversions, BeamNodeMarkersRideOnTheNodeFrames) {
   EXPECT_EQ(frames.back(), "arm/node_6");
 }
 
-}  // namespace
+}  // namespace message_conversions_test
 }  // namespace ros
 }  // namespace flexmbd

@@ -6,7 +6,7 @@
 
 namespace flexmbd {
 namespace ros {
-namespace {
+namespace pacer_test {
 
 using std::chrono::milliseconds;
 
@@ -36,6 +36,6 @@ TEST(Pacer, FactorZeroMakesEverySampleDueAtTheAnchor) {
   EXPECT_EQ(pacer.Due(100.0), anchor);
 }
 
-}  // namespace
+}  // namespace pacer_test
 }  // namespace ros
 }  // namespace flexmbd

@@ -15,7 +15,7 @@
 
 namespace flexmbd {
 namespace ros {
-namespace {
+namespace param_tree_test {
 
 // What `rosparam load` puts on the parameter server for a YAML scalar: Python's YAML types it as an int, a
 // float, a bool or a string.
@@ -127,6 +127,6 @@ TEST(ParamTree, BadParameterGivesTheLoadersMessageNamingTheNamespace) {
   }
 }
 
-}  // namespace
+}  // namespace param_tree_test
 }  // namespace ros
 }  // namespace flexmbd

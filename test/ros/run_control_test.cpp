@@ -9,7 +9,7 @@
 
 namespace flexmbd {
 namespace ros {
-namespace {
+namespace run_control_test {
 
 using Command = RunControl::Command;
 // Generous bound on thread hand-offs on a loaded machine; the tests never wait for it when they pass.
@@ -48,6 +48,6 @@ TEST(RunControl, NotifyWakesTheLoop) {
   notifier.join();
 }
 
-}  // namespace
+}  // namespace run_control_test
 }  // namespace ros
 }  // namespace flexmbd

@@ -18,7 +18,7 @@
 
 namespace flexmbd {
 namespace ros {
-namespace {
+namespace runner_bag_test {
 
 constexpr int kBadInputExit = 2;
 constexpr int kRunFailedExit = 3;
@@ -138,6 +138,6 @@ TEST(RunnerBag, BagOnADiskFillingUpMidRunReindexesToTheSamplesOfItsCompleteChunk
   }
 }
 
-}  // namespace
+}  // namespace runner_bag_test
 }  // namespace ros
 }  // namespace flexmbd

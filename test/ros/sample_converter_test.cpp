@@ -12,7 +12,7 @@
 
 namespace flexmbd {
 namespace ros {
-namespace {
+namespace sample_converter_test {
 
 // ros::Time keeps nanoseconds.
 constexpr double kStampResolution = 1.0e-9;
@@ -108,6 +108,6 @@ TEST(SampleConverter, HeadersCarryTheSampleIndexAndTime) {
   EXPECT_EQ(converted.back().transforms.transforms.size(), 9u);
 }
 
-}  // namespace
+}  // namespace sample_converter_test
 }  // namespace ros
 }  // namespace flexmbd

@@ -14,7 +14,7 @@
 
 namespace flexmbd {
 namespace ros {
-namespace {
+namespace transform_frames_test {
 
 // Poses are a few products of rotations and lengths of order 1 m: round-off is a few ulp of 1.
 constexpr double kRoundOff = 1.0e-12;
@@ -114,6 +114,6 @@ TEST(TransformFrames, BodyBelowAFrameOnAMovingBodyIsPlacedFromThatFrame) {
   EXPECT_NEAR(std::abs(finger.transform.rotation.w), 1.0, kRoundOff);
 }
 
-}  // namespace
+}  // namespace transform_frames_test
 }  // namespace ros
 }  // namespace flexmbd

@@ -10,7 +10,7 @@
 #include "scheme_tangent_check.hpp"
 
 namespace flexmbd {
-namespace {
+namespace aero_tangent_test {
 
 // The residual is linear in every unknown but the node rotations (whose rates enter through w = T theta / h),
 // so central differences with steps of 1e-6 are exact to round-off, ~1e-16 |r| / 1e-6 = 1e-10 of the largest
@@ -50,5 +50,5 @@ TEST(AeroTangent, EndPointStiffnessAndRatePartsMatchDifferences) {
   test::ExpectEndPointPartsMatchDifferences(s.model, *s.element, s.start, 0.0, 0.5, kStep, kStep, kTolerance);
 }
 
-}  // namespace
+}  // namespace aero_tangent_test
 }  // namespace flexmbd

@@ -10,7 +10,7 @@
 #include "unit_test_helpers.hpp"
 
 namespace flexmbd {
-namespace {
+namespace applied_load_test {
 
 // Short sums of rounded products of O(1..10) factors: a few ulp of the largest term.
 constexpr double kRoundOff = 1.0e-13;
@@ -162,5 +162,5 @@ TEST(AppliedLoad, LoadStiffnessIsExactForEveryKindAndAnalysis) {
   }
 }
 
-}  // namespace
+}  // namespace applied_load_test
 }  // namespace flexmbd

@@ -17,7 +17,7 @@
 #include "unit_test_helpers.hpp"
 
 namespace flexmbd {
-namespace {
+namespace beam_tangent_test {
 
 using Vec6 = Eigen::Matrix<double, 6, 1>;
 using Mat6 = Eigen::Matrix<double, 6, 6>;
@@ -464,5 +464,5 @@ TEST(BeamElement, StepForcesCloseTheEnergyBooks) {
   }
 }
 
-}  // namespace
+}  // namespace beam_tangent_test
 }  // namespace flexmbd

@@ -8,7 +8,7 @@
 #include "flexmbd/solver/cycle_statistics.hpp"
 
 namespace flexmbd {
-namespace {
+namespace cycle_statistics_test {
 
 std::vector<double> Sampled(double mean, double amplitude, double frequency, double dt, int n) {
   std::vector<double> x(n);
@@ -49,5 +49,5 @@ TEST(CycleStatistics, TooFewSamplesGiveNoFrequency) {
   EXPECT_EQ(MeasureCycle({}, 0.1).rms, 0.0);
 }
 
-}  // namespace
+}  // namespace cycle_statistics_test
 }  // namespace flexmbd

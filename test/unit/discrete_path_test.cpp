@@ -17,7 +17,7 @@
 #include "unit_test_helpers.hpp"
 
 namespace flexmbd {
-namespace {
+namespace discrete_path_test {
 
 constexpr int kNodeA = 0, kNodeB = 6, kVariables = 12, kNumIncrements = 14;
 
@@ -296,5 +296,5 @@ TEST(DiscretePath, JointPositionChainDerivativeMatchesFiniteDifference) {
   ExpectDerivativeMatchesFiniteDifference<1>(JointPositionChain, 2.0, 120);
 }
 
-}  // namespace
+}  // namespace discrete_path_test
 }  // namespace flexmbd

@@ -6,7 +6,7 @@
 #include "flexmbd/solver/dissipation_judging.hpp"
 
 namespace flexmbd {
-namespace {
+namespace dissipation_judging_test {
 
 // Runs `steps` steps that cost `late` or `early` iterations; returns how many judged early.
 int EarlySteps(DissipationJudging* judging, int steps, int late, int early) {
@@ -41,5 +41,5 @@ TEST(DissipationJudging, FollowsAModelWhoseCostsChange) {
   EXPECT_LT(EarlySteps(&judging, 400, 5, 8), 100);
 }
 
-}  // namespace
+}  // namespace dissipation_judging_test
 }  // namespace flexmbd

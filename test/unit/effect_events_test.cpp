@@ -9,7 +9,7 @@
 #include "tangent_test_models.hpp"
 
 namespace flexmbd {
-namespace {
+namespace effect_events_test {
 
 TEST(EffectEvents, ContactIntervalsPerStopCloseAtTheEndOfTheRun) {
   ModelSpec spec = test::WorldRevoluteModel();  // hinge at 0.3 rad
@@ -36,5 +36,5 @@ TEST(EffectEvents, ContactIntervalsPerStopCloseAtTheEndOfTheRun) {
                                       "stop hinge upper: 0 contact interval(s)"}));
 }
 
-}  // namespace
+}  // namespace effect_events_test
 }  // namespace flexmbd

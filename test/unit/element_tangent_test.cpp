@@ -19,7 +19,7 @@
 #include "unit_test_helpers.hpp"
 
 namespace flexmbd {
-namespace {
+namespace element_tangent_test {
 
 // Step size of the dynamic tests [s].
 constexpr double kStepSize = 0.01;
@@ -311,5 +311,5 @@ TEST_P(JointTangent, RigidBodiesDynamicMatchFiniteDifference) {
 
 INSTANTIATE_TEST_SUITE_P(AllTypes, JointTangent, ::testing::ValuesIn(test::AllJointCases()), test::JointCaseName);
 
-}  // namespace
+}  // namespace element_tangent_test
 }  // namespace flexmbd

@@ -13,7 +13,7 @@
 #include "unit_test_helpers.hpp"
 
 namespace flexmbd {
-namespace {
+namespace joint_kinematics_test {
 
 // Hand values use the same trigonometric functions: a few ulp of O(1) entries.
 constexpr double kHandValue = 1.0e-14;
@@ -176,5 +176,5 @@ TEST(JointKinematics, ZeroAxisIsAConfigError) {
   EXPECT_NO_THROW(MakeJointKinematics(Spec(JointType::kSpherical, Vec3::Zero())));
 }
 
-}  // namespace
+}  // namespace joint_kinematics_test
 }  // namespace flexmbd

@@ -15,7 +15,7 @@
 #include "unit_test_helpers.hpp"
 
 namespace flexmbd {
-namespace {
+namespace joint_test {
 
 // Poses are composed from O(1) rotations and offsets: the constraint rows are round-off, a few ulp of O(1).
 constexpr double kPoseRoundOff = 1.0e-14;
@@ -106,5 +106,5 @@ TEST_P(JointElement, VariableForcesAreTheVariableResidualRows) {
 
 INSTANTIATE_TEST_SUITE_P(AllTypes, JointElement, ::testing::ValuesIn(test::AllJointCases()), test::JointCaseName);
 
-}  // namespace
+}  // namespace joint_test
 }  // namespace flexmbd

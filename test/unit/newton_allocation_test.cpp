@@ -35,7 +35,7 @@ extern "C" void* malloc(size_t size) {
 #endif
 
 namespace flexmbd {
-namespace {
+namespace newton_allocation_test {
 
 // Allocations made by one Newton iteration (assembly with and without the tangent, refactorisation and
 // solve) at the last iteration of the model's `steps`-th step.
@@ -67,5 +67,5 @@ TEST(NewtonIteration, FlexibleAntennaWithFrictionAndStopsAllocatesNothing) {
             0);
 }
 
-}  // namespace
+}  // namespace newton_allocation_test
 }  // namespace flexmbd

@@ -16,7 +16,7 @@
 #include "tangent_test_models.hpp"
 
 namespace flexmbd {
-namespace {
+namespace newton_test {
 
 // The pivoted arm (0.6 m) held by a torsional spring: it settles where the spring balances gravity, about half
 // a radian down (a nonlinear root: the moment arm is 0.6 cos q).
@@ -119,5 +119,5 @@ TEST(Newton, AnApproximateSolveTakesItsFirstIncrementOnAnExpectedContraction) {
             SolveStatic(model, kLoose, NewtonOptions{}).report.iterations);
 }
 
-}  // namespace
+}  // namespace newton_test
 }  // namespace flexmbd

@@ -8,7 +8,7 @@
 #include "unit_test_helpers.hpp"
 
 namespace flexmbd {
-namespace {
+namespace node_step_test {
 
 // Each checked quantity is a short sum of rounded O(1..100) terms: a few ulp of its size.
 constexpr double kRoundOff = 1.0e-13;
@@ -116,5 +116,5 @@ TEST(StepContext, MidRateIsHalfInDynamicsAndOneInStatics) {
   EXPECT_EQ(ctx.mid_rate(), 1.0);
 }
 
-}  // namespace
+}  // namespace node_step_test
 }  // namespace flexmbd

@@ -12,7 +12,7 @@
 #include "flexmbd/aero/thin_airfoil_loads.hpp"
 
 namespace flexmbd {
-namespace {
+namespace peters_section_test {
 
 constexpr double kB = 0.127, kA = -0.5, kC = 0.5, kRho = 1.225, kU = 20.0;  // the Conner section's geometry
 // The rigid coefficients have finite cosine series: exact to round-off.
@@ -139,5 +139,5 @@ TEST(PetersSection, SteadyInflowLeavesTheQuasiSteadyLift) {
   EXPECT_NEAR(std::abs(StatesLag(PetersInflow(8), 1.0e-6) - 1.0), 0.0, 1.0e-5);
 }
 
-}  // namespace
+}  // namespace peters_section_test
 }  // namespace flexmbd

@@ -10,7 +10,7 @@
 #include "flexmbd/solver/time_integrator.hpp"
 
 namespace flexmbd {
-namespace {
+namespace smoothed_rates_test {
 
 const Vec3 kBodyVelocity(0.3, 2.0, -0.1);  // nu [m/s]
 const Vec3 kBodySpin(0.2, -0.4, 3.0);      // omega [rad/s]
@@ -70,5 +70,5 @@ TEST(SmoothedRates, FewerThanThreeStepsKeepTheEndRates) {
   EXPECT_EQ(smoothed.qdot, end.qdot);
 }
 
-}  // namespace
+}  // namespace smoothed_rates_test
 }  // namespace flexmbd

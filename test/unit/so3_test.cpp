@@ -11,7 +11,7 @@
 #include "unit_test_helpers.hpp"
 
 namespace flexmbd {
-namespace {
+namespace so3_test {
 
 // Angles spanning the series branches of the implementation (tiny angles), the range where closed forms such
 // as (1 - cos x)/x^2 would cancel (1e-4 .. 1e-2), both sides of the series switches seen so far (1e-4, 0.5), and
@@ -236,5 +236,5 @@ TEST(So3, SincMatchesSinOverX) {
   }
 }
 
-}  // namespace
+}  // namespace so3_test
 }  // namespace flexmbd

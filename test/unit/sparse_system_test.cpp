@@ -19,7 +19,7 @@
 #include "unit_test_helpers.hpp"
 
 namespace flexmbd {
-namespace {
+namespace sparse_system_test {
 
 constexpr double kStepSize = 0.01;
 // The sparse and dense sums add the same terms, possibly in another order: a few ulp of the largest term.
@@ -164,5 +164,5 @@ TEST(SparseSystem, SolveReportsSingularMatrix) {
   EXPECT_FALSE(system.Solve(&dx));
 }
 
-}  // namespace
+}  // namespace sparse_system_test
 }  // namespace flexmbd

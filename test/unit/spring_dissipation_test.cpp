@@ -9,7 +9,7 @@
 #include "unit_test_helpers.hpp"
 
 namespace flexmbd {
-namespace {
+namespace spring_dissipation_test {
 
 constexpr double kAlpha = 0.07;
 constexpr double kStep = 0.01;
@@ -71,5 +71,5 @@ TEST(SpringDissipation, WorkIsEnergyChangePlusDissipation) {
   EXPECT_NEAR(q.dq_lagged, kStep / (0.8 * kStep) * 0.004, kIdentity);
 }
 
-}  // namespace
+}  // namespace spring_dissipation_test
 }  // namespace flexmbd

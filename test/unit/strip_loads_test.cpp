@@ -11,7 +11,7 @@
 #include "flexmbd/aero/thin_airfoil_loads.hpp"
 
 namespace flexmbd {
-namespace {
+namespace strip_loads_test {
 
 constexpr double kRho = 1.225, kU = 30.0, kB = 0.5, kA = -0.3;
 // Motions of relative size 1e-6 (angles, and rates per U/b): the strip's exact kinematics (cos alpha, the
@@ -161,5 +161,5 @@ TEST(StripLoads, QuasiSteadyReverseFlowIsTheMirroredPlateInForwardFlow) { Expect
 
 TEST(StripLoads, ReverseFlowWithWakeInflowIsTheMirroredPlateInForwardFlow) { ExpectReverseFlowIsTheMirroredPlate(4); }
 
-}  // namespace
+}  // namespace strip_loads_test
 }  // namespace flexmbd

@@ -12,7 +12,7 @@
 #include "scheme_tangent_check.hpp"
 
 namespace flexmbd {
-namespace {
+namespace strip_tangent_test {
 
 // The residual is at most quadratic in the rates (u times the downwash) and smooth in the rotations: central
 // differences with steps of 1e-6 are good to ~1e-16 |r| / 1e-6 plus (1e-6)^2 times the third derivative
@@ -131,5 +131,5 @@ TEST(StripTangent, RotorBladeMidStepSchemeTangentMatchesDifferences) {
 // stiffness and rate parts are checked together in the mid-step scheme tangent above.
 TEST(StripTangent, RotorBladeEndPointStiffnessAndRatePartsMatchDifferences) { ExpectEndPointPartsMatchDifferences(RotorStrip()); }
 
-}  // namespace
+}  // namespace strip_tangent_test
 }  // namespace flexmbd

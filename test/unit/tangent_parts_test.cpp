@@ -10,7 +10,7 @@
 #include "unit_test_helpers.hpp"
 
 namespace flexmbd {
-namespace {
+namespace tangent_parts_test {
 
 // Rates and accelerations of order 1: central differences of residuals at most quadratic in them (the
 // gyroscopic w x J w) are exact to round-off, ~1e-16 |r| / 1e-6 = 1e-10 of the largest entry.
@@ -93,5 +93,5 @@ TEST(TangentParts, SchemeCombinesThePartsColumnByColumn) {
   EXPECT_LT(test::MaxAbs(combined - expected), 1.0e-14 * test::MaxAbs(expected));
 }
 
-}  // namespace
+}  // namespace tangent_parts_test
 }  // namespace flexmbd

@@ -6,7 +6,7 @@
 #include "flexmbd/solver/tangent_reuse.hpp"
 
 namespace flexmbd {
-namespace {
+namespace tangent_reuse_test {
 
 // Runs `steps` eligible steps whose attempts all hold or all fail; returns how many attempted.
 int Attempts(TangentReuse* reuse, int steps, bool held) {
@@ -42,5 +42,5 @@ TEST(TangentReuse, ResumesWhenRetriesHoldAgain) {
   EXPECT_GE(Attempts(&reuse, 200, true), 200 - 48);
 }
 
-}  // namespace
+}  // namespace tangent_reuse_test
 }  // namespace flexmbd

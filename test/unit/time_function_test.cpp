@@ -8,7 +8,7 @@
 #include "flexmbd/math/time_function.hpp"
 
 namespace flexmbd {
-namespace {
+namespace time_function_test {
 
 // Hand values are computed with the same formulas in double: a few ulp of O(1..10) values.
 constexpr double kHandValue = 1.0e-13;
@@ -214,5 +214,5 @@ TEST(TimeFunction, TableRatesAtKnotsAreRightDerivatives) {
   EXPECT_NEAR(EvaluateRate(f, 0.0), 2.0, kHandValue);
 }
 
-}  // namespace
+}  // namespace time_function_test
 }  // namespace flexmbd

@@ -12,7 +12,7 @@
 #include "tangent_test_models.hpp"
 
 namespace flexmbd {
-namespace {
+namespace velocity_projection_test {
 
 // The pivoted arm with a tight Newton tolerance.
 ModelSpec Pendulum() {
@@ -105,5 +105,5 @@ TEST(VelocityProjection, HoldsAContactBroughtToRestAndReleasesTheOthers) {
   EXPECT_NEAR(state.dissipated_numerical, kinetic_before, kTolerance);
 }
 
-}  // namespace
+}  // namespace velocity_projection_test
 }  // namespace flexmbd

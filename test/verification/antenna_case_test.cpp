@@ -13,7 +13,7 @@
 #include "flexmbd/solver/simulation.hpp"
 
 namespace flexmbd {
-namespace {
+namespace antenna_case_test {
 
 ModelSpec Variant(const std::string& variant) {
   const std::string dir = std::string(FLEXMBD_SOURCE_DIR) + "/config/antenna/";
@@ -87,5 +87,5 @@ TEST(AntennaCase, FlexibleFrictionCaseRunsToItsEndWithAdaptiveSteps) {
   ExpectRunsToItsEnd(spec, "flexible friction, adaptive steps");
 }
 
-}  // namespace
+}  // namespace antenna_case_test
 }  // namespace flexmbd

@@ -15,7 +15,7 @@
 #include "friction_bound.hpp"
 
 namespace flexmbd {
-namespace {
+namespace antenna_published_test {
 
 constexpr double kShortRun = 3.0;  // [s]
 // The drive is a linear constraint on phi_1, met by each Newton update to round-off (observed: 7e-18 rad).
@@ -143,5 +143,5 @@ TEST(AntennaPublished, Case0WholeRunWithin2000StepsAndOnePercentOfConvergedPeaks
   }
 }
 
-}  // namespace
+}  // namespace antenna_published_test
 }  // namespace flexmbd

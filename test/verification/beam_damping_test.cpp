@@ -12,7 +12,7 @@
 #include "flexmbd/solver/simulation.hpp"
 
 namespace flexmbd {
-namespace {
+namespace beam_damping_test {
 
 constexpr double kLength = 1.0, kEI = 100.0, kMass = 1.0;
 // First bending frequency sqrt(EI / m L^4) 1.8751^2 = 35.16 rad/s; mu = 5.7e-4 s gives it zeta = 1%.
@@ -174,5 +174,5 @@ TEST(BeamDamping, ReleasedCantileverDecaysAtZetaOmegaAndBalancesEnergy) {
   RecordProperty("energy_balance_relative", test::Figure(r.worst_balance / r.initial_energy));
 }
 
-}  // namespace
+}  // namespace beam_damping_test
 }  // namespace flexmbd

@@ -10,7 +10,7 @@
 #include "flexmbd/solver/simulation.hpp"
 
 namespace flexmbd {
-namespace {
+namespace beam_dynamics_test {
 
 // A free beam (no joints, no gravity) launched spinning and bending: it tumbles and vibrates in bending,
 // torsion and extension, a stringent test of rotations, strains and inertia together.
@@ -78,11 +78,11 @@ TEST(BeamDynamics, FreeFlyingBeamEnergyNeverIncreasesWithEnergyDecayingScheme) {
   EXPECT_LT(r.max_increase, kIncreaseTolerance);
 }
 
-}  // namespace
+}  // namespace beam_dynamics_test
 }  // namespace flexmbd
 
 namespace flexmbd {
-namespace {
+namespace beam_dynamics_test {
 
 // A flexible beam clamped to a hub that a drive turns by 90 degrees about z with a smooth (1 - cos) ramp.
 ModelSpec HubAndBeam() {
@@ -161,11 +161,11 @@ TEST(BeamDynamics, SpinUpOfBeamOnDrivenHubStaysBoundedAndKeepsEnergyBooks) {
   EXPECT_LT(worst_jump, 0.2 * worst_lag);
 }
 
-}  // namespace
+}  // namespace beam_dynamics_test
 }  // namespace flexmbd
 
 namespace flexmbd {
-namespace {
+namespace beam_dynamics_test {
 
 // A blade on a free hub spun to 10 rad/s, run as a user runs it (test/data, default settings). Reference: the
 // centrifugal tension at the root of a uniform blade, N = m Omega^2 L^2 / 2 = 125 N at 10 rad/s. The lumped
@@ -230,11 +230,11 @@ TEST(BeamDynamics, StiffBeamArmStartedFromItsStaticEquilibriumStaysThere) {
   EXPECT_LT(largest_change, kRestTolerance);
 }
 
-}  // namespace
+}  // namespace beam_dynamics_test
 }  // namespace flexmbd
 
 namespace flexmbd {
-namespace {
+namespace beam_dynamics_test {
 
 // Total energy per step of a cantilever kicked along its axis for one step and then stepped at w h ~ 1000 for
 // its axial modes: the kick leaves unresolved modes only.
@@ -269,5 +269,5 @@ TEST(BeamDynamics, EnergyDecayingSchemeDampsUnresolvedStrainModes) {
   }
 }
 
-}  // namespace
+}  // namespace beam_dynamics_test
 }  // namespace flexmbd

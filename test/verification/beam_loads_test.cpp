@@ -8,7 +8,7 @@
 #include "flexmbd/solver/simulation.hpp"
 
 namespace flexmbd {
-namespace {
+namespace beam_loads_test {
 
 constexpr double kLength = 1.0, kEI = 100.0, kMass = 1.0;
 
@@ -86,5 +86,5 @@ TEST(BeamLoads, FollowerLoadKeepsItsMomentAboutTheHinge) {
   EXPECT_LT(HingedBeamAngle(LoadSpec::Frame::kWorld, t_end, 4 * dt), 0.95 * expected);
 }
 
-}  // namespace
+}  // namespace beam_loads_test
 }  // namespace flexmbd

@@ -9,7 +9,7 @@
 #include "flexmbd/solver/eigen_analysis.hpp"
 
 namespace flexmbd {
-namespace {
+namespace beam_modes_test {
 
 constexpr double kLength = 1.0, kEI = 100.0, kMass = 1.0, kGJ = 50.0, kRhoJ = 1.0e-3;
 // Shear and axial stiffness 1e6 EI / L^2 and bending rotary inertia 1e-7 m make the Timoshenko corrections
@@ -66,11 +66,11 @@ TEST(BeamModes, FrequencyErrorFallsWithElementCount) {
                  std::to_string(errors[0]) + " " + std::to_string(errors[1]) + " " + std::to_string(errors[2]));
 }
 
-}  // namespace
+}  // namespace beam_modes_test
 }  // namespace flexmbd
 
 namespace flexmbd {
-namespace {
+namespace beam_modes_test {
 
 // A uniform cantilever clamped to a hub that a drive spins about z at constant speed; the state to linearise
 // about is the steady rotation, with the beam stretched by its centrifugal load (u(x) = m W^2 (L^2 x / 2 -
@@ -134,5 +134,5 @@ TEST(BeamModes, RotatingCantileverFlapFrequencyMatchesPublishedValues) {
   }
 }
 
-}  // namespace
+}  // namespace beam_modes_test
 }  // namespace flexmbd

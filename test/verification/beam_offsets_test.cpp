@@ -13,7 +13,7 @@
 #include "flexmbd/solver/simulation.hpp"
 
 namespace flexmbd {
-namespace {
+namespace beam_offsets_test {
 
 constexpr double kLength = 1.0, kEI = 100.0, kMass = 1.0;
 
@@ -177,5 +177,5 @@ TEST(BeamOffsets, OffsetMassesAndShearCentreKeepTheEnergyIdentity) {
   RecordProperty("energy_balance_relative", test::Figure(worst / largest));
 }
 
-}  // namespace
+}  // namespace beam_offsets_test
 }  // namespace flexmbd

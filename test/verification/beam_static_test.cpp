@@ -8,7 +8,7 @@
 #include "flexmbd/solver/simulation.hpp"
 
 namespace flexmbd {
-namespace {
+namespace beam_static_test {
 
 constexpr double kLength = 1.0, kEI = 100.0;
 // Axial and shear stiffness 1e6 times EI / L^2 make the beam practically inextensible and shear-rigid, as the
@@ -93,5 +93,5 @@ TEST(BeamStatics, TipLoadMatchesElasticaDeflections) {
   }
 }
 
-}  // namespace
+}  // namespace beam_static_test
 }  // namespace flexmbd

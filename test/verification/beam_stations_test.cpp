@@ -9,7 +9,7 @@
 #include "flexmbd/solver/simulation.hpp"
 
 namespace flexmbd {
-namespace {
+namespace beam_stations_test {
 
 constexpr double kLength = 1.0, kEI = 100.0, kEA = 1.0e4, kGA = 1.0e4, kLoad = 1.0e-3;
 
@@ -54,5 +54,5 @@ TEST(BeamStations, TipLoadGivesShearPAndMomentPTimesArm) {
   EXPECT_LT((last.beam_stations.back().rotation - Log(tip.R * tip0.R.transpose())).norm(), 1.0e-14);
 }
 
-}  // namespace
+}  // namespace beam_stations_test
 }  // namespace flexmbd

@@ -14,7 +14,7 @@
 #include "flexmbd/solver/simulation.hpp"
 
 namespace flexmbd {
-namespace {
+namespace beam_stop_test {
 
 // Beam along +x from a hinge about y at the origin; gravity -z turns it toward positive angles, onto an upper
 // stop (the droop stop) at kDroopAngle, contact radius kStopRadius.
@@ -101,5 +101,5 @@ TEST(BeamOnDroopStop, RootCurvatureChangesSignAtTheImpact) {
   EXPECT_GT(after * held, 0.0) << "mean curvature after the impact " << after;
 }
 
-}  // namespace
+}  // namespace beam_stop_test
 }  // namespace flexmbd

@@ -17,7 +17,7 @@
 #include "runner_output.hpp"
 
 namespace flexmbd {
-namespace {
+namespace blade_drop_friction_test {
 
 struct FrictionDrop {
   FrictionDrop()
@@ -132,5 +132,5 @@ TEST(BladeDropFriction, FixedStepsOfTenMillisecondsFollowTheFineSteps) {
   }
 }
 
-}  // namespace
+}  // namespace blade_drop_friction_test
 }  // namespace flexmbd

@@ -19,7 +19,7 @@
 #include "runner_output.hpp"
 
 namespace flexmbd {
-namespace {
+namespace blade_drop_test {
 
 constexpr double kShortRun = 0.4;  // [s]: past the impacts (0.16 and 0.22 s for a rigid blade)
 constexpr double kStation = 0.4;   // x / L of the published strain station, the YAML's first beam station
@@ -265,5 +265,5 @@ TEST(BladeDrop, ContactForcePositiveOnlyInContact) {
   }
 }
 
-}  // namespace
+}  // namespace blade_drop_test
 }  // namespace flexmbd

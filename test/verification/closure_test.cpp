@@ -17,7 +17,7 @@
 #include "runner_output.hpp"
 
 namespace flexmbd {
-namespace {
+namespace closure_test {
 
 constexpr double kPi = 3.14159265358979323846;
 constexpr double kCrank = 0.1, kRod = 0.3;  // [m], test/data/urdf/slider_crank.urdf
@@ -173,5 +173,5 @@ TEST(Closure, WingAileronBracketsLeaveTheAileronOnlyItsFlap) {
   EXPECT_NE(output.find("145 degrees of freedom, 1 rigid-body modes"), std::string::npos) << output;
 }
 
-}  // namespace
+}  // namespace closure_test
 }  // namespace flexmbd

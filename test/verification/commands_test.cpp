@@ -12,7 +12,7 @@
 #include "flexmbd/solver/simulation.hpp"
 
 namespace flexmbd {
-namespace {
+namespace commands_test {
 
 constexpr double kMass = 1.0, kArm = 0.5, kInertiaCm = 0.02, kGravity = 9.81;
 constexpr double kAngle = 0.5;   // initial angle below the horizontal [rad]
@@ -128,5 +128,5 @@ TEST(Commands, BadCommandsNameTheVariable) {
   EXPECT_THROW(simulation.SetEffort(1, 0.0), ConfigError);
 }
 
-}  // namespace
+}  // namespace commands_test
 }  // namespace flexmbd

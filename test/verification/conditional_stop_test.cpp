@@ -13,7 +13,7 @@
 #include "flexmbd/solver/simulation.hpp"
 
 namespace flexmbd {
-namespace {
+namespace conditional_stop_test {
 
 // Hub drive: q(t) = (kHubTurn / 2) (1 - cos(pi t / kRampTime)), rate kPeakRate sin(pi t / kRampTime).
 constexpr double kHubTurn = 2.0, kRampTime = 1.0;
@@ -159,5 +159,5 @@ TEST(ConditionalStop, StopInContactRetractsAtTheSeparation) {
   }
 }
 
-}  // namespace
+}  // namespace conditional_stop_test
 }  // namespace flexmbd

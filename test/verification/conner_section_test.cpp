@@ -20,7 +20,7 @@
 #include "runner_output.hpp"
 
 namespace flexmbd {
-namespace {
+namespace conner_section_test {
 
 const std::string kDir = std::string(FLEXMBD_SOURCE_DIR) + "/config/conner_section/";
 
@@ -360,5 +360,5 @@ TEST(ConnerSection, RunnerReportsTheFreeplayLimitCycle) {
   EXPECT_NE(out.find("flexmbd_run: cycle of plunge over [30, 60] s: "), std::string::npos) << out;
 }
 
-}  // namespace
+}  // namespace conner_section_test
 }  // namespace flexmbd

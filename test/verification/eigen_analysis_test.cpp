@@ -24,7 +24,7 @@
 #include "flexmbd/solver/steady_rotation.hpp"
 
 namespace flexmbd {
-namespace {
+namespace eigen_analysis_test {
 
 constexpr double kG = 9.81;  // [m/s^2]
 
@@ -605,5 +605,5 @@ TEST(EigenRunner, DampedFlexibleAntennaKeepsItsDeploymentModesAtDefaultSettings)
   }
 }
 
-}  // namespace
+}  // namespace eigen_analysis_test
 }  // namespace flexmbd

@@ -14,7 +14,7 @@
 #include "runner_output.hpp"
 
 namespace flexmbd {
-namespace {
+namespace eigen_at_times_test {
 
 const char kUrdf[] = "test/data/urdf/simple_pendulum.urdf";
 constexpr double kG = 9.81;
@@ -81,5 +81,5 @@ TEST(EigenAtTimes, PendulumModeFollowsTheAngleOfTheSwing) {
   EXPECT_NEAR(RowAt(csv, times[2])[angle], -kReleaseDeg * M_PI / 180, kSwingTolerance);
 }
 
-}  // namespace
+}  // namespace eigen_at_times_test
 }  // namespace flexmbd

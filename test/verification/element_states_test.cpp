@@ -15,7 +15,7 @@
 #include "flexmbd/solver/static_solver.hpp"
 
 namespace flexmbd {
-namespace {
+namespace element_states_test {
 
 // Lag x' = (u(t) - x) / tau with u = u0 + u1 sin(w t), coupled to nothing. Its equation in the form (S1):
 // tau x' + x - u(t) = 0, read at the scheme's time (mid-step, or the end).
@@ -256,5 +256,5 @@ TEST(ElementStates, MaxwellEnergyBooksBalanceWithTheEnergyPreservingScheme) {
   for (double b : books) EXPECT_NEAR(b, books.front(), kBooksTolerance * std::abs(books.front()));
 }
 
-}  // namespace
+}  // namespace element_states_test
 }  // namespace flexmbd

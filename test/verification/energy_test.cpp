@@ -10,7 +10,7 @@
 #include "flexmbd/solver/step_context_builder.hpp"
 
 namespace flexmbd {
-namespace {
+namespace energy_test {
 
 // A large step for this pendulum (period ~2 s, chaotic motion): 100 steps per period of the linear mode.
 constexpr double kLargeStep = 0.02;
@@ -87,5 +87,5 @@ TEST(EnergyDecayingScheme, ConstraintsHoldAtEveryStep) {
   EXPECT_LT(r.max_constraint, kConstraintLimit);
 }
 
-}  // namespace
+}  // namespace energy_test
 }  // namespace flexmbd

@@ -14,7 +14,7 @@
 #include "run_trace.hpp"
 
 namespace flexmbd {
-namespace {
+namespace forearm_stop_test {
 
 constexpr double kPi = 3.14159265358979323846;
 constexpr double kStop = 2.0 * kPi / 180.0;  // [rad]
@@ -194,5 +194,5 @@ TEST(RigidStop, OscillatingDrivenChainWithRigidStops) {
   EXPECT_GT(CountEvents(spec, run).contacts, 200);  // measured 445
 }
 
-}  // namespace
+}  // namespace forearm_stop_test
 }  // namespace flexmbd

@@ -16,7 +16,7 @@
 #include "flexmbd/solver/simulation.hpp"
 
 namespace flexmbd {
-namespace {
+namespace friction_test {
 
 // Rotor J = 0.5 kg m^2 on a frictional revolute joint, no gravity: the normal force is the preload alone.
 constexpr double kInertia = 0.5, kRadius = 0.02, kPreload = 100.0, kMuS = 0.3, kMuK = 0.2;
@@ -324,5 +324,5 @@ TEST(Friction, CoreRejectsNonphysicalSettings) {
                                   "regularisation speed > 0 [m/s] for the regularised law");
 }
 
-}  // namespace
+}  // namespace friction_test
 }  // namespace flexmbd

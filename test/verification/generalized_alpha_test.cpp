@@ -10,7 +10,7 @@
 #include "flexmbd/solver/step_context_builder.hpp"
 
 namespace flexmbd {
-namespace {
+namespace generalized_alpha_test {
 
 constexpr double kMass = 2.0, kStiffness = 50.0, kAmplitude = 0.1;  // [kg], [N/m], [m]
 
@@ -110,5 +110,5 @@ TEST(GeneralizedAlpha, DoublePendulumConstraintsHold) {
   EXPECT_LT(worst, kConstraintLimit);
 }
 
-}  // namespace
+}  // namespace generalized_alpha_test
 }  // namespace flexmbd

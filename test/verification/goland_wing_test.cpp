@@ -20,7 +20,7 @@
 #include "runner_output.hpp"
 
 namespace flexmbd {
-namespace {
+namespace goland_wing_test {
 
 const std::string kDir = std::string(FLEXMBD_SOURCE_DIR) + "/config/goland_wing/";
 
@@ -173,5 +173,5 @@ TEST(GolandWing, MotionAboveFlutterGrows) {
   EXPECT_LT(run.books, kBooks * run.throughput);
 }
 
-}  // namespace
+}  // namespace goland_wing_test
 }  // namespace flexmbd

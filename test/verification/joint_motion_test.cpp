@@ -10,7 +10,7 @@
 #include "flexmbd/solver/step_context_builder.hpp"
 
 namespace flexmbd {
-namespace {
+namespace joint_motion_test {
 
 constexpr double kMass = 2.0, kInertia = 0.5;  // body mass [kg], isotropic inertia about the CM [kg m^2]
 constexpr double kForce = 3.0, kMoment = 0.7;  // loads along/about the joint axis [N], [N m]
@@ -141,5 +141,5 @@ TEST(JointMotion, FixedDoesNotMove) {
   EXPECT_EQ(o.q.size(), 0);
 }
 
-}  // namespace
+}  // namespace joint_motion_test
 }  // namespace flexmbd

@@ -11,7 +11,7 @@
 #include "flexmbd/solver/simulation.hpp"
 
 namespace flexmbd {
-namespace {
+namespace oscillator_test {
 
 constexpr double kMass = 2.0, kStiffness = 50.0, kAmplitude = 0.1;  // [kg], [N/m], [m]
 
@@ -156,5 +156,5 @@ TEST(AdaptiveStepping, ReachesAccuracyWithFewerStepsThanFixedStep) {
   EXPECT_LT(adaptive_error, fixed_error) << "adaptive steps " << adaptive_steps;
 }
 
-}  // namespace
+}  // namespace oscillator_test
 }  // namespace flexmbd

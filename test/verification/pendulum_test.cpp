@@ -10,7 +10,7 @@
 #include "flexmbd/solver/simulation.hpp"
 
 namespace flexmbd {
-namespace {
+namespace pendulum_test {
 
 using test::EllipticK;
 
@@ -46,5 +46,5 @@ TEST(Pendulum, PeriodFromNinetyDegreesMatchesEllipticIntegral) {
   EXPECT_NEAR((turns[2] - turns[0]) / exact, 1.0, kPeriodTolerance);
 }
 
-}  // namespace
+}  // namespace pendulum_test
 }  // namespace flexmbd

@@ -21,7 +21,7 @@
 #include "runner_output.hpp"
 
 namespace flexmbd {
-namespace {
+namespace rotating_beam_test {
 
 const char kUrdf[] = "test/data/urdf/rotating_cantilever.urdf";
 const char kYaml[] = "test/data/yaml/rotating_cantilever.yaml";
@@ -234,5 +234,5 @@ TEST(RotatingBeam, ModelThatDoesNotSpinIsABadInput) {
   EXPECT_NE(output.find("joints.*.initial.velocity: no joint has a rate"), std::string::npos) << output;
 }
 
-}  // namespace
+}  // namespace rotating_beam_test
 }  // namespace flexmbd

@@ -13,7 +13,7 @@
 #include "runner_output.hpp"
 
 namespace flexmbd {
-namespace {
+namespace rotor_blade_fan_test {
 
 constexpr double kOmega0 = 27.61;  // rad/s, the hub's initial rate in blade_fan.yaml
 const double kFactors[] = {0.1, 0.2, 0.3, 0.4, 0.5, 0.6, 0.7, 0.8, 0.9, 1.0, 1.1, 1.2};
@@ -100,5 +100,5 @@ TEST(RotorBladeFan, TorsionStiffensByThePropellerMoment) {
   }
 }
 
-}  // namespace
+}  // namespace rotor_blade_fan_test
 }  // namespace flexmbd

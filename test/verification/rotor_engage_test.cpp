@@ -17,7 +17,7 @@
 #include "runner_output.hpp"
 
 namespace flexmbd {
-namespace {
+namespace rotor_engage_test {
 
 constexpr double kDegree = 3.14159265358979323846 / 180.0;
 constexpr double kCollective = 3.0 * kDegree, kLongitudinal = 2.5 * kDegree, kLateral = 0.0693 * kDegree;
@@ -98,5 +98,5 @@ TEST(RotorEngage, BladesSettleOntoTheirDroopStopsAsTheRunUpStarts) {
   }
 }
 
-}  // namespace
+}  // namespace rotor_engage_test
 }  // namespace flexmbd

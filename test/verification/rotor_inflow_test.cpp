@@ -15,7 +15,7 @@
 #include "runner_output.hpp"
 
 namespace flexmbd {
-namespace {
+namespace rotor_inflow_test {
 
 const char kUrdf[] = "test/data/urdf/hover_rotor.urdf";
 
@@ -153,5 +153,5 @@ TEST(RotorInflow, ClimbInflowMatchesMomentumTheoryWithClimb) {
   EXPECT_NEAR(thrust, 2.0 * kRho * theory.disc * (3.0 + nu) * nu, kSteadyTolerance * thrust);
 }
 
-}  // namespace
+}  // namespace rotor_inflow_test
 }  // namespace flexmbd

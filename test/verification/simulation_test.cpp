@@ -9,7 +9,7 @@
 #include "flexmbd/solver/simulation.hpp"
 
 namespace flexmbd {
-namespace {
+namespace simulation_test {
 
 ModelSpec AdaptivePendulum() {
   ModelSpec spec = test::Pendulum(1.0, 1.0, 1.0e-3);
@@ -48,5 +48,5 @@ TEST(Simulation, SamplesComeAtTheOutputRate) {
   EXPECT_LT(simulation.statistics().accepted, 1000);  // the steps are not tied to the samples
 }
 
-}  // namespace
+}  // namespace simulation_test
 }  // namespace flexmbd

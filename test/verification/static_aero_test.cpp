@@ -15,7 +15,7 @@
 #include "runner_output.hpp"
 
 namespace flexmbd {
-namespace {
+namespace static_aero_test {
 
 std::string ReadFile(const std::string& path) {
   std::ifstream file(path);
@@ -203,5 +203,5 @@ TEST(StaticAero, FreeAileronBetweenOpenStopsFloatsAsWithoutThem) {
   EXPECT_NEAR(twist / twist_free, 1.0, kSolveTolerance);
 }
 
-}  // namespace
+}  // namespace static_aero_test
 }  // namespace flexmbd

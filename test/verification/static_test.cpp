@@ -13,7 +13,7 @@
 #include "runner_output.hpp"
 
 namespace flexmbd {
-namespace {
+namespace static_test {
 
 TEST(StaticAnalysis, PendulumWithTorsionalSpringBalancesGravity) {
   // Arm upright at phi = 0 (CM at height l above the pivot), torsional spring k, gravity -z: equilibrium
@@ -148,5 +148,5 @@ TEST(StaticAnalysis, PendulumHangingAtRestStaysInOneIterationPerLoadStep) {
   EXPECT_NEAR(equilibrium.at(table.Column("joint.hinge.position")), M_PI / 2, 3.5e-14);
 }
 
-}  // namespace
+}  // namespace static_test
 }  // namespace flexmbd

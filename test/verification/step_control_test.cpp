@@ -15,7 +15,7 @@
 #include "flexmbd/solver/simulation.hpp"
 
 namespace flexmbd {
-namespace {
+namespace step_control_test {
 
 constexpr double kPi = 3.14159265358979323846;
 constexpr double kGravity = 9.81;
@@ -258,5 +258,5 @@ TEST(StepControl, FreeplayAdaptiveStepsBeatFixedStepsOfTheSameCount) {
   for (double error_tol : {1.0e-4, 1.0e-5, 1.0e-6}) ExpectAdaptiveBeatsFixed(Freeplay(), FreeplayPeriod(), error_tol);
 }
 
-}  // namespace
+}  // namespace step_control_test
 }  // namespace flexmbd

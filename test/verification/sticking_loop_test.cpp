@@ -18,7 +18,7 @@
 #include "runner_output.hpp"
 
 namespace flexmbd {
-namespace {
+namespace sticking_loop_test {
 
 constexpr double kPi = 3.14159265358979323846;
 constexpr double kG = 9.81;
@@ -225,5 +225,5 @@ TEST(StickingLoop, RunnerRunsTheStuckLoopsThatWereSingular) {
   EXPECT_NE(four_bar.find("finished at t = 1 s"), std::string::npos) << four_bar;
 }
 
-}  // namespace
+}  // namespace sticking_loop_test
 }  // namespace flexmbd

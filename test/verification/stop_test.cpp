@@ -11,7 +11,7 @@
 #include "flexmbd/solver/simulation.hpp"
 
 namespace flexmbd {
-namespace {
+namespace stop_test {
 
 std::vector<OutputSample> RunAll(const ModelSpec& spec) { return test::RunTrace(spec).samples; }
 
@@ -240,5 +240,5 @@ TEST(FreeplayOscillator, PeriodMatchesPiecewiseSolution) {
   }
 }
 
-}  // namespace
+}  // namespace stop_test
 }  // namespace flexmbd

@@ -18,7 +18,7 @@
 #include "yaml_text.hpp"
 
 namespace flexmbd {
-namespace {
+namespace wing_aileron_lco_test {
 
 using test::ReadFile;
 using test::Replaced;
@@ -273,5 +273,5 @@ TEST(WingAileronLco, At5DegreesWideFreeplayKeepsACycleWhereNarrowFreeplayDies) {
   EXPECT_TRUE(ContactStarts(wide, "lower", 1.0).empty());
 }
 
-}  // namespace
+}  // namespace wing_aileron_lco_test
 }  // namespace flexmbd

@@ -19,7 +19,7 @@
 #include "yaml_text.hpp"
 
 namespace flexmbd {
-namespace {
+namespace wing_aileron_test {
 
 using test::ReadFile;
 using test::Replaced;
@@ -124,5 +124,5 @@ TEST(WingAileron, ReleasedInItsGapTheFlapLandsOnItsStop) {
   EXPECT_NEAR(start, kConvergedStart, kRelative * kConvergedStart) << output;
 }
 
-}  // namespace
+}  // namespace wing_aileron_test
 }  // namespace flexmbd
