@@ -6,8 +6,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
-#include <iterator>
 #include <string>
 #include <vector>
 
@@ -18,19 +16,19 @@
 #include "../integration/helpers/csv_table.hpp"
 #include "peak_rate.hpp"
 #include "runner_output.hpp"
+#include "yaml_text.hpp"
 
 namespace flexmbd {
 namespace conner_section_test {
+
+using test::Replaced;
 
 const std::string kDir = std::string(FLEXMBD_SOURCE_DIR) + "/config/conner_section/";
 
 ModelSpec Case(const std::string& yaml) { return LoadModelSpec(kDir + "conner_section.urdf", kDir + yaml); }
 
 // The text of one of the case's YAML files.
-std::string CaseText(const std::string& yaml) {
-  std::ifstream file(kDir + yaml);
-  return std::string((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
-}
+std::string CaseText(const std::string& yaml) { return test::ReadFile(kDir + yaml); }
 
 // Largest real part of the roots at speed U with N inflow states [1/s] (> 0: unstable).
 double LeastStableRoot(double U, int states) {
@@ -56,13 +54,6 @@ TEST(ConnerSection, StructuralFrequenciesMatchPublished) {
     EXPECT_NEAR(test::TableFrequency(table, k + 1), kPublished[k], kRelative * kPublished[k]) << table;
   }
   EXPECT_TRUE(std::isnan(test::TableFrequency(table, 4))) << table;
-}
-
-// `text` with its one occurrence of `from` replaced by `to`.
-std::string Replaced(std::string text, const std::string& from, const std::string& to) {
-  const size_t at = text.find(from);
-  EXPECT_NE(at, std::string::npos) << from;
-  return at == std::string::npos ? text : text.replace(at, from.size(), to);
 }
 
 // The flutter speed the runner prints for flutter_sweep.yaml with `states` inflow states [m/s] (NaN if none), and

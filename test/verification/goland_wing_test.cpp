@@ -8,8 +8,6 @@
 #include <cmath>
 #include <complex>
 #include <cstdio>
-#include <fstream>
-#include <iterator>
 #include <string>
 #include <vector>
 
@@ -18,6 +16,7 @@
 #include "flexmbd/solver/simulation.hpp"
 #include "peak_rate.hpp"
 #include "runner_output.hpp"
+#include "yaml_text.hpp"
 
 namespace flexmbd {
 namespace goland_wing_test {
@@ -53,10 +52,7 @@ std::complex<double> LeastStableRoot(double U, int states) {
   return worst;
 }
 
-std::string ReadFile(const std::string& path) {
-  std::ifstream file(path);
-  return std::string((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
-}
+using test::ReadFile;
 
 TEST(GolandWing, UncoupledFrequenciesMatchPublished) {
   // flexmbd_run on structure_uncoupled.yaml (centre of mass on the elastic axis). Published: first bending

@@ -5,22 +5,18 @@
 
 #include <cmath>
 #include <cstdio>
-#include <fstream>
-#include <iterator>
 #include <string>
 #include <utility>
 #include <vector>
 
 #include "../integration/helpers/csv_table.hpp"
 #include "runner_output.hpp"
+#include "yaml_text.hpp"
 
 namespace flexmbd {
 namespace static_aero_test {
 
-std::string ReadFile(const std::string& path) {
-  std::ifstream file(path);
-  return std::string((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
-}
+using test::ReadFile;
 
 // The CSV of a static run of `urdf` with `yaml` (no `output` block), with the wing's tip as a beam station.
 test::CsvTable StaticRun(const std::string& urdf, const std::string& yaml, const std::string& name) {

@@ -16,6 +16,7 @@
 #include "friction_bound.hpp"
 #include "loop_run.hpp"
 #include "runner_output.hpp"
+#include "yaml_text.hpp"
 
 namespace flexmbd {
 namespace sticking_loop_test {
@@ -199,8 +200,7 @@ TEST(StickingLoop, SliderAtDeadCentreUnderAnAxialLoadStaysThere) {
 TEST(StickingLoop, DriveHoldsTheStuckRockerOfAFourBar) {
   // test/data/yaml/four_bar.yaml: the crank driven 0.8 rad, then held, the rocker's hinge with friction: a
   // different loop, with the sticking row on a hinge. Held, the drive's torque is dV/dtheta of the weights.
-  std::ifstream file(std::string(FLEXMBD_SOURCE_DIR) + "/test/data/yaml/four_bar.yaml");
-  const std::string yaml((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
+  const std::string yaml = test::ReadFile(std::string(FLEXMBD_SOURCE_DIR) + "/test/data/yaml/four_bar.yaml");
   const ModelSpec spec = Load("test/data/urdf/four_bar.urdf", yaml, "sticking_loop_four_bar");
   const Model model = BuildModel(spec);
   const FrictionRun run = RunWithFriction(spec, model);
@@ -219,8 +219,7 @@ TEST(StickingLoop, RunnerRunsTheStuckLoopsThatWereSingular) {
       kSliderCrankLoop + kSlideFriction + "solver: {t_end: 0.2, gravity: [0.0, -9.81, 0.0]}\noutput: {rate_hz: 0}\n",
       "sticking_loop_runner_dead_centre");
   EXPECT_NE(dead_centre.find("finished at t = 0.2 s"), std::string::npos) << dead_centre;
-  std::ifstream file(std::string(FLEXMBD_SOURCE_DIR) + "/test/data/yaml/four_bar.yaml");
-  const std::string yaml((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
+  const std::string yaml = test::ReadFile(std::string(FLEXMBD_SOURCE_DIR) + "/test/data/yaml/four_bar.yaml");
   const std::string four_bar = test::RunnerOutput("test/data/urdf/four_bar.urdf", yaml, "sticking_loop_runner_four_bar");
   EXPECT_NE(four_bar.find("finished at t = 1 s"), std::string::npos) << four_bar;
 }
