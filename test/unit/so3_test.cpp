@@ -2,7 +2,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 #include <vector>
 
 #include <Eigen/LU>
@@ -161,6 +163,20 @@ TEST(So3, RightJacobianMatchesClosedForm) {
     const Mat3 expected = Mat3::Identity() - static_cast<double>(OneMinusCosOverSquareReference(x)) * K +
                           static_cast<double>(XMinusSinOverCubeReference(x)) * K * K;
     EXPECT_LT((RightJacobian(theta) - expected).cwiseAbs().maxCoeff(), kClosedForm) << "angle " << angle;
+  }
+}
+
+TEST(So3, IncrementMapsAreExpSecantOperatorAndRightJacobian) {
+  // Reference: the three functions called one by one. The same ratios go through the same products: equal to
+  // round-off of entries of size up to |theta|^2 (two units in the last place).
+  test::Random random(12);
+  for (double angle : kSweepAngles) {
+    const Vec3 theta = angle * random.UnitVector();
+    const IncrementMaps maps = IncrementMapsOf(theta);
+    const double round_off = 2.0 * std::numeric_limits<double>::epsilon() * std::max(1.0, angle * angle);
+    EXPECT_LT((maps.exp - Exp(theta)).cwiseAbs().maxCoeff(), round_off) << "angle " << angle;
+    EXPECT_LT((maps.secant - SecantOperator(theta)).cwiseAbs().maxCoeff(), round_off) << "angle " << angle;
+    EXPECT_LT((maps.right_jacobian - RightJacobian(theta)).cwiseAbs().maxCoeff(), round_off) << "angle " << angle;
   }
 }
 

@@ -33,6 +33,13 @@ Mat3 RightJacobian(const Vec3& theta);
 /// change of a body-fixed vector over a step is linear in theta: (Exp(theta) - I) d = -Skew(S d) theta.
 Mat3 SecantOperator(const Vec3& theta);
 
+/// Exp(theta), SecantOperator(theta) and RightJacobian(theta) together: what a node's step needs, with the
+/// trigonometric ratios they share computed once (each equal to what its own function returns).
+struct IncrementMaps {
+  Mat3 exp, secant, right_jacobian;
+};
+IncrementMaps IncrementMapsOf(const Vec3& theta);
+
 /// sin(x)/x with its series near zero.
 double Sinc(double x);
 

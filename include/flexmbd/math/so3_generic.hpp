@@ -62,6 +62,16 @@ void SinRatios(const T& x2, T* sin_ratio, T* cos_ratio) {
   *cos_ratio = 0.5 * half * half;
 }
 
+/// (x - sin x)/x^3 of x2 = x^2.
+template <class T>
+T CubicRatio(const T& x2) {
+  using std::sin;
+  using std::sqrt;
+  if (ValueOf(x2) < kSeriesLimitSquared) return AlternatingSeries(x2, 3);
+  const T x = sqrt(x2);
+  return (x - sin(x)) / (x2 * x);
+}
+
 /// Rodrigues: I + sin(x)/x K + (1 - cos x)/x^2 K^2.
 template <class T>
 Matrix3<T> ExpOf(const Vector3<T>& v) {
@@ -74,17 +84,10 @@ Matrix3<T> ExpOf(const Vector3<T>& v) {
 /// Right Jacobian: I - (1 - cos x)/x^2 K + (x - sin x)/x^3 K^2.
 template <class T>
 Matrix3<T> RightJacobianOf(const Vector3<T>& v) {
-  using std::sin;
-  using std::sqrt;
   const T x2 = v.squaredNorm();
-  T a, b, c;
+  T a, b;
   SinRatios(x2, &a, &b);
-  if (ValueOf(x2) < kSeriesLimitSquared) {
-    c = AlternatingSeries(x2, 3);
-  } else {
-    const T x = sqrt(x2);
-    c = (x - sin(x)) / (x2 * x);
-  }
+  const T c = CubicRatio(x2);
   const Matrix3<T> K = SkewOf<T>(v);
   return Matrix3<T>::Identity() - b * K + c * (K * K);
 }

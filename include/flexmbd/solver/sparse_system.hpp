@@ -57,7 +57,7 @@ class SparseSystem {
   int n_;
   std::vector<int> column_start_, row_index_;
   std::vector<double> values_;
-  std::vector<std::vector<int>> scatter_;  ///< per element: position of local (i, j) at i * n_local + j
+  std::vector<std::vector<int>> scatter_;  ///< per element: position of local (i, j) at j * n_local + i (column order)
   Eigen::VectorXd residual_, magnitude_, row_abs_sum_;
   Eigen::VectorXd local_r_, local_m_;
   Eigen::MatrixXd local_J_;

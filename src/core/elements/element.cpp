@@ -21,9 +21,10 @@ NodeStep MakeNodeStep(const NodeState& start, const Vec6& increment, AnalysisMod
   n.dx = dx;
   n.R_i = start.R;
   n.theta = theta;
-  n.R_f = start.R * Exp(theta);
-  n.S = SecantOperator(theta);
-  n.T = RightJacobian(theta);
+  const IncrementMaps maps = IncrementMapsOf(theta);
+  n.R_f = start.R * maps.exp;
+  n.S = maps.secant;
+  n.T = maps.right_jacobian;
   return n;
 }
 

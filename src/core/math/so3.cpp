@@ -18,6 +18,22 @@ Vec3 Axial(const Mat3& A) {
   return 0.5 * Vec3(A(2, 1) - A(1, 2), A(0, 2) - A(2, 0), A(1, 0) - A(0, 1));
 }
 
+IncrementMaps IncrementMapsOf(const Vec3& theta) {
+  const double x2 = theta.squaredNorm();
+  double sin_ratio, cos_ratio;
+  so3::SinRatios(x2, &sin_ratio, &cos_ratio);
+  const double cubic_ratio = so3::CubicRatio(x2);
+  const Mat3 K = Skew(theta);
+  // Written as ExpOf and RightJacobianOf write them, K^2 inside each sum: a K^2 formed apart is summed in another
+  // order, and that round-off alone sent the chaotic double pendulum of EnergyPreservingScheme from under 100 to
+  // 1,253 rejected steps.
+  IncrementMaps maps;
+  maps.exp = Mat3::Identity() + sin_ratio * K + cos_ratio * (K * K);
+  maps.secant = sin_ratio * Mat3::Identity() + cos_ratio * K;
+  maps.right_jacobian = Mat3::Identity() - cos_ratio * K + cubic_ratio * (K * K);
+  return maps;
+}
+
 double Sinc(double x) { return std::abs(x) < kSincSeriesLimit ? 1.0 - x * x / 6.0 : std::sin(x) / x; }
 
 Mat3 Exp(const Vec3& theta) { return so3::ExpOf<double>(theta); }

@@ -51,11 +51,11 @@ SparseSystem::SparseSystem(const Model& model) : model_(model), n_(model.num_unk
     const std::vector<int>& u = element->unknowns();
     const int m = element->num_local();
     std::vector<int> positions(static_cast<size_t>(m) * m);
-    for (int i = 0; i < m; ++i) {
-      for (int j = 0; j < m; ++j) {
-        const auto first = row_index_.begin() + column_start_[u[j]];
-        const auto last = row_index_.begin() + column_start_[u[j] + 1];
-        positions[i * m + j] = static_cast<int>(std::lower_bound(first, last, u[i]) - row_index_.begin());
+    for (int j = 0; j < m; ++j) {
+      const auto first = row_index_.begin() + column_start_[u[j]];
+      const auto last = row_index_.begin() + column_start_[u[j] + 1];
+      for (int i = 0; i < m; ++i) {
+        positions[j * m + i] = static_cast<int>(std::lower_bound(first, last, u[i]) - row_index_.begin());
       }
     }
     scatter_.push_back(std::move(positions));
@@ -98,9 +98,11 @@ void SparseSystem::Assemble(const StepContext& ctx, bool with_tangent) {
       magnitude_[u[i]] += mag[i];
     }
     if (!with_tangent) continue;
-    const std::vector<int>& positions = scatter_[e];
-    for (int i = 0; i < m; ++i) {
-      for (int j = 0; j < m; ++j) values_[positions[i * m + j]] += J(i, j);
+    // Column by column, as the local block is stored.
+    const int* position = scatter_[e].data();
+    for (int j = 0; j < m; ++j) {
+      const double* column = J.col(j).data();
+      for (int i = 0; i < m; ++i) values_[*position++] += column[i];
     }
   }
   if (with_tangent) {
