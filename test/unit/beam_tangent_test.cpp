@@ -377,26 +377,6 @@ TEST(BeamElement, DynamicTangentWithSchemeDissipationIsExact) {
   }
 }
 
-// The start configuration's strains are kept from one evaluation to the next while the start nodes stay the same
-// (BeamElement::StartStrains): an element that has just evaluated one step gives, for a step from another start,
-// exactly the forces and tangent of an element that never saw the first.
-TEST(BeamElement, StepFromANewStartIsEvaluatedAtThatStart) {
-  test::Random random(28);
-  for (int order = 1; order <= 3; ++order) {
-    const Mat6 C = Section(&random);
-    const BeamElement used("e", NodeIndices(order), 0.7, C, 0.02), fresh("e", NodeIndices(order), 0.7, C, 0.02);
-    Case first = DynamicCase(BentElement(order, &random), &random);
-    Case second = DynamicCase(BentElement(order, &random), &random);
-    first.Refresh();
-    second.Refresh();
-    test::LocalResidual(used, first.ctx);
-    // The same arithmetic on the same numbers: equal to the last bit.
-    EXPECT_EQ(test::LocalResidual(used, second.ctx), test::LocalResidual(fresh, second.ctx)) << "order " << order;
-    test::LocalResidual(used, first.ctx);
-    EXPECT_EQ(test::LocalTangent(used, second.ctx), test::LocalTangent(fresh, second.ctx)) << "order " << order;
-  }
-}
-
 // A step's first tangent (ctx.geometric_stiffness off) leaves out the geometric stiffness of the section forces,
 // which the predictor's spurious stretch would make up (docs/theory.md, "Newton iteration"): it equals the exact
 // tangent where the step's stresses vanish (an unstrained straight beam turned rigidly), and differs from it on

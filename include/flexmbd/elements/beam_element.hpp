@@ -97,10 +97,6 @@ class BeamElement : public Element {
   // The element's nodes at the start and the end of the step of ctx.
   void StepEnds(const StepContext& ctx, Field::Nodes* start, Field::Nodes* end) const;
   double Energy(const Field& field) const;
-  // The strains at the Gauss points of the step's start configuration: recomputed only when the start nodes differ
-  // from those of the last call, since every evaluation within a step (Newton iterations, judging, the work
-  // after convergence) shares them.
-  const Field::PointVectors& StartStrains(const Field::Nodes& start) const;
   // The strain changes of the step at the Gauss points, and the previous step's scaled to this step's size.
   Field::PointVectors StrainChanges(const StepContext& ctx) const;
   Vec6 LaggedStrainChange(const StepContext& ctx, int point) const;
@@ -115,15 +111,6 @@ class BeamElement : public Element {
   double damping_;  ///< mu [s]
   BeamShape shape_;
   std::array<Mat6, BeamShape::kMaxPoints> weighted_stiffness_;  ///< w_g C
-  // StartStrains' memo: the start nodes it was computed at and their strains. A pure function of those nodes, so
-  // a hit returns what a fresh computation would, bit for bit; not State, which it never stands in for. Elements
-  // are evaluated on one thread (bench/README.md, "Element evaluation on two threads").
-  struct StartStrainMemo {
-    bool valid = false;
-    Field::Nodes nodes;
-    Field::PointVectors strain;
-  };
-  mutable StartStrainMemo start_strains_;
 };
 
 }  // namespace flexmbd

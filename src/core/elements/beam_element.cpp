@@ -41,11 +41,10 @@ struct IncrementMap {
 
 }  // namespace
 
-// What a dynamic step's forces need: the strains at the start of the step, the configurations at its middle and
-// end, and the increments d, with the metric W of the discrete gradient (B5).
+// What a dynamic step's forces need: the configurations at the start, middle and end of the step and the
+// increments d, with the metric W of the discrete gradient (B5).
 struct BeamElement::StepFields {
-  const Field::PointVectors* start_strain = nullptr;
-  std::optional<Field> mid, end;
+  std::optional<Field> start, mid, end;
   Field::Vector d, Wd, W;      // increments, W d, diag(W)
   double norm = 0;             // d^T W d
   double strain_round_off = 0;  // StrainRoundOff of the step
@@ -189,7 +188,7 @@ void BeamElement::EvaluateStep(const StepContext& ctx, Field::Vector* forces, Fi
   step.Wd = step.W.cwiseProduct(step.d);
   step.norm = step.d.dot(step.Wd);
   step.strain_round_off = StrainRoundOff(ctx);
-  step.start_strain = &StartStrains(start);
+  step.start.emplace(shape_, start, Field::Order::kStrains);
   step.mid.emplace(shape_, mid, tangent ? Field::Order::kSecond : Field::Order::kFirst);
   step.end.emplace(shape_, end, tangent ? Field::Order::kFirst : Field::Order::kStrains);
   const StepStress stress = StepStresses(ctx, step);
@@ -229,11 +228,10 @@ BeamElement::StepStress BeamElement::StepStresses(const StepContext& ctx, const 
   const double viscosity = damping_ / ctx.h + alpha;
   StepStress stress;
   const Field::PointVectors mid_rates = mid.StrainDirectionalDerivatives(step.d);  // B_mid d
-  const Field::PointVectors& start_strain = *step.start_strain;
   for (int g = 0; g < mid.num_points(); ++g) {
-    const Vec6 de = step.end->strain(g) - start_strain[g];
+    const Vec6 de = step.end->strain(g) - step.start->strain(g);
     stress.rate[g] = (0.5 + viscosity) * weighted_stiffness_[g];
-    stress.stress[g] = weighted_stiffness_[g] * (0.5 * (start_strain[g] + step.end->strain(g)) + viscosity * de);
+    stress.stress[g] = weighted_stiffness_[g] * (0.5 * (step.start->strain(g) + step.end->strain(g)) + viscosity * de);
     if (alpha > 0) stress.stress[g] -= alpha * (weighted_stiffness_[g] * LaggedStrainChange(ctx, g));
     stress.gap[g] = de - mid_rates[g];
     // A gap at the round-off of the strains would be divided by the squared increments into forces that
@@ -317,29 +315,12 @@ void BeamElement::RecordHistory(const StepContext& ctx, Eigen::VectorXd* history
   for (int g = 0; g < shape_.num_points; ++g) history->segment<6>(6 * g) = de[g];
 }
 
-const BeamElement::Field::PointVectors& BeamElement::StartStrains(const Field::Nodes& start) const {
-  StartStrainMemo& memo = start_strains_;
-  const int n = shape_.num_nodes();
-  bool same = memo.valid;
-  for (int k = 0; same && k < n; ++k) same = start.x[k] == memo.nodes.x[k] && start.R[k] == memo.nodes.R[k];
-  if (same) return memo.strain;
-  const Field field(shape_, start, Field::Order::kStrains);
-  for (int g = 0; g < shape_.num_points; ++g) memo.strain[g] = field.strain(g);
-  for (int k = 0; k < n; ++k) {
-    memo.nodes.x[k] = start.x[k];
-    memo.nodes.R[k] = start.R[k];
-  }
-  memo.valid = true;
-  return memo.strain;
-}
-
 BeamElement::Field::PointVectors BeamElement::StrainChanges(const StepContext& ctx) const {
   Field::Nodes start, end;
   StepEnds(ctx, &start, &end);
-  const Field::PointVectors& at_start = StartStrains(start);
-  const Field at_end(shape_, end, Field::Order::kStrains);
+  const Field at_start(shape_, start, Field::Order::kStrains), at_end(shape_, end, Field::Order::kStrains);
   Field::PointVectors de;
-  for (int g = 0; g < shape_.num_points; ++g) de[g] = at_end.strain(g) - at_start[g];
+  for (int g = 0; g < shape_.num_points; ++g) de[g] = at_end.strain(g) - at_start.strain(g);
   return de;
 }
 
