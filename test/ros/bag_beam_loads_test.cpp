@@ -3,7 +3,7 @@
 
 #include <gtest/gtest.h>
 
-#include "../integration/helpers/bag_samples.hpp"
+#include "default_bag.hpp"
 #include "recorded_bag.hpp"
 
 namespace flexmbd {
@@ -21,7 +21,7 @@ TEST(BagBeamLoads, HoldsTheBeamLoadsOfEverySample) {
   spec.output.beam_stations["arm"] = {0.25, 1.0};
   const std::vector<SampleMessages> written =
       test::RecordRunToBag(BuildModel(spec), test::kBeamArmUrdf, path).messages;
-  const test::Samples bag = test::ReadBagSamples(path, std::string(kDefaultNodeName).substr(1));
+  const test::Samples bag = test::ReadDefaultBag(path);
   ASSERT_GT(written.size(), 2u);
   ASSERT_EQ(bag.beam_loads.size(), written.size());
   ASSERT_EQ(bag.joint_states.size(), written.size());

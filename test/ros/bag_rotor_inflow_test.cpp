@@ -6,7 +6,7 @@
 
 #include <cmath>
 
-#include "../integration/helpers/bag_samples.hpp"
+#include "default_bag.hpp"
 #include "recorded_bag.hpp"
 
 namespace flexmbd {
@@ -27,7 +27,7 @@ TEST(BagRotorInflow, HoldsTheRotorsInflowAndThrustOfEverySample) {
   ASSERT_TRUE(model.strip_stations().empty());
   ASSERT_EQ(model.aero_rotors().size(), 1u);
   const std::vector<OutputSample> samples = test::RecordRunToBag(model, kRotorUrdf, path).samples;
-  const test::Samples bag = test::ReadBagSamples(path, std::string(kDefaultNodeName).substr(1));
+  const test::Samples bag = test::ReadDefaultBag(path);
   ASSERT_GT(samples.size(), 2u);
   ASSERT_EQ(bag.aero_loads.size(), samples.size());
   for (size_t k = 0; k < samples.size(); ++k) {

@@ -3,7 +3,7 @@
 
 #include <gtest/gtest.h>
 
-#include "../integration/helpers/bag_samples.hpp"
+#include "default_bag.hpp"
 #include "recorded_bag.hpp"
 
 namespace flexmbd {
@@ -23,7 +23,7 @@ TEST(BagStripStations, HoldsTheStripLoadsOfEverySample) {
   const Model model = BuildModel(spec);
   ASSERT_TRUE(model.aero_sections().empty());
   const std::vector<OutputSample> samples = test::RecordRunToBag(model, kWingUrdf, path).samples;
-  const test::Samples bag = test::ReadBagSamples(path, std::string(kDefaultNodeName).substr(1));
+  const test::Samples bag = test::ReadDefaultBag(path);
   ASSERT_GT(samples.size(), 2u);
   ASSERT_EQ(bag.aero_loads.size(), samples.size());
   const std::vector<double>& stations = spec.output.strip_stations.at("wing");

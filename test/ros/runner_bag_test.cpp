@@ -10,10 +10,9 @@
 
 #include "../integration/helpers/file_size_limit.hpp"
 
-#include "../integration/helpers/bag_samples.hpp"
 #include "../integration/helpers/beam_loads_csv.hpp"
 #include "../integration/helpers/csv_table.hpp"
-#include "flexmbd/ros/topic_names.hpp"
+#include "default_bag.hpp"
 #include "ros_test_util.hpp"
 
 namespace flexmbd {
@@ -32,7 +31,7 @@ TEST(RunnerBag, HoldsTheSamplesOfTheCsv) {
   const std::string csv_path = testing::TempDir() + "runner.csv";
   ASSERT_EQ(test::RunRunner(kUrdf, kConfig, "--bag " + bag_path + " --csv " + csv_path), 0);
   const test::CsvTable csv = test::ReadCsv(csv_path);
-  const test::Samples bag = test::ReadBagSamples(bag_path, std::string(kDefaultNodeName).substr(1));
+  const test::Samples bag = test::ReadDefaultBag(bag_path);
   ASSERT_EQ(bag.joint_states.size(), csv.rows.size());
   ASSERT_EQ(bag.energy.size(), csv.rows.size());
   ASSERT_EQ(bag.reactions.size(), csv.rows.size());
@@ -69,7 +68,7 @@ TEST(RunnerBag, HoldsTheBeamLoadsOfTheCsv) {
   ASSERT_EQ(test::RunRunner("test/data/urdf/beam_arm.urdf", "test/integration/data/beam_arm_stations.yaml",
                             "--bag " + bag_path + " --csv " + csv_path),
             0);
-  const test::Samples bag = test::ReadBagSamples(bag_path, std::string(kDefaultNodeName).substr(1));
+  const test::Samples bag = test::ReadDefaultBag(bag_path);
   test::ExpectBeamLoadsMatchCsv(bag.beam_loads, test::ReadCsv(csv_path), 0.0);
 }
 
@@ -96,7 +95,7 @@ TEST(RunnerBag, CsvOnAFullDeviceLeavesAClosedBagOfTheSamplesBefore) {
   EXPECT_EQ(LineCount(errors), 1) << errors;
   EXPECT_EQ(errors.find("flexmbd_run: output.csv: writing '/dev/full' failed (No space left on device)"), 0u)
       << errors;
-  const test::Samples bag = test::ReadBagSamples(bag_path, std::string(kDefaultNodeName).substr(1));
+  const test::Samples bag = test::ReadDefaultBag(bag_path);
   ASSERT_GE(bag.joint_states.size(), 2u);
   EXPECT_LT(bag.joint_states.size(), 1001u);  // the run was cut short
   for (size_t k = 0; k < bag.joint_states.size(); ++k) {
@@ -127,7 +126,7 @@ TEST(RunnerBag, BagOnADiskFillingUpMidRunReindexesToTheSamplesOfItsCompleteChunk
       << errors;
   ASSERT_EQ(std::system(("rosbag reindex " + bag_path + " > /dev/null").c_str()), 0);
   const test::CsvTable csv = test::ReadCsv(csv_path);
-  const test::Samples bag = test::ReadBagSamples(bag_path, std::string(kDefaultNodeName).substr(1));
+  const test::Samples bag = test::ReadDefaultBag(bag_path);
   ASSERT_GE(bag.joint_states.size(), 1000u) << "fewer samples than two chunks hold";
   ASSERT_LT(bag.joint_states.size(), csv.rows.size());
   ASSERT_LT(csv.rows.size(), 4001u);  // the run was cut short

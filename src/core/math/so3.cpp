@@ -22,15 +22,11 @@ IncrementMaps IncrementMapsOf(const Vec3& theta) {
   const double x2 = theta.squaredNorm();
   double sin_ratio, cos_ratio;
   so3::SinRatios(x2, &sin_ratio, &cos_ratio);
-  const double cubic_ratio = so3::CubicRatio(x2);
   const Mat3 K = Skew(theta);
-  // Written as ExpOf and RightJacobianOf write them, K^2 inside each sum: a K^2 formed apart is summed in another
-  // order, and that round-off alone sent the chaotic double pendulum of EnergyPreservingScheme from under 100 to
-  // 1,253 rejected steps.
   IncrementMaps maps;
-  maps.exp = Mat3::Identity() + sin_ratio * K + cos_ratio * (K * K);
-  maps.secant = sin_ratio * Mat3::Identity() + cos_ratio * K;
-  maps.right_jacobian = Mat3::Identity() - cos_ratio * K + cubic_ratio * (K * K);
+  maps.exp = so3::ExpFromRatios<double>(K, sin_ratio, cos_ratio);
+  maps.secant = so3::SecantFromRatios<double>(K, sin_ratio, cos_ratio);
+  maps.right_jacobian = so3::RightJacobianFromRatios<double>(K, cos_ratio, so3::CubicRatio(x2));
   return maps;
 }
 
@@ -61,7 +57,7 @@ Mat3 RightJacobian(const Vec3& theta) { return so3::RightJacobianOf<double>(thet
 Mat3 SecantOperator(const Vec3& theta) {
   double sin_ratio, cos_ratio;
   so3::SinRatios(theta.squaredNorm(), &sin_ratio, &cos_ratio);
-  return sin_ratio * Mat3::Identity() + cos_ratio * Skew(theta);
+  return so3::SecantFromRatios<double>(Skew(theta), sin_ratio, cos_ratio);
 }
 
 }  // namespace flexmbd
