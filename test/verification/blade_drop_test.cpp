@@ -82,9 +82,10 @@ struct Drop {
   size_t impact;
 };
 
-// At error_tol 1e-6 the release needs a first step shorter than the default dt_min of the default tolerance,
+// At error_tol 5e-7 the release needs a first step shorter than the default dt_min of the default tolerance,
 // 1e-7 s: the hinge's holding moment, released at once, turns the root node, whose rotary inertia about the flap
-// axis is small (m_ii 1.2e-5 kg m), at ~1e7 rad/s^2 (measured first step 9e-8 s). The default dt_min follows the
+// axis is small (m_ii 1.2e-5 kg m), at ~1e7 rad/s^2 (measured first step 7.3e-8 s; at error_tol 1e-6 1.2e-7 s since
+// the damped blade's deformation error is discounted by its decay, docs/theory.md (T12b), 8.9e-8 s before). The default dt_min follows the
 // tolerance (docs/config.md), so the runner at the case's settings with only error_tol tightened runs on.
 TEST(BladeDrop, TightToleranceStartsWithTheDefaultMinimumStep) {
   std::ifstream file(std::string(FLEXMBD_SOURCE_DIR) + "/config/blade_drop/release_9.7deg.yaml");
@@ -93,7 +94,7 @@ TEST(BladeDrop, TightToleranceStartsWithTheDefaultMinimumStep) {
   std::string yaml = text.str();
   const std::string solver = "solver: {t_end: 1.0,";
   ASSERT_NE(yaml.find(solver), std::string::npos) << yaml;
-  yaml.replace(yaml.find(solver), solver.size(), "solver: {t_end: 0.02, error_tol: 1.0e-6,");
+  yaml.replace(yaml.find(solver), solver.size(), "solver: {t_end: 0.02, error_tol: 5.0e-7,");
   const std::string out = test::RunnerOutput("config/blade_drop/blade_drop.urdf", yaml, "blade_drop_tight");
   const std::string chose = "chose the first step ";
   const size_t at = out.find(chose);

@@ -110,10 +110,11 @@ TEST(StepControl, PendulumAdaptiveStepsBeatFixedStepsOfTheSameCount) {
   for (double error_tol : {1.0e-4, 1.0e-5, 1.0e-6}) ExpectAdaptiveBeatsFixed(Pendulum(), PendulumPeriod(), error_tol);
 }
 
-// The double pendulum's joint angles at its end time against a run converged in the step: fixed 5e-5 s steps,
-// Newton to 1e-12, which agree with 1e-4 s and 2.5e-5 s steps within 1e-7 rad, 400 times below the error at the
-// tightest tolerance tested. (Much finer fixed steps drift: Newton stops at the round-off floor of the angles,
-// 100 eps |q|, and 2e5 steps of 1e-5 s add up to 5e-6 rad.)
+// The double pendulum's joint angles at its end time against a run converged in the step: fixed 1e-4 s steps,
+// Newton to 1e-12, which agree with 2e-4 s steps within 3.5e-8 rad, 10 times below the error at the tightest
+// tolerance tested (2026-12-06). Finer fixed steps drift away: the chaotic motion amplifies each step's round-off
+// (Newton stops at the round-off floor of the angles, 100 eps |q|), and 5e-5 s and 2.5e-5 s steps end 5.3e-7 and
+// 1.2e-6 rad from 1e-4 s, whatever Newton's tol (1e-8 ... 1e-14), and without B1's friction too.
 Eigen::VectorXd FinalAngles(const ModelSpec& spec) {
   const Model model = BuildModel(spec);
   Simulation simulation(model);
@@ -125,7 +126,7 @@ TEST(StepControl, DoublePendulumErrorFallsWithTheTolerance) {
   const ModelSpec spec = Case("double_pendulum.urdf", "free_double_pendulum.yaml");
   ModelSpec converged = spec;
   converged.solver.adaptive = false;
-  converged.solver.dt = 5.0e-5;
+  converged.solver.dt = 1.0e-4;
   converged.solver.tol = 1.0e-12;
   // Fixed steps do not use error_tol but for B1's sticking threshold (v0 = 100 error_tol of its largest slip
   // speed): 1e-5 of it, so that the reference catches B1's sticking within 1e-6 rad of a run at 1e-7 of it.
@@ -138,8 +139,8 @@ TEST(StepControl, DoublePendulumErrorFallsWithTheTolerance) {
     run.solver.error_tol = error_tol;
     errors.push_back((FinalAngles(run) - reference).cwiseAbs().maxCoeff());
   }
-  // At least 10x per 100x of tolerance (issue 13); measured 3.1e-3, 4.8e-4, 4.1e-5, 3.8e-6, 5.2e-7 rad (76x,
-  // 127x, 79x). B1 sticks and slips (its URDF friction): with a sticking threshold that did not follow the
+  // At least 10x per 100x of tolerance (issue 13); measured 2.2e-3, 2.4e-4, 3.1e-5, 3.7e-6, 4.3e-7 rad (71x,
+  // 66x, 72x). B1 sticks and slips (its URDF friction): with a sticking threshold that did not follow the
   // tolerance the error stalled at 1e-4 to 3e-4 rad from 1e-5 to 3e-6.
   for (size_t k = 2; k < errors.size(); ++k) {
     EXPECT_LT(errors[k], errors[k - 2] / 10) << "error_tol " << tolerances[k];

@@ -38,6 +38,7 @@ struct BeamInfo {
   std::vector<double> stations;              ///< their distance from the root [m]
   std::vector<double> lumped_lengths;        ///< share of the length lumped on each node [m] (theory (B6))
   std::vector<const BeamElement*> elements;  ///< from root to tip
+  double damping = 0.0;                      ///< structural damping mu [s] (theory (B7))
 };
 
 /// A station of `output.beam_stations`: where on which element it is sampled.
@@ -103,6 +104,8 @@ class Model {
   const std::vector<const RigidBody*>& rigid_bodies() const { return rigid_bodies_; }
   const std::vector<BodyInfo>& bodies() const { return bodies_; }
   const std::vector<BeamInfo>& beams() const { return beams_; }
+  /// Index in beams() of the beam a node belongs to, or -1 (a body, or a beam's centre-of-mass node).
+  int beam_of_node(int node) const { return node_beams_[node]; }
   /// The stations of output.beam_stations, beam by beam (in name order), then in the order given.
   const std::vector<BeamStationInfo>& beam_stations() const { return beam_stations_; }
   const std::vector<StopInfo>& stops() const { return stops_; }
@@ -148,6 +151,7 @@ class Model {
   std::vector<const RigidBody*> rigid_bodies_;
   std::vector<BodyInfo> bodies_;
   std::vector<BeamInfo> beams_;
+  std::vector<int> node_beams_;  ///< beam_of_node, per node
   std::vector<BeamStationInfo> beam_stations_;
   std::vector<StopInfo> stops_;
   std::vector<const JointStop*> stop_effects_;

@@ -143,6 +143,7 @@ Model BuildModel(const ModelSpec& spec) {
     info.name = beam.name;
     info.stations = BeamStations(beam);
     info.lumped_lengths = LumpedLengths(beam);
+    info.damping = beam.damping;
     const std::vector<NodeState> nodes = BeamNodeStates(beam);
     // With a centre-of-mass offset each lumped mass is a rigid body of its own, at its centre of mass, held on
     // the beam node by a fixed joint (theory (B6)).
@@ -181,6 +182,10 @@ Model BuildModel(const ModelSpec& spec) {
     model.beams_.push_back(info);
   }
   model.beam_stations_ = LocateBeamStations(spec, model.beams_);
+  model.node_beams_.assign(model.num_nodes_, -1);
+  for (size_t b = 0; b < model.beams_.size(); ++b) {
+    for (int node : model.beams_[b].nodes) model.node_beams_[node] = static_cast<int>(b);
+  }
 
   // The node a link-frame point belongs to, and the point relative to that node (node frame).
   auto locate = [&](const std::string& what, const std::string& link, const Vec3& p_B, int* node, Vec3* p_N) {

@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <optional>
 
 #include "flexmbd/model/model.hpp"
 #include "flexmbd/solver/energy_decaying_integrator.hpp"
@@ -17,6 +18,42 @@ constexpr double kDefaultFloorFraction = 1.0e-3;
 double FloorOrDefault(double floor, double error_tol, double unit) {
   return floor > 0 ? floor : kDefaultFloorFraction * error_tol * unit;
 }
+
+// Midpoint of a node's step j (0 the newest), walked back from its end position over its mean rates.
+Vec3 StepMidpoint(const NodeState& n, const std::array<double, 3>& h, int j) {
+  Vec3 x = n.x;
+  for (int i = 0; i < j; ++i) x -= h[i] * n.mean_v[i];
+  return x - 0.5 * h[j] * n.mean_v[j];
+}
+
+// A beam's rigid motion over each of the last three steps (T12b): the mean of its nodes' mean rates and spins,
+// turning about the mean of their step midpoints; and the largest deformation rate and spin relative to it of its
+// nodes in the newest step.
+struct BeamRigidMotion {
+  std::array<Vec3, 3> rate, spin, centre;
+  double largest_rate = 0, largest_spin = 0;
+
+  BeamRigidMotion(const BeamInfo& beam, const State& end, const std::array<double, 3>& h) {
+    const double count = static_cast<double>(beam.nodes.size());
+    for (int j = 0; j < 3; ++j) {
+      rate[j] = spin[j] = centre[j] = Vec3::Zero();
+      for (int k : beam.nodes) {
+        rate[j] += end.nodes[k].mean_v[j] / count;
+        spin[j] += end.nodes[k].mean_w[j] / count;
+        centre[j] += StepMidpoint(end.nodes[k], h, j) / count;
+      }
+    }
+    for (int k : beam.nodes) {
+      largest_rate = std::max(largest_rate, DeformationRate(end.nodes[k], h, 0).norm());
+      largest_spin = std::max(largest_spin, DeformationSpin(end.nodes[k], 0).norm());
+    }
+  }
+  // A node's mean rate and spin over step j less the rigid motion's there.
+  Vec3 DeformationRate(const NodeState& n, const std::array<double, 3>& h, int j) const {
+    return n.mean_v[j] - rate[j] - spin[j].cross(StepMidpoint(n, h, j) - centre[j]);
+  }
+  Vec3 DeformationSpin(const NodeState& n, int j) const { return n.mean_w[j] - spin[j]; }
+};
 }  // namespace
 
 double JointErrorFloor(const SolverSpec& solver) {
@@ -82,12 +119,38 @@ ErrorEstimate EstimateLocalError(const Model& model, const State& end) {
       estimate.worst_unknown = unknown;
     }
   };
+  // A damped beam's deformation decays at mu omega^2 / 2, omega^2 = |x_d'''| / |x_d'| for one mode (x_d' taken as
+  // the beam's largest deformation rate): the error a step leaves in it adds up over 1 / that rate, not over the
+  // time left, and is discounted by their ratio (T12b).
+  const double time_left = std::max(0.0, solver.t_end - end.t);
+  auto discounted = [&](const Vec3& whole, const Vec3& deformed, double damping, double peak) {
+    const double decays_left = peak > 0 ? 0.5 * damping * deformed.norm() / peak * time_left : 0.0;
+    return (whole - deformed + deformed / std::max(1.0, decays_left)).norm();
+  };
+  // A beam's nodes come in a row: its rigid motion is found once for them.
+  int rigid_beam = -1;
+  std::optional<BeamRigidMotion> rigid;
   for (int k = 0; k < model.num_nodes(); ++k) {
     const NodeState& n = end.nodes[k];
-    add(weight * third_derivative(n.mean_v[0], n.mean_v[1], n.mean_v[2]).norm(), position_scale,
-        model.node_unknown(k));
-    add(weight * third_derivative(n.mean_w[0], n.mean_w[1], n.mean_w[2]).norm(), rotation_scale,
-        model.node_unknown(k) + 3);
+    const Vec3 translation = third_derivative(n.mean_v[0], n.mean_v[1], n.mean_v[2]);
+    const Vec3 rotation = third_derivative(n.mean_w[0], n.mean_w[1], n.mean_w[2]);
+    const int beam = model.beam_of_node(k);
+    const double damping = beam >= 0 ? model.beams()[beam].damping : 0.0;
+    if (damping > 0) {
+      if (beam != rigid_beam) rigid.emplace(model.beams()[beam], end, h);
+      rigid_beam = beam;
+      const Vec3 deformed_translation = third_derivative(
+          rigid->DeformationRate(n, h, 0), rigid->DeformationRate(n, h, 1), rigid->DeformationRate(n, h, 2));
+      const Vec3 deformed_rotation =
+          third_derivative(rigid->DeformationSpin(n, 0), rigid->DeformationSpin(n, 1), rigid->DeformationSpin(n, 2));
+      add(weight * discounted(translation, deformed_translation, damping, rigid->largest_rate), position_scale,
+          model.node_unknown(k));
+      add(weight * discounted(rotation, deformed_rotation, damping, rigid->largest_spin), rotation_scale,
+          model.node_unknown(k) + 3);
+    } else {
+      add(weight * translation.norm(), position_scale, model.node_unknown(k));
+      add(weight * rotation.norm(), rotation_scale, model.node_unknown(k) + 3);
+    }
   }
   const auto& q = end.mean_qdot;
   for (int k = 0; k < model.num_variables(); ++k) {
