@@ -8,6 +8,12 @@ scripts="${FLEXMBD_REPO_ROOT}/scripts"
 
 bash "${scripts}/install_deps.sh"
 
+# The tests' files go to a directory of this run's own (gtest's testing::TempDir() reads TEST_TMPDIR): two test
+# runs on one machine would otherwise write the same /tmp/<name>.csv and one read what the other wrote.
+TEST_TMPDIR="$(mktemp -d /tmp/flexmbd_tests_XXXXXX)"
+export TEST_TMPDIR
+trap 'rm -rf "${TEST_TMPDIR}"' EXIT
+
 failed_steps=()
 bash "${scripts}/build.sh" || failed_steps+=("build")
 
