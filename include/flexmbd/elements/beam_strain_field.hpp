@@ -55,7 +55,7 @@ class BeamStrainField {
 
     /// Forces in the increments from forces in the perturbations: the map's transpose applied.
     Vector ApplyTransposed(int num_nodes, const Vector& f) const;
-    /// M (the map) for the columns of M, in place, in fixed-size 3x3 strips.
+    /// M <- M times the map (on M's columns), in place, in fixed-size 3x3 strips.
     void ApplyToColumns(int num_nodes, Matrix* M) const;
   };
 
@@ -86,7 +86,7 @@ class BeamStrainField {
   ///   K += K_mat + (geometric ? K_geo : 0),  K_mat = sum_g B_g^T material_g B'_g M',
   /// K_geo = d/dp [sum_g B_g^T stress_g] M as AddTangent gives it without material, M and M' the maps of this
   /// configuration's and right's perturbations. Both share one pass of (dz/dp)^T on the left. Returns K_geo^T d,
-  /// taken from vectors when K_geo is left out.
+  /// taken from vectors, so that leaving K_geo out saves its passes.
   Vector AddStepTangent(const PointVectors& stress, const BeamStrainField& right,
                         const std::array<Mat6, kMaxPoints>& material, const IncrementMap& map,
                         const IncrementMap& right_map, bool geometric, const Vector& d, Matrix* K) const;

@@ -100,8 +100,9 @@ BeamStrainField::LocalToPerturbation(const Eigen::MatrixBase<Derived>& X, const 
   // Taken in strips of rows of fixed height, so that every product is a fixed-size 3-column one.
   constexpr int kStrip = Derived::RowsAtCompileTime == 1 ? 1 : 3;
   const int n = shape_->num_nodes(), r = shape_->reference;
-  BeamStrainField::Wide<Derived::RowsAtCompileTime, Derived::MaxRowsAtCompileTime> out;
-  out.setZero(X.rows(), 6 * n);
+  BeamStrainField::Wide<Derived::RowsAtCompileTime, Derived::MaxRowsAtCompileTime> out(X.rows(), 6 * n);
+  // Every other node's columns are assigned below; only the reference's are sums.
+  out.template middleCols<6>(6 * r).setZero();
   for (int i = 0; i < X.rows(); i += kStrip) {
     for (int k = 0; k < n; ++k) {
       if (k == r) continue;
@@ -157,7 +158,8 @@ BeamStrainField::Vector BeamStrainField::LocalToPerturbation(const Vector& c) co
 BeamStrainField::Matrix BeamStrainField::LocalToPerturbationRows(const Matrix& X) const {
   // The transpose of LocalToPerturbation(X^T), in strips of three columns.
   const int n = shape_->num_nodes(), r = shape_->reference;
-  Matrix out = Matrix::Zero(6 * n, X.cols());
+  Matrix out(6 * n, X.cols());
+  out.middleRows<6>(6 * r).setZero();  // every other node's rows are assigned below
   for (int j = 0; j < X.cols(); j += 3) {
     for (int k = 0; k < n; ++k) {
       if (k == r) continue;
