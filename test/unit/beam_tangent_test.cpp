@@ -271,6 +271,60 @@ TEST(BeamStrainField, ForcesAreTheGradientOfTheStrainEnergy) {
   }
 }
 
+// A step's tangent in one pass of (dz/dp)_mid^T (docs/theory.md, (B12)) against its parts formed apart, at two
+// random bent configurations with random stresses, section matrices and increment maps: the material part
+// B_mid^T rate B_f M_f, plus the geometric part K_geo M_mid when asked for, and K_geo^T d either way. The same
+// terms summed in another order: round-off of sums of ~100 terms, 1e-12 of the largest entry.
+TEST(BeamStrainField, StepTangentIsItsMaterialAndGeometricPartsInTheIncrements) {
+  constexpr double kReorderedSumTolerance = 1.0e-12;
+  using Field = BeamStrainField;
+  test::Random random(28);
+  for (int order = 1; order <= 3; ++order) {
+    const ElementState mid_state = BentElement(order, &random), end_state = BentElement(order, &random);
+    const BeamShape shape = GaussShape(order, mid_state.length);
+    Field::Nodes mid_nodes, end_nodes;
+    for (int k = 0; k <= order; ++k) {
+      mid_nodes.x[k] = mid_state.nodes[k].x;
+      mid_nodes.R[k] = mid_state.nodes[k].R;
+      end_nodes.x[k] = end_state.nodes[k].x;
+      end_nodes.R[k] = end_state.nodes[k].R;
+    }
+    const Field mid(shape, mid_nodes, Field::Order::kSecond), end(shape, end_nodes, Field::Order::kFirst);
+    Field::PointVectors stress;
+    std::array<Mat6, Field::kMaxPoints> material;
+    for (int g = 0; g < shape.num_points; ++g) {
+      stress[g] = random.VectorX(6, 1.0e3);
+      material[g] = Section(&random);
+    }
+    Field::IncrementMap map, end_map;
+    map.translation_rate = 0.5;
+    for (int k = 0; k <= order; ++k) {
+      map.rotation[k] = 0.5 * RightJacobian(random.Vector(0.5));
+      end_map.rotation[k] = RightJacobian(random.Vector(0.5));
+    }
+    const int n = order + 1, dofs = 6 * n;
+    const Field::Vector d = random.VectorX(dofs, 0.1);
+
+    Field::Matrix K_geo = Field::Matrix::Zero(dofs, dofs);
+    mid.AddTangent(stress, nullptr, &K_geo);
+    map.ApplyToColumns(n, &K_geo);
+    Field::Matrix K_mat = mid.MaterialTangent(end, material);
+    end_map.ApplyToColumns(n, &K_mat);
+    const Field::Vector K_geo_transposed_d = K_geo.transpose() * d;
+
+    for (bool geometric : {false, true}) {
+      Field::Matrix K = Field::Matrix::Zero(dofs, dofs);
+      const Field::Vector returned = mid.AddStepTangent(stress, end, material, map, end_map, geometric, d, &K);
+      const Field::Matrix expected = geometric ? Field::Matrix(K_mat + K_geo) : K_mat;
+      EXPECT_LT((K - expected).cwiseAbs().maxCoeff(), kReorderedSumTolerance * test::MaxAbs(expected))
+          << "order " << order << " geometric " << geometric;
+      EXPECT_LT((returned - K_geo_transposed_d).cwiseAbs().maxCoeff(),
+                kReorderedSumTolerance * test::MaxAbs(K_geo_transposed_d))
+          << "order " << order << " geometric " << geometric;
+    }
+  }
+}
+
 TEST(BeamElement, StaticTangentIsExact) {
   test::Random random(22);
   for (int order = 1; order <= 3; ++order) {

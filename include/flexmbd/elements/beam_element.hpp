@@ -86,9 +86,10 @@ class BeamElement : public Element {
     double gap_work = 0;  // sum_g gap . stress
   };
   StepStress StepStresses(const StepContext& ctx, const StepFields& step) const;
-  // K_mid: the geometric tangent of the stresses at the middle configuration, in the step's increments.
-  void AddStepStressTangent(const StepFields& step, const StepStress& stress, const Field::Matrix& K_mid,
-                            Field::Matrix* K) const;
+  // The derivative of the gap term of (B5); K_mid is the geometric tangent of the stresses at the middle
+  // configuration, in the step's increments.
+  void AddGapTangent(const StepFields& step, const StepStress& stress, const Field::Vector& K_mid_transposed_d,
+                     Field::Matrix* K) const;
   // K += d/dd [value W d / (d^T W d)] given d value / dd: the gap correction of (B5).
   void AddCorrectionDerivative(const StepFields& step, double value, const Field::Vector& derivative,
                                Field::Matrix* K) const;

@@ -47,6 +47,18 @@ class BeamStrainField {
   /// How far to differentiate: strains only, first derivatives, or also second derivatives.
   enum class Order { kStrains, kFirst, kSecond };
 
+  /// The chain rule from a configuration's perturbations to a step's increments: node k's perturbation is
+  /// (translation_rate dx_k, rotation_k theta_k).
+  struct IncrementMap {
+    double translation_rate = 1.0;
+    std::array<Mat3, kMaxNodes> rotation;
+
+    /// Forces in the increments from forces in the perturbations: the map's transpose applied.
+    Vector ApplyTransposed(int num_nodes, const Vector& f) const;
+    /// M <- M times the map (on M's columns), in place, in fixed-size 3x3 strips.
+    void ApplyToColumns(int num_nodes, Matrix* M) const;
+  };
+
   BeamStrainField(const BeamShape& shape, const Nodes& nodes, Order order);
 
   int num_points() const { return shape_->num_points; }
@@ -69,6 +81,15 @@ class BeamStrainField {
   /// sum_g B_g^T material_g B'_g, B' the strain Jacobians of `right`, a field of the same shape (Order kFirst
   /// or kSecond, both): the material tangent of stresses at one configuration that follow the strains of another.
   Matrix MaterialTangent(const BeamStrainField& right, const std::array<Mat6, kMaxPoints>& material) const;
+  /// The tangent of a step whose stresses act at this configuration (the middle of the step) and follow the
+  /// strains of `right` (its end), in the step's increments (Order kSecond here, kFirst or kSecond for right):
+  ///   K += K_mat + (geometric ? K_geo : 0),  K_mat = sum_g B_g^T material_g B'_g M',
+  /// K_geo = d/dp [sum_g B_g^T stress_g] M as AddTangent gives it without material, M and M' the maps of this
+  /// configuration's and right's perturbations. Both share one pass of (dz/dp)^T on the left. Returns K_geo^T d,
+  /// taken from vectors, so that leaving K_geo out saves its passes.
+  Vector AddStepTangent(const PointVectors& stress, const BeamStrainField& right,
+                        const std::array<Mat6, kMaxPoints>& material, const IncrementMap& map,
+                        const IncrementMap& right_map, bool geometric, const Vector& d, Matrix* K) const;
   /// d/dp [B_g v] at fixed v, for every point g (Order kSecond). Note sum_g D_g^T s_g = K^T v for the K that
   /// AddTangent(s) adds without material: both are the second derivative of s . strain with the same turn.
   std::array<Jacobian, kMaxPoints> StrainJacobianDerivatives(const Vector& v) const;
@@ -84,6 +105,14 @@ class BeamStrainField {
     std::optional<RotationVectorCalculus> calculus;
     Mat69 E;             // d strain / d q
   };
+  // What a pass of dz/dp on the right multiplies node k's 3x3 strips by: R_r^T on y_k (and its negative on the
+  // reference's translation), Skew(y_k) and -T_k^-1 Q_k^T on the reference's rotation, T_k^-1 on phi_k; each
+  // times an increment map's factor for the columns it lands in.
+  struct NodePass {
+    Mat3 translation, reference_y, reference_psi, rotation;
+  };
+  using Pass = std::array<NodePass, kMaxNodes>;
+
   struct Node {
     Vec3 y, psi;
     Mat3 skew_y;
@@ -92,6 +121,16 @@ class BeamStrainField {
     Mat3 inverse_tangent_Qt;  // T(psi_k)^-1 Q_k^T
   };
 
+  // The right pass's factors multiplied by a map's.
+  Pass PassOf(const IncrementMap& map) const;
+  // Kz = sum_g (dq_g/dz)^T [H_g + E_g^T material_g E_g] (dq_g/dz), H_g the points' Hessians of stress . strain,
+  // and c = sum_g (dq_g/dz)^T E_g^T stress_g, the forces in z.
+  void LocalTangent(const PointVectors& stress, const std::array<Mat6, kMaxPoints>* material, Matrix* Kz,
+                    Vector* c) const;
+  // Kz = sum_g (dq_g/dz)^T E_g^T material_g E'_g (dq_g/dz), E' of right.
+  Matrix LocalMaterialTangent(const BeamStrainField& right, const std::array<Mat6, kMaxPoints>& material) const;
+  // K += sum_k c_k . d2 z_k / dp2 and the turn of the forces (dz/dp)^T c along R_k Exp(phi_k) (B12).
+  void AddCurvature(const Vector& c, Matrix* K) const;
   // sum_i stress_i d2 strain_i / dq2 (9 x 9).
   Mat9 PointHessian(const Point& p, const Vec6& stress) const;
   // d2 strain / dq2 along q_dot (6 x 9).
@@ -106,6 +145,10 @@ class BeamStrainField {
   template <class Derived>
   Wide<Derived::RowsAtCompileTime, Derived::MaxRowsAtCompileTime>
   LocalToPerturbation(const Eigen::MatrixBase<Derived>& X) const;
+  // X (dz/dp) M with the factors of PassOf(M).
+  template <class Derived>
+  Wide<Derived::RowsAtCompileTime, Derived::MaxRowsAtCompileTime>
+  LocalToPerturbation(const Eigen::MatrixBase<Derived>& X, const Pass& pass) const;
   Vector LocalToPerturbation(const Vector& c) const;
   // (dz/dp)^T X for X with 6n rows.
   Matrix LocalToPerturbationRows(const Matrix& X) const;
@@ -122,6 +165,7 @@ class BeamStrainField {
   Mat3 R_ref_;
   std::array<Node, kMaxNodes> nodes_;
   std::array<Point, kMaxPoints> points_;
+  Pass pass_;  // the right pass's factors without a map (Order kFirst or kSecond)
 };
 
 }  // namespace flexmbd

@@ -12,33 +12,6 @@ namespace {
 using Field = BeamStrainField;
 static_assert(Field::kMaxDofs <= kMaxRatePartUnknowns, "a beam's rate parts fit AddSchemeRateTerms' blocks");
 
-// The chain rule from one configuration's perturbations to the step's increments: node k's perturbation is
-// (translation_rate dx_k, rotation_k theta_k). Column blocks of M are multiplied in place.
-struct IncrementMap {
-  double translation_rate = 1.0;
-  std::array<Mat3, BeamShape::kMaxNodes> rotation;
-
-  // In strips of three rows, so that every product is a fixed-size 3x3 one.
-  void ApplyToColumns(int num_nodes, Field::Matrix* M) const {
-    for (int k = 0; k < num_nodes; ++k) {
-      M->middleCols(6 * k, 3) *= translation_rate;
-      for (int i = 0; i < M->rows(); i += 3) {
-        const Mat3 block = M->block<3, 3>(i, 6 * k + 3);
-        M->block<3, 3>(i, 6 * k + 3).noalias() = block * rotation[k];
-      }
-    }
-  }
-  // The map's transpose applied to a gradient: forces in the increments from forces in the perturbations.
-  Field::Vector ApplyTransposed(int num_nodes, const Field::Vector& f) const {
-    Field::Vector out(6 * num_nodes);
-    for (int k = 0; k < num_nodes; ++k) {
-      out.segment<3>(6 * k) = translation_rate * f.segment<3>(6 * k);
-      out.segment<3>(6 * k + 3).noalias() = rotation[k].transpose() * f.segment<3>(6 * k + 3);
-    }
-    return out;
-  }
-};
-
 }  // namespace
 
 // What a dynamic step's forces need: the configurations at the start, middle and end of the step and the
@@ -48,7 +21,7 @@ struct BeamElement::StepFields {
   Field::Vector d, Wd, W;      // increments, W d, diag(W)
   double norm = 0;             // d^T W d
   double strain_round_off = 0;  // StrainRoundOff of the step
-  IncrementMap to_mid, to_end;
+  Field::IncrementMap to_mid, to_end;
 };
 
 BeamElement::BeamElement(std::string name, std::vector<int> nodes, double length,
@@ -201,11 +174,9 @@ void BeamElement::EvaluateStep(const StepContext& ctx, Field::Vector* forces, Fi
   // leaves the geometric part out, as it does for constraint forces and loads (docs/theory.md, "Newton
   // iteration"); the correction term of (B5) keeps its whole derivative, which takes fewer tangents than
   // leaving K_mid out of it too. The tangent refreshed when that one converges slowly is exact.
-  Field::Matrix K_mid = Field::Matrix::Zero(dofs, dofs);
-  step.mid->AddTangent(stress.stress, nullptr, &K_mid);
-  step.to_mid.ApplyToColumns(n, &K_mid);
-  if (ctx.geometric_stiffness) *K += K_mid;
-  AddStepStressTangent(step, stress, K_mid, K);
+  const Field::Vector K_mid_transposed_d = step.mid->AddStepTangent(
+      stress.stress, *step.end, stress.rate, step.to_mid, step.to_end, ctx.geometric_stiffness, step.d, K);
+  AddGapTangent(step, stress, K_mid_transposed_d, K);
 }
 
 void BeamElement::AddCorrectionDerivative(const StepFields& step, double value, const Field::Vector& derivative,
@@ -244,17 +215,13 @@ BeamElement::StepStress BeamElement::StepStresses(const StepContext& ctx, const 
   return stress;
 }
 
-void BeamElement::AddStepStressTangent(const StepFields& step, const StepStress& stress, const Field::Matrix& K_mid,
-                                       Field::Matrix* K) const {
-  // The material part B_mid^T rate B_end and the derivative of the gap term; the geometric part K_mid came
-  // with the middle configuration's tangent.
+void BeamElement::AddGapTangent(const StepFields& step, const StepStress& stress,
+                                const Field::Vector& K_mid_transposed_d, Field::Matrix* K) const {
   const int n = shape_.num_nodes();
-  Field::Matrix material = step.mid->MaterialTangent(*step.end, stress.rate);
-  step.to_end.ApplyToColumns(n, &material);
-  *K += material;
   if (step.norm == 0.0) return;
   // d gap_work = sum_g [B_end^T rate^T gap + (B_end - B_mid)^T stress], the second term where a gap is left.
   Field::PointVectors on_end, on_mid;
+  on_end.fill(Vec6::Zero());  // Gradient reads only num_points entries; set all so that no compiler doubts it
   bool any_gap = false;
   for (int g = 0; g < step.mid->num_points(); ++g) {
     const bool gap = !stress.gap[g].isZero(0.0);
@@ -268,7 +235,7 @@ void BeamElement::AddStepStressTangent(const StepFields& step, const StepStress&
   // second derivative of stress . strain at the middle configuration (BeamStrainField::AddTangent). It is
   // taken over every point once any gap is above round-off (a point whose gap was cut to zero at round-off
   // then contributes the derivative of its uncut gap, which only the convergence rate sees).
-  if (any_gap) dgap_work.noalias() -= K_mid.transpose() * step.d;
+  if (any_gap) dgap_work -= K_mid_transposed_d;
   AddCorrectionDerivative(step, stress.gap_work, dgap_work, K);
 }
 

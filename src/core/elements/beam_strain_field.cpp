@@ -25,7 +25,10 @@ BeamStrainField::BeamStrainField(const BeamShape& shape, const Nodes& nodes, Ord
     node.psi = k == r ? Vec3::Zero() : Log(node.Q);
     node.y = R_ref_.transpose() * (nodes.x[k] - nodes.x[r]);
     node.skew_y = Skew(node.y);
-    if (order != Order::kStrains) node.calculus.emplace(node.psi, order == Order::kFirst ? Level::kFirst : Level::kSecond);
+    // The reference node's z is zero whatever the nodes do: no pass or curvature reads its maps.
+    if (order != Order::kStrains && k != r) {
+      node.calculus.emplace(node.psi, order == Order::kFirst ? Level::kFirst : Level::kSecond);
+    }
   }
   for (int g = 0; g < shape.num_points; ++g) {
     Point& p = points_[g];
@@ -42,7 +45,10 @@ BeamStrainField::BeamStrainField(const BeamShape& shape, const Nodes& nodes, Ord
   }
   if (order == Order::kStrains) return;
   for (int k = 0; k < n; ++k) {
-    if (k != r) nodes_[k].inverse_tangent_Qt = nodes_[k].calculus->inverse_tangent() * nodes_[k].Q.transpose();
+    if (k == r) continue;
+    Node& node = nodes_[k];
+    node.inverse_tangent_Qt = node.calculus->inverse_tangent() * node.Q.transpose();
+    pass_[k] = {R_ref_.transpose(), node.skew_y, node.inverse_tangent_Qt, node.calculus->inverse_tangent()};
   }
   for (int g = 0; g < shape.num_points; ++g) {
     Point& p = points_[g];
@@ -85,25 +91,64 @@ BeamStrainField::Vector BeamStrainField::PointToLocal(int g, const Eigen::Matrix
 template <class Derived>
 BeamStrainField::Wide<Derived::RowsAtCompileTime, Derived::MaxRowsAtCompileTime>
 BeamStrainField::LocalToPerturbation(const Eigen::MatrixBase<Derived>& X) const {
+  return LocalToPerturbation(X, pass_);
+}
+
+template <class Derived>
+BeamStrainField::Wide<Derived::RowsAtCompileTime, Derived::MaxRowsAtCompileTime>
+BeamStrainField::LocalToPerturbation(const Eigen::MatrixBase<Derived>& X, const Pass& pass) const {
   // Taken in strips of rows of fixed height, so that every product is a fixed-size 3-column one.
   constexpr int kStrip = Derived::RowsAtCompileTime == 1 ? 1 : 3;
   const int n = shape_->num_nodes(), r = shape_->reference;
-  BeamStrainField::Wide<Derived::RowsAtCompileTime, Derived::MaxRowsAtCompileTime> out;
-  out.setZero(X.rows(), 6 * n);
+  BeamStrainField::Wide<Derived::RowsAtCompileTime, Derived::MaxRowsAtCompileTime> out(X.rows(), 6 * n);
+  // Every other node's columns are assigned below; only the reference's are sums.
+  out.template middleCols<6>(6 * r).setZero();
   for (int i = 0; i < X.rows(); i += kStrip) {
     for (int k = 0; k < n; ++k) {
       if (k == r) continue;
-      const Node& node = nodes_[k];
+      const NodePass& factors = pass[k];
       const Eigen::Matrix<double, kStrip, 3> Xy = X.template block<kStrip, 3>(i, 6 * k);
       const Eigen::Matrix<double, kStrip, 3> Xpsi = X.template block<kStrip, 3>(i, 6 * k + kRotation);
-      const Eigen::Matrix<double, kStrip, 3> XyRt = Xy * R_ref_.transpose();
+      const Eigen::Matrix<double, kStrip, 3> XyRt = Xy * factors.translation;
       out.template block<kStrip, 3>(i, 6 * k) = XyRt;
       out.template block<kStrip, 3>(i, 6 * r) -= XyRt;
-      out.template block<kStrip, 3>(i, 6 * r + kRotation) += Xy * node.skew_y - Xpsi * node.inverse_tangent_Qt;
-      out.template block<kStrip, 3>(i, 6 * k + kRotation) = Xpsi * node.calculus->inverse_tangent();
+      out.template block<kStrip, 3>(i, 6 * r + kRotation) += Xy * factors.reference_y - Xpsi * factors.reference_psi;
+      out.template block<kStrip, 3>(i, 6 * k + kRotation) = Xpsi * factors.rotation;
     }
   }
   return out;
+}
+
+BeamStrainField::Pass BeamStrainField::PassOf(const IncrementMap& map) const {
+  // Every node's translation has the same rate, so the reference's translation columns take the same factor.
+  const int n = shape_->num_nodes(), r = shape_->reference;
+  Pass mapped;
+  for (int k = 0; k < n; ++k) {
+    if (k == r) continue;
+    const NodePass& factors = pass_[k];
+    mapped[k] = {map.translation_rate * factors.translation, factors.reference_y * map.rotation[r],
+                 factors.reference_psi * map.rotation[r], factors.rotation * map.rotation[k]};
+  }
+  return mapped;
+}
+
+BeamStrainField::Vector BeamStrainField::IncrementMap::ApplyTransposed(int num_nodes, const Vector& f) const {
+  Vector out(6 * num_nodes);
+  for (int k = 0; k < num_nodes; ++k) {
+    out.segment<3>(6 * k) = translation_rate * f.segment<3>(6 * k);
+    out.segment<3>(6 * k + kRotation).noalias() = rotation[k].transpose() * f.segment<3>(6 * k + kRotation);
+  }
+  return out;
+}
+
+void BeamStrainField::IncrementMap::ApplyToColumns(int num_nodes, Matrix* M) const {
+  for (int k = 0; k < num_nodes; ++k) {
+    M->middleCols(6 * k, 3) *= translation_rate;
+    for (int i = 0; i < M->rows(); i += 3) {
+      const Mat3 block = M->block<3, 3>(i, 6 * k + kRotation);
+      M->block<3, 3>(i, 6 * k + kRotation).noalias() = block * rotation[k];
+    }
+  }
 }
 
 BeamStrainField::Vector BeamStrainField::LocalToPerturbation(const Vector& c) const {
@@ -113,7 +158,8 @@ BeamStrainField::Vector BeamStrainField::LocalToPerturbation(const Vector& c) co
 BeamStrainField::Matrix BeamStrainField::LocalToPerturbationRows(const Matrix& X) const {
   // The transpose of LocalToPerturbation(X^T), in strips of three columns.
   const int n = shape_->num_nodes(), r = shape_->reference;
-  Matrix out = Matrix::Zero(6 * n, X.cols());
+  Matrix out(6 * n, X.cols());
+  out.middleRows<6>(6 * r).setZero();  // every other node's rows are assigned below
   for (int j = 0; j < X.cols(); j += 3) {
     for (int k = 0; k < n; ++k) {
       if (k == r) continue;
@@ -170,40 +216,79 @@ BeamStrainField::Vector BeamStrainField::Gradient(const PointVectors& stress) co
   return LocalToPerturbation(c);
 }
 
-void BeamStrainField::AddTangent(const PointVectors& stress, const std::array<Mat6, kMaxPoints>* material,
-                                 Matrix* K) const {
-  const int n = shape_->num_nodes();
-  Matrix Kz = Matrix::Zero(num_dofs(), num_dofs());
-  Vector c = Vector::Zero(num_dofs());
+void BeamStrainField::LocalTangent(const PointVectors& stress, const std::array<Mat6, kMaxPoints>* material,
+                                   Matrix* Kz, Vector* c) const {
+  Kz->setZero(num_dofs(), num_dofs());
+  c->setZero(num_dofs());
   for (int g = 0; g < num_points(); ++g) {
     const Point& p = points_[g];
-    c += PointToLocal(g, p.E.transpose() * stress[g]);
+    *c += PointToLocal(g, p.E.transpose() * stress[g]);
     Mat9 H = PointHessian(p, stress[g]);
     if (material != nullptr) {
       const Mat69 CE = (*material)[g] * p.E;
       H.noalias() += p.E.transpose().lazyProduct(CE);
     }
-    AddPointToLocal(g, H, &Kz);
+    AddPointToLocal(g, H, Kz);
   }
-  *K += LocalToPerturbationRows(LocalToPerturbation(Kz));
+}
+
+void BeamStrainField::AddCurvature(const Vector& c, Matrix* K) const {
   AddLocalCoordinateHessian(c, K);
   // The forces are gradients along R_k Exp(phi_k); moving R_k by Exp(d) turns them by half the rotation:
   // d/dd [grad at R Exp(d)] = Hessian + Skew(forces_phi) / 2 (docs/theory.md, (B12)).
   const Vector f = LocalToPerturbation(c);
-  for (int k = 0; k < n; ++k) {
+  for (int k = 0; k < shape_->num_nodes(); ++k) {
     K->block<3, 3>(6 * k + kRotation, 6 * k + kRotation) += 0.5 * Skew(f.segment<3>(6 * k + kRotation));
   }
 }
 
-BeamStrainField::Matrix BeamStrainField::MaterialTangent(const BeamStrainField& right,
-                                                         const std::array<Mat6, kMaxPoints>& material) const {
+void BeamStrainField::AddTangent(const PointVectors& stress, const std::array<Mat6, kMaxPoints>* material,
+                                 Matrix* K) const {
+  Matrix Kz;
+  Vector c;
+  LocalTangent(stress, material, &Kz, &c);
+  *K += LocalToPerturbationRows(LocalToPerturbation(Kz));
+  AddCurvature(c, K);
+}
+
+BeamStrainField::Matrix BeamStrainField::LocalMaterialTangent(const BeamStrainField& right,
+                                                              const std::array<Mat6, kMaxPoints>& material) const {
   Matrix Kz = Matrix::Zero(num_dofs(), num_dofs());
   for (int g = 0; g < num_points(); ++g) {
     const Mat69 CE = material[g] * right.points_[g].E;
     const Mat9 H = points_[g].E.transpose().lazyProduct(CE);
     AddPointToLocal(g, H, &Kz);
   }
-  return LocalToPerturbationRows(right.LocalToPerturbation(Kz));
+  return Kz;
+}
+
+BeamStrainField::Matrix BeamStrainField::MaterialTangent(const BeamStrainField& right,
+                                                         const std::array<Mat6, kMaxPoints>& material) const {
+  return LocalToPerturbationRows(right.LocalToPerturbation(LocalMaterialTangent(right, material)));
+}
+
+BeamStrainField::Vector BeamStrainField::AddStepTangent(const PointVectors& stress, const BeamStrainField& right,
+                                                        const std::array<Mat6, kMaxPoints>& material,
+                                                        const IncrementMap& map, const IncrementMap& right_map,
+                                                        bool geometric, const Vector& d, Matrix* K) const {
+  const int n = shape_->num_nodes();
+  Matrix Kz;
+  Vector c;
+  LocalTangent(stress, nullptr, &Kz, &c);
+  // Both parts in z on the left, in the increments on the right, then one pass of (dz/dp)^T.
+  Matrix right_part = right.LocalToPerturbation(LocalMaterialTangent(right, material), right.PassOf(right_map));
+  if (geometric) right_part += LocalToPerturbation(Kz, PassOf(map));
+  *K += LocalToPerturbationRows(right_part);
+  // K_geo = [(dz/dp)^T Kz (dz/dp) + curvature] M: its transpose applied to d from vectors and the curvature.
+  Matrix curvature = Matrix::Zero(num_dofs(), num_dofs());
+  AddCurvature(c, &curvature);
+  Vector transposed_d = LocalToPerturbation(Vector(Kz.transpose() * LocalRate(d)));
+  transposed_d.noalias() += curvature.transpose() * d;
+  if (geometric) {
+    map.ApplyToColumns(n, &curvature);
+    *K += curvature;
+  }
+  return map.ApplyTransposed(n, transposed_d);
 }
 
 void BeamStrainField::AddPointToLocal(int g, const Mat9& H, Matrix* Kz) const {
