@@ -41,9 +41,7 @@ State AfterSteps(const Model& model, double h, double end_time, const Motion& mo
   State state = at(end_time - 4 * h);
   for (int step = 0; step < 4; ++step) {
     State end = at(state.t + h);
-    end.h_prev = h;
-    end.history_steps = state.history_steps + 1;
-    RecordStepHistory(state, &end);
+    RecordStepHistory(state, h, &end);
     state = std::move(end);
   }
   return state;

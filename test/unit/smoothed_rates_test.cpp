@@ -39,9 +39,7 @@ State AfterSteps(const std::vector<double>& steps) {
   State state = ScrewStateAt(0.0);
   for (double h : steps) {
     State end = ScrewStateAt(state.t + h);
-    end.h_prev = h;
-    end.history_steps = state.history_steps + 1;
-    RecordStepHistory(state, &end);
+    RecordStepHistory(state, h, &end);
     state = std::move(end);
   }
   return state;

@@ -61,11 +61,12 @@ double StepAfterJump(const SolverSpec& solver, double acceleration_jump, double 
 /// Local error estimate of the step that led to `end` (docs/theory.md, (T12)), from its mean-rate history.
 ErrorEstimate EstimateLocalError(const Model& model, const State& end);
 
-/// Books an accepted step from `start` into the end state's error-test history: its mean rates and size, and the
-/// peak speeds that scale the test. Called by every scheme once `end` holds its positions, rates and h_prev.
-void RecordStepHistory(const State& start, State* end);
+/// Books an accepted step of size `h` from `start` into the end state's error-test history: its size and count
+/// (h_prev, history_steps), its mean rates, and the peak speeds that scale the test. Called by every scheme once
+/// `end` holds its positions and rates.
+void RecordStepHistory(const State& start, double h, State* end);
 
-/// Round-off floor of Newton increments for a start state (its coordinates and joint variables).
+/// Round-off floor of Newton increments for a start state (its node coordinates and joint variables).
 double NoiseFloor(const Model& model, const State& start);
 
 /// The kinematic unknowns of a step that coasts at the start velocities: h v, h w, h qdot.

@@ -307,8 +307,6 @@ void EnergyDecayingIntegrator::Commit(const State& start, const Eigen::VectorXd&
   const StepContext& ctx = builder_.context();
   *end = start;
   end->t = start.t + h;
-  end->h_prev = h;
-  end->history_steps = start.history_steps + 1;
   for (int k = 0; k < model_.num_nodes(); ++k) {
     const NodeStep& s = (*ctx.nodes)[k];
     NodeState& n = end->nodes[k];
@@ -335,7 +333,7 @@ void EnergyDecayingIntegrator::Commit(const State& start, const Eigen::VectorXd&
   end->qddot_prev2 = start.qddot_prev;
   end->qddot_prev = (end->qdot - start.qdot) / h;
   end->dq_prev = end->q - start.q;
-  RecordStepHistory(start, end);
+  RecordStepHistory(start, h, end);
 
   StepWork work;
   for (const auto& element : model_.elements()) element->AddStepWork(ctx, &work);

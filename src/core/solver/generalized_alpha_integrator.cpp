@@ -148,8 +148,6 @@ void GeneralizedAlphaIntegrator::Commit(const State& start, const State& iterate
                                         State* end) const {
   *end = iterate;
   end->t = start.t + h;
-  end->h_prev = h;
-  end->history_steps = start.history_steps + 1;
   for (int k = 0; k < model_.num_nodes(); ++k) {
     const NodeState& n = start.nodes[k];
     const NodeStep& s = builder_.context().nodes->at(k);
@@ -176,7 +174,7 @@ void GeneralizedAlphaIntegrator::Commit(const State& start, const State& iterate
     end->element_state_rates_alg[k] = c_.AlgorithmicRate(dx[k], start.element_state_rates_alg[k], h);
     end->element_state_rates[k] = (*builder_.context().element_states)[k].rate;
   }
-  RecordStepHistory(start, end);
+  RecordStepHistory(start, h, end);
 }
 
 }  // namespace flexmbd

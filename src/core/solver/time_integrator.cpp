@@ -170,8 +170,9 @@ ErrorEstimate EstimateLocalError(const Model& model, const State& end) {
   return estimate;
 }
 
-void RecordStepHistory(const State& start, State* end) {
-  const double h = end->h_prev;
+void RecordStepHistory(const State& start, double h, State* end) {
+  end->h_prev = h;
+  end->history_steps = start.history_steps + 1;
   end->recent_h = {h, start.recent_h[0], start.recent_h[1]};
   for (size_t k = 0; k < end->nodes.size(); ++k) {
     const NodeState& i = start.nodes[k];
