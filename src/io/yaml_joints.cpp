@@ -16,6 +16,12 @@ namespace {
 // time function's arithmetic separates equal inputs.
 constexpr double kDriveStartTolerance = 1.0e-9;
 
+// Newton resolves a variable to about 100 units in the last place of its magnitude (RoundOffFloor): 2.2e-8 at
+// 1e6 rad or m, under the tightest joint error floor the step control follows (1e-7 rad, at error_tol 1e-7).
+// Further out the step's own motion drowns in round-off (B1 of the antenna at 1.6e9 rad took 63,000 steps for
+// its first 0.03 s).
+constexpr double kLargestInitialPosition = 1.0e6;
+
 const std::vector<std::string> kJointKeys = {"type",    "axis",  "axis2",    "pitch",   "spring",  "damper",
                                              "initial", "drive", "backlash", "friction", "variables"};
 const std::vector<std::string> kVariableKeys = {"spring", "damper", "initial", "drive", "backlash", "friction"};
@@ -167,6 +173,16 @@ void ReadInitial(const Field& initial, const Field& drive, const VariableUnits& 
   joint->position_set[variable] = joint->velocity_set[variable] = true;
 }
 
+void CheckResolvable(const Field& initial, const Field& drive, double position, const std::string& unit) {
+  if (std::abs(position) <= kLargestInitialPosition) return;
+  const Field source = drive.present()                        ? drive
+                       : initial.Child("position").present() ? initial.Child("position")
+                                                              : initial.Child("position_deg");
+  source.Fail("an initial position of " + FormatNumber(position) + " [" + unit + "] is beyond what the solver " +
+              "resolves; expected an initial position within +-" + FormatNumber(kLargestInitialPosition) + " [" +
+              unit + "]");
+}
+
 // A loop's closing joint starts where the tree puts its child (docs/config.md, "closures").
 void CheckNotSetOnClosure(const std::vector<Field>& sources, const JointSpec& joint) {
   if (!joint.closes_loop) return;
@@ -195,7 +211,9 @@ void ReadVariable(const std::vector<Field>& sources, int variable, JointSpec* jo
   if (backlash.present()) effects.stops = ReadBacklash(backlash, *joint, units);
   const Field friction = Pick(sources, "friction");
   if (friction.present()) effects.frictions = {ReadFriction(friction, units)};
-  ReadInitial(Pick(sources, "initial"), drive, units, variable, joint);
+  const Field initial = Pick(sources, "initial");
+  ReadInitial(initial, drive, units, variable, joint);
+  CheckResolvable(initial, drive, joint->initial_position[variable], units.position);
 }
 
 std::vector<Field> ReadVariableList(const Field& field, const JointSpec& joint) {

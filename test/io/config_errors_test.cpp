@@ -262,6 +262,17 @@ TEST(ConfigErrors, InitialPositionOffTheDriveIsRejected) {
       "expected a driven variable to start on its drive");
 }
 
+TEST(ConfigErrors, InitialPositionBeyondResolutionIsRejected) {
+  // A fuzz finding (seed 17, input 64,118): B1 of the antenna at -9e10 deg stepped at round-off for ever.
+  EXPECT_CONFIG_ERROR(Pendulum("joints: {B1: {initial: {position_deg: -9.0e10}}}"),
+                      "pendulum.yaml: joints.B1.initial.position_deg: an initial position of -1570796326.7948966 "
+                      "[rad] is beyond what the solver resolves; expected an initial position within +-1e+06 [rad]");
+  EXPECT_CONFIG_ERROR(Pendulum("joints: {B1: {drive: {law: constant, value: 2.0e6}}}"),
+                      "pendulum.yaml: joints.B1.drive: an initial position of 2e+06 [rad] is beyond what the "
+                      "solver resolves; expected an initial position within +-1e+06 [rad]");
+  EXPECT_NO_THROW(Pendulum("joints: {B1: {initial: {position: -1.0e6}}}"));
+}
+
 TEST(ConfigErrors, InitialVelocityOffTheDriveIsRejected) {
   EXPECT_CONFIG_ERROR(
       Pendulum("joints: {B1: {initial: {velocity: 1}, drive: {law: linear_ramp, value: 2, duration: 4}}}"),

@@ -196,8 +196,10 @@ void RecordStepHistory(const State& start, double h, State* end) {
 }
 
 double NoiseFloor(const Model& model, const State& start) {
+  // Bodies that travel beyond the model's initial extent (a fast screw's nut) carry the round-off of where they are.
   double magnitude = model.length_scale();
   if (start.q.size() > 0) magnitude = std::max(magnitude, start.q.cwiseAbs().maxCoeff());
+  for (const NodeState& node : start.nodes) magnitude = std::max(magnitude, node.x.cwiseAbs().maxCoeff());
   return RoundOffFloor(magnitude);
 }
 
