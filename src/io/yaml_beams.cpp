@@ -70,11 +70,8 @@ void ReadBeam(const Field& beam, BeamSpec* spec) {
   CheckKeys(beam, kBeamKeys);
   RequireKey(beam, "length", "the beam length [m] along the link's x axis");
   spec->length = ReadNumber(beam.Child("length"), Quantity{"a length", Bound::kPositive, "m"});
-  OverlayInteger(beam, "elements", Quantity{"a number of elements", Bound::kAtLeastOne, ""}, &spec->elements);
-  if (spec->elements > kMaxBeamElements) {
-    beam.Child("elements").Fail(std::to_string(spec->elements) + " is above " + std::to_string(kMaxBeamElements) +
-                                "; expected at most " + std::to_string(kMaxBeamElements) + " elements in one beam");
-  }
+  OverlayCount(beam, "elements", Quantity{"a number of elements", Bound::kAtLeastOne, ""}, kMaxBeamElements,
+               "elements in one beam", &spec->elements);
   OverlayInteger(beam, "order", Quantity{"a shape-function order", Bound::kAtLeastOne, ""}, &spec->order);
   if (spec->order > 3) beam.Child("order").Fail(std::to_string(spec->order) + " is above 3; expected 1, 2 or 3");
   OverlayNumber(beam, "damping", Quantity{"a damping time mu", Bound::kNonNegative, "s"}, &spec->damping);

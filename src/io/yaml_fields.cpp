@@ -221,6 +221,15 @@ void OverlayInteger(const Field& map, const std::string& key, const Quantity& qu
   if (field.present()) *value = ReadInteger(field, quantity);
 }
 
+void OverlayCount(const Field& map, const std::string& key, const Quantity& quantity, int most,
+                  const std::string& what, int* value) {
+  OverlayInteger(map, key, quantity, value);
+  if (*value > most) {
+    map.Child(key).Fail(std::to_string(*value) + " is above " + std::to_string(most) + "; expected at most " +
+                        std::to_string(most) + " " + what);
+  }
+}
+
 void OverlayBool(const Field& map, const std::string& key, bool* value) {
   const Field field = map.Child(key);
   if (field.present()) *value = ReadBool(field);

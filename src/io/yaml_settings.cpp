@@ -10,6 +10,11 @@ const std::vector<std::string> kSolverKeys = {"analysis",       "integrator", "r
                                               "dt_min",         "dt_max",     "adaptive",     "tol",    "error_tol",
                                               "error_floor",    "max_iterations", "load_steps", "static_first", "gravity",
                                               "eigen"};
+// Counts beyond these are typing errors that would run for hours (a fuzzed load_steps of 2e9): each load step is a
+// whole Newton solve, and 10,000 already follow a load path in steps of 1e-4 of the load; a Newton solve that
+// refreshes its tangent whenever it stops contracting fast converges in tens of iterations or not at all.
+constexpr int kMaxLoadSteps = 10000;
+constexpr int kMaxNewtonIterations = 1000;
 const std::vector<std::string> kEigenKeys = {"modes", "static_first", "method", "shift_hz", "about", "sweep",
                                              "at_times"};
 const std::vector<std::string> kSweepKeys = {"velocity_scale", "airspeed"};
@@ -175,9 +180,10 @@ void ReadSolver(const Field& solver, SolverSpec* spec) {
     OverlayNumber(floor, "joint", Quantity{"a local joint-variable error floor", Bound::kPositive, "rad or m"},
                   &spec->error_floor.joint);
   }
-  OverlayInteger(solver, "max_iterations", Quantity{"an iteration count", Bound::kAtLeastOne, ""},
-                 &spec->max_iterations);
-  OverlayInteger(solver, "load_steps", Quantity{"a number of load steps", Bound::kAtLeastOne, ""}, &spec->load_steps);
+  OverlayCount(solver, "max_iterations", Quantity{"an iteration count", Bound::kAtLeastOne, ""},
+               kMaxNewtonIterations, "Newton iterations per step", &spec->max_iterations);
+  OverlayCount(solver, "load_steps", Quantity{"a number of load steps", Bound::kAtLeastOne, ""}, kMaxLoadSteps,
+               "load steps", &spec->load_steps);
   OverlayBool(solver, "static_first", &spec->static_first);
   OverlayVec3(solver, "gravity", Quantity{"a gravity acceleration", Bound::kAny, "m/s^2"}, &spec->gravity);
   if (solver.Child("eigen").present()) ReadEigen(solver.Child("eigen"), &spec->eigen);

@@ -188,6 +188,16 @@ TEST(ConfigErrors, FractionalCountIsRejected) {
       "pendulum.yaml: solver.max_iterations: '2.5' is not an integer; expected an iteration count >= 1");
 }
 
+TEST(ConfigErrors, CountsThatWouldRunForHoursAreRejected) {
+  // A fuzz finding (seed 18, input 474): a static analysis of 2e9 load steps ran past the time limit.
+  EXPECT_CONFIG_ERROR(Pendulum("solver: {analysis: static, load_steps: 2000000000}"),
+                      "pendulum.yaml: solver.load_steps: 2000000000 is above 10000; expected at most 10000 load steps");
+  EXPECT_CONFIG_ERROR(Pendulum("solver: {max_iterations: 1001}"),
+                      "pendulum.yaml: solver.max_iterations: 1001 is above 1000; expected at most 1000 Newton "
+                      "iterations per step");
+  EXPECT_NO_THROW(Pendulum("solver: {load_steps: 10000, max_iterations: 1000}"));
+}
+
 TEST(ConfigErrors, RhoInfOutsideUnitIntervalIsRejected) {
   EXPECT_CONFIG_ERROR(Pendulum("solver: {rho_inf: 1.5}"), "pendulum.yaml: solver.rho_inf: 1.5 is outside [0, 1]");
 }

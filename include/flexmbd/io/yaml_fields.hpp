@@ -117,6 +117,10 @@ void OverlayBool(const Field& map, const std::string& key, bool* value);
 void OverlayString(const Field& map, const std::string& key, const std::string& what, std::string* value);
 void OverlayVec3(const Field& map, const std::string& key, const Quantity& quantity, Vec3* value);
 
+/// OverlayInteger of a count that also fails above `most`: "<n> is above <most>; expected at most <most> <what>".
+void OverlayCount(const Field& map, const std::string& key, const Quantity& quantity, int most,
+                  const std::string& what, int* value);
+
 /// What a value that may be written in degrees measures.
 struct Measure {
   bool angular = false;     ///< degrees allowed under `<key>_deg`
