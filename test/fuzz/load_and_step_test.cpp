@@ -2,6 +2,11 @@
 
 #include <gtest/gtest.h>
 
+#include <unistd.h>
+
+#include <string>
+
+#include "harness/isolated_run.hpp"
 #include "harness/load_and_step.hpp"
 #include "harness/seed_corpus.hpp"
 
@@ -40,6 +45,37 @@ TEST(LoadAndStep, ParameterChannelNamesTheNamespace) {
   const TargetResult result = LoadAndStep(FuzzInput{PendulumUrdf(), "solver: {dt: -1}\n", Channel::kParamTree});
   EXPECT_EQ(result.outcome, Outcome::kConfigError);
   EXPECT_NE(result.message.find("/flexmbd_node"), std::string::npos) << result.message;
+}
+
+std::string SeedUrdf(const std::string& name) {
+  for (const SeedCase& seed : Seeds()) {
+    if (seed.name.rfind(name, 0) == 0) return seed.urdf;
+  }
+  ADD_FAILURE() << "test/fuzz/seeds.txt lost " << name;
+  return "";
+}
+
+TEST(LoadAndStep, LargerModelsGetLongerTimeLimits) {
+  EXPECT_EQ(TimeLimitFactor(12), 1u);
+  EXPECT_EQ(TimeLimitFactor(kUnknownsPerTimeLimit - 1), 1u);
+  EXPECT_EQ(TimeLimitFactor(36 * kUnknownsPerTimeLimit), 36u);
+  // In the child, the limit left after the run: a beam of 1,000 cubic elements (3,001 nodes, 18,006 unknowns with
+  // the clamp) gets three times the 100 s given.
+  const std::string beam = "beams: {arm: {length: 1.0, elements: 1000, order: 3, section: {EA: 1.0e7, GA2: 4.0e6, "
+                           "GA3: 4.0e6, GJ: 50.0, EI2: 80.0, EI3: 100.0, m: 2.5, m_ii: [0.002, 0.001, 0.001]}}}\n"
+                           "solver: {t_end: 1.0e-6, dt: 1.0e-6}\n";
+  IsolationLimits limits;
+  limits.seconds = 100;
+  const IsolatedResult isolated = RunIsolated(
+      [&] {
+        const TargetResult run = LoadAndStep(FuzzInput{SeedUrdf("test/data/urdf/beam_arm.urdf"), beam, Channel::kFiles});
+        return TargetResult{run.outcome, run.message + "|" + std::to_string(alarm(0))};
+      },
+      limits);
+  ASSERT_EQ(isolated.termination, Termination::kReturned);
+  EXPECT_EQ(isolated.result.outcome, Outcome::kCompleted) << isolated.result.message;
+  const unsigned left = std::stoul(isolated.result.message.substr(isolated.result.message.find('|') + 1));
+  EXPECT_GT(left, 200u);
 }
 
 TEST(LoadAndStep, HugeEndTimeRunsOnlyTheFirstSteps) {

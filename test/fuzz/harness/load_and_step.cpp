@@ -1,5 +1,7 @@
 #include "load_and_step.hpp"
 
+#include <unistd.h>
+
 #include <algorithm>
 #include <typeinfo>
 
@@ -29,9 +31,17 @@ ModelSpec Load(const FuzzInput& input) {
   return LoadModelSpecFromStrings(input.urdf, kUrdfParamName, tree, kParamNamespace);
 }
 
+// The alarm of RunIsolated's child, extended for the model's size; none in a replay in-process.
+void AllowTimeForSize(const Model& model) {
+  const unsigned left = alarm(0);
+  if (left > 0) alarm(left * TimeLimitFactor(model.num_unknowns()));
+}
+
 void Run(const FuzzInput& input) {
   const Model model = BuildModel(Load(input));
   if (input.channel == Channel::kParamTree) ros::UrdfFrameTree(input.urdf, model);
+  if (model.num_unknowns() > kLargestRunModel) return;
+  AllowTimeForSize(model);
   const auto no_output = [](const OutputSample&) {};
   switch (model.solver().analysis) {
     case SolverSpec::Analysis::kEigen: {
@@ -60,6 +70,8 @@ void Run(const FuzzInput& input) {
 }
 
 }  // namespace
+
+unsigned TimeLimitFactor(int unknowns) { return static_cast<unsigned>(std::max(1, unknowns / kUnknownsPerTimeLimit)); }
 
 TargetResult LoadAndStep(const FuzzInput& input) {
   try {

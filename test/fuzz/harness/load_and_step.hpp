@@ -20,6 +20,17 @@ constexpr char kParamNamespace[] = "/flexmbd_node";
 /// bound against the t_end given.
 constexpr int kStepsRun = 3;
 
+/// A run's cost grows with the model's unknowns (bench/README.md, fuzz campaigns: three steps of a panel with
+/// friction took 18 s alone at 1,000 cubic elements, 144 s at 10,000), so the time limit a model gets is the
+/// campaign's times one per this many unknowns...
+constexpr int kUnknownsPerTimeLimit = 5000;
+/// ...and a model beyond the linear range (10,000 cubic elements, about 180,000 unknowns) is built but not
+/// run: its run takes minutes to an hour of the code smaller models exercise.
+constexpr int kLargestRunModel = 200000;
+
+/// How many times the campaign's time limit a model of `unknowns` gets (at least once).
+unsigned TimeLimitFactor(int unknowns);
+
 enum class Outcome { kCompleted, kConfigError, kSolverError, kOtherException };
 
 struct TargetResult {
@@ -28,7 +39,8 @@ struct TargetResult {
 };
 
 /// Loads `input` through its channel, builds the model and runs it (static equilibrium, eigen-analysis, or
-/// kStepsRun steps of a dynamic run), with no output files. Catches every exception.
+/// kStepsRun steps of a dynamic run; not beyond kLargestRunModel unknowns), with no output files. Under a time
+/// limit (alarm) it extends the limit by TimeLimitFactor once the model is built. Catches every exception.
 TargetResult LoadAndStep(const FuzzInput& input);
 
 }  // namespace fuzz
