@@ -155,11 +155,12 @@ struct BeamRun {
   long steps = 0;  ///< attempted
 };
 
-BeamRun RunBeamArm(const ModelSpec& spec) {
+// The vertical displacement of the beam station `station` (output.beam_stations) at every sample.
+BeamRun RunBeamTip(const ModelSpec& spec, int station = 0) {
   const Model model = BuildModel(spec);
   Simulation simulation(model);
   BeamRun run;
-  simulation.Run([&](const OutputSample& s) { run.tip.push_back(s.beam_stations[0].displacement.z()); });
+  simulation.Run([&](const OutputSample& s) { run.tip.push_back(s.beam_stations[station].displacement.z()); });
   run.steps = simulation.statistics().accepted + simulation.statistics().rejected();
   return run;
 }
@@ -187,7 +188,7 @@ const BeamRun& ConvergedBeamArm() {
     spec.solver.adaptive = false;
     spec.solver.dt = 2.0e-5;
     spec.solver.tol = 1.0e-10;
-    return RunBeamArm(spec);
+    return RunBeamTip(spec);
   }();
   return converged;
 }
@@ -196,9 +197,9 @@ TEST(StepControl, BeamArmErrorFallsWithTheTolerance) {
   const BeamRun& converged = ConvergedBeamArm();
   // Measured: 4.6e-4, 3.9e-6 (120x) and 1.0e-7 (39x) at error_tol 1e-3, 1e-5, 1e-7, from the default first step;
   // the issue asks for 10x per 100x of tolerance.
-  const double coarse = TipError(RunBeamArm(BeamArm(1.0e-3)), converged);
-  const double fine = TipError(RunBeamArm(BeamArm(1.0e-5)), converged);
-  const double finest = TipError(RunBeamArm(BeamArm(1.0e-7)), converged);
+  const double coarse = TipError(RunBeamTip(BeamArm(1.0e-3)), converged);
+  const double fine = TipError(RunBeamTip(BeamArm(1.0e-5)), converged);
+  const double finest = TipError(RunBeamTip(BeamArm(1.0e-7)), converged);
   EXPECT_LT(fine, coarse / 10);
   EXPECT_LT(finest, fine / 10);
 }
@@ -213,6 +214,39 @@ TEST(StepControl, BeamArmFirstStepIsChosenByTheEstimate) {
   simulation.Run([&](const OutputSample& s) { run.tip.push_back(s.beam_stations[0].displacement.z()); });
   EXPECT_LT(simulation.statistics().h_start, model.solver().dt / 10);
   EXPECT_LT(TipError(run, ConvergedBeamArm()), 1.7e-4 / 5);
+}
+
+// The blade droop-stop drop test (config/blade_drop/, 9.7 deg, 0.5 s: the fall, the impact on the elastic stop and
+// the flexing after it), its tip's vertical displacement as in bench/work_precision. dt_min as the bench: the
+// release needs first steps below the default at tight tolerances (BladeDrop.TightTolerance...).
+BeamRun RunBladeTip(ModelSpec spec) {
+  spec.solver.t_end = 0.5;
+  spec.solver.dt_min = 1.0e-12;
+  return RunBeamTip(spec, 1);  // the YAML's second station, at the tip
+}
+
+TEST(StepControl, BladeDropAdaptiveStepsBeatFixedStepsOfFourFifthsTheirCount) {
+  // Equal steps still reach the adaptive run's error in fewer steps on this damped beam (bench/README.md,
+  // "Work-precision": 0.81-0.88 of its accepted steps since (T12c), 0.73-0.85 before): the bound is that they need
+  // more than four fifths. At error_tol 1e-4 (842 accepted steps, 7 rejected, error 2.81e-4; the fixed line gives
+  // 3.1e-4 at 4/5 of the count, 11% above; before (T12c) the fixed line met the adaptive run's error at 0.80 of its
+  // count). Converged run: fixed 2e-5 s steps, Newton 1e-10, within 1.8e-7 of fixed 1e-5 s (0.07% of the errors
+  // compared).
+  const std::string dir = std::string(FLEXMBD_SOURCE_DIR) + "/config/blade_drop/";
+  const ModelSpec spec = LoadModelSpec(dir + "blade_drop.urdf", dir + "release_9.7deg.yaml");
+  ModelSpec converged = spec;
+  converged.solver.adaptive = false;
+  converged.solver.dt = 2.0e-5;
+  converged.solver.tol = 1.0e-10;
+  const BeamRun reference = RunBladeTip(converged);
+  ModelSpec adaptive_spec = spec;
+  adaptive_spec.solver.error_tol = 1.0e-4;
+  const BeamRun adaptive = RunBladeTip(adaptive_spec);
+  ModelSpec fixed_spec = spec;
+  fixed_spec.solver.adaptive = false;
+  fixed_spec.solver.dt = 0.5 / (0.8 * static_cast<double>(adaptive.steps));
+  const BeamRun fixed = RunBladeTip(fixed_spec);
+  EXPECT_LT(TipError(adaptive, reference), TipError(fixed, reference)) << adaptive.steps << " steps";
 }
 
 TEST(StepControl, StatisticsNameTheNodeRotationOrTranslationThatLimitedTheStep) {

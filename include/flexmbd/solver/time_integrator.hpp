@@ -58,7 +58,8 @@ double JointErrorFloor(const SolverSpec& solver);
 /// fixed steps or without a jump.
 double StepAfterJump(const SolverSpec& solver, double acceleration_jump, double peak_joint_rate);
 
-/// Local error estimate of the step that led to `end` (docs/theory.md, (T12)), from its mean-rate history.
+/// Local error estimate of the step that led to `end` (docs/theory.md, (T12); damped beams (T12b), (T12c)), from its
+/// mean-rate history.
 ErrorEstimate EstimateLocalError(const Model& model, const State& end);
 
 /// Books an accepted step of size `h` from `start` into the end state's error-test history: its size and count

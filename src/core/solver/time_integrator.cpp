@@ -26,9 +26,10 @@ Vec3 StepMidpoint(const NodeState& n, const std::array<double, 3>& h, int j) {
   return x - 0.5 * h[j] * n.mean_v[j];
 }
 
-// A beam's rigid motion over each of the last three steps (T12b): the mean of its nodes' mean rates and spins,
-// turning about the mean of their step midpoints; and the largest deformation rate and spin relative to it of its
-// nodes in the newest step.
+// A beam's rigid motion over each of the last three steps (T12b): the rigid velocity field that fits its nodes' mean
+// rates best (least squares) about the mean of their step midpoints, its spin about the beam's own chord (which
+// the rates of nodes in a row do not fix) the nodes' mean spin there; and the largest deformation rate and spin
+// relative to it of its nodes in the newest step.
 struct BeamRigidMotion {
   std::array<Vec3, 3> rate, spin, centre;
   double largest_rate = 0, largest_spin = 0;
@@ -36,12 +37,31 @@ struct BeamRigidMotion {
   BeamRigidMotion(const BeamInfo& beam, const State& end, const std::array<double, 3>& h) {
     const double count = static_cast<double>(beam.nodes.size());
     for (int j = 0; j < 3; ++j) {
-      rate[j] = spin[j] = centre[j] = Vec3::Zero();
+      rate[j] = centre[j] = Vec3::Zero();
+      Vec3 mean_spin = Vec3::Zero();
       for (int k : beam.nodes) {
         rate[j] += end.nodes[k].mean_v[j] / count;
-        spin[j] += end.nodes[k].mean_w[j] / count;
+        mean_spin += end.nodes[k].mean_w[j] / count;
         centre[j] += StepMidpoint(end.nodes[k], h, j) / count;
       }
+      // Normal equations of min sum_n |u_n - rate - spin x r_n|^2: sum_n (|r_n|^2 I - r_n r_n^T) spin =
+      // sum_n r_n x (u_n - rate), singular along the chord a of a straight beam; there the spin is the mean spin's
+      // (the term s a a^T, s = sum_n |r_n|^2, makes the matrix s I for a straight beam).
+      Mat3 normal = Mat3::Zero();
+      Vec3 moment = Vec3::Zero();
+      double s = 0;
+      for (int k : beam.nodes) {
+        const Vec3 r = StepMidpoint(end.nodes[k], h, j) - centre[j];
+        normal += r.squaredNorm() * Mat3::Identity() - r * r.transpose();
+        moment += r.cross(end.nodes[k].mean_v[j] - rate[j]);
+        s += r.squaredNorm();
+      }
+      const Vec3 chord =
+          StepMidpoint(end.nodes[beam.nodes.back()], h, j) - StepMidpoint(end.nodes[beam.nodes.front()], h, j);
+      const Vec3 a = chord.norm() > 0 ? Vec3(chord.normalized()) : Vec3::UnitX();
+      normal += s * a * a.transpose();
+      moment += s * a * a.dot(mean_spin);
+      spin[j] = s > 0 ? Vec3(normal.ldlt().solve(moment)) : mean_spin;
     }
     for (int k : beam.nodes) {
       largest_rate = std::max(largest_rate, DeformationRate(end.nodes[k], h, 0).norm());
@@ -121,11 +141,16 @@ ErrorEstimate EstimateLocalError(const Model& model, const State& end) {
   };
   // A damped beam's deformation decays at mu omega^2 / 2, omega^2 = |x_d'''| / |x_d'| for one mode (x_d' taken as
   // the beam's largest deformation rate): the error a step leaves in it adds up over 1 / that rate, not over the
-  // time left, and is discounted by their ratio (T12b).
+  // time left, and is discounted by their ratio (T12b). A mode's local error is a phase error: besides the position
+  // part h^3 x_d''' / 12 its velocity carries h^3 x_d'''' / 12 = h^3 omega^2 x_d'' / 12, counted as the position
+  // error it stands for (divided by omega), so that the entry does not swing with the mode's phase (T12c).
   const double time_left = std::max(0.0, solver.t_end - end.t);
-  auto discounted = [&](const Vec3& whole, const Vec3& deformed, double damping, double peak) {
-    const double decays_left = peak > 0 ? 0.5 * damping * deformed.norm() / peak * time_left : 0.0;
-    return (whole - deformed + deformed / std::max(1.0, decays_left)).norm();
+  auto discounted = [&](const Vec3& whole, const Vec3& deformed, const Vec3& deformed_acceleration, double damping,
+                        double peak) {
+    const double omega_squared = peak > 0 ? deformed.norm() / peak : 0.0;
+    const double decays = std::max(1.0, 0.5 * damping * omega_squared * time_left);
+    const double position = (whole - deformed + deformed / decays).norm();
+    return std::hypot(position, std::sqrt(omega_squared) * deformed_acceleration.norm() / decays);
   };
   // A beam's nodes come in a row: its rigid motion is found once for them.
   int rigid_beam = -1;
@@ -143,10 +168,14 @@ ErrorEstimate EstimateLocalError(const Model& model, const State& end) {
           rigid->DeformationRate(n, h, 0), rigid->DeformationRate(n, h, 1), rigid->DeformationRate(n, h, 2));
       const Vec3 deformed_rotation =
           third_derivative(rigid->DeformationSpin(n, 0), rigid->DeformationSpin(n, 1), rigid->DeformationSpin(n, 2));
-      add(weight * discounted(translation, deformed_translation, damping, rigid->largest_rate), position_scale,
-          model.node_unknown(k));
-      add(weight * discounted(rotation, deformed_rotation, damping, rigid->largest_spin), rotation_scale,
-          model.node_unknown(k) + 3);
+      const Vec3 translation_acceleration =
+          (rigid->DeformationRate(n, h, 0) - rigid->DeformationRate(n, h, 1)) / span_newer;
+      const Vec3 rotation_acceleration = (rigid->DeformationSpin(n, 0) - rigid->DeformationSpin(n, 1)) / span_newer;
+      add(weight * discounted(translation, deformed_translation, translation_acceleration, damping,
+                              rigid->largest_rate),
+          position_scale, model.node_unknown(k));
+      add(weight * discounted(rotation, deformed_rotation, rotation_acceleration, damping, rigid->largest_spin),
+          rotation_scale, model.node_unknown(k) + 3);
     } else {
       add(weight * translation.norm(), position_scale, model.node_unknown(k));
       add(weight * rotation.norm(), rotation_scale, model.node_unknown(k) + 3);
