@@ -199,6 +199,8 @@ void BeamElement::EvaluateStep(const StepContext& ctx, Field::Vector* forces, Fi
   StrainMemo* memo = WorkspaceIn<StrainMemo>(ctx);
   step.start_strains = StrainsAt(start, memo != nullptr ? &memo->start : nullptr);
   step.mid.emplace(shape_, mid, tangent ? Field::Order::kSecond : Field::Order::kFirst);
+  // The end strains of a first-order field are not kept: its rotation ratios are summed from a higher term and
+  // may differ in the last bits from the kStrains ones that the step's work and history read.
   if (tangent) {
     step.end.emplace(shape_, end, Field::Order::kFirst);
     for (int g = 0; g < shape_.num_points; ++g) step.end_strains[g] = step.end->strain(g);
