@@ -15,6 +15,7 @@
 /// mu sum_g w_g deps^T C deps / h.
 
 #include <array>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -47,6 +48,8 @@ class BeamElement : public Element {
   /// The strain change of the last accepted step at each Gauss point, for the scheme's dissipation (B13).
   int history_size() const override { return 6 * shape_.num_points; }
   void RecordHistory(const StepContext& ctx, Eigen::VectorXd* history) const override;
+  /// Keeps the strains of a step's start and of its last end configuration (StrainMemo).
+  std::unique_ptr<ElementWorkspace> MakeWorkspace() const override;
 
   /// One section of the element at a state, interpolated with the shape functions (B1)-(B2).
   struct Section {
@@ -93,6 +96,14 @@ class BeamElement : public Element {
   // K += d/dd [value W d / (d^T W d)] given d value / dd: the gap correction of (B5).
   void AddCorrectionDerivative(const StepFields& step, double value, const Field::Vector& derivative,
                                Field::Matrix* K) const;
+
+  // The element's workspace: the strains of the configurations it was last asked about at a step's start and
+  // end, which every evaluation of a step shares (the start) and its work and history read again (the end).
+  struct StrainMemo;
+  struct KeptStrains;
+  // The strains (Order kStrains) at nodes: those kept, when kept for these very nodes, else computed and kept in
+  // `kept` (if not null).
+  Field::PointVectors StrainsAt(const Field::Nodes& nodes, KeptStrains* kept) const;
 
   Field::Nodes AtState(const State& state) const;
   // The element's nodes at the start and the end of the step of ctx.

@@ -10,11 +10,13 @@
 /// the start of the step, R_f = R_i Exp(theta)); per joint variable its increment dq; the multipliers lambda.
 /// Residual rows of node and variable unknowns are generalised forces conjugate to those increments.
 
+#include <memory>
 #include <string>
 #include <vector>
 
 #include <Eigen/Core>
 
+#include "flexmbd/elements/element_workspace.hpp"
 #include "flexmbd/math/so3.hpp"
 #include "flexmbd/model/state.hpp"
 
@@ -103,6 +105,8 @@ struct StepContext {
   bool geometric_stiffness = false;
   /// Energy-decaying coefficient alpha of each element's own stretch, by Element::index() (null: none).
   const std::vector<double>* element_alpha = nullptr;
+  /// The elements' workspaces for their caches (null: elements compute everything afresh).
+  ElementWorkspaces* workspaces = nullptr;
   /// True when forces are evaluated at the end configuration (start moved to the end, theta = 0).
   bool at_end() const { return mode != AnalysisMode::kDynamic; }
   /// d(mid-step value)/d(increment): 1/2 with mid-step forces, 1 at the end configuration.
@@ -189,6 +193,9 @@ class Element {
   int first_state() const { return first_state_; }
   void set_first_state(int first) { first_state_ = first; }
 
+  /// A workspace of the element's own for caches (element_workspace.hpp); null: it keeps none.
+  virtual std::unique_ptr<ElementWorkspace> MakeWorkspace() const { return nullptr; }
+
   /// Position in Model::elements(), which indexes State::element_history and StepContext::element_alpha.
   int index() const { return index_; }
   /// Set once by the model builder.
@@ -198,6 +205,12 @@ class Element {
   /// The scheme's dissipation coefficient for this element's stretch in ctx (0 outside energy-decaying steps).
   double Alpha(const StepContext& ctx) const {
     return ctx.element_alpha != nullptr && ctx.mode == AnalysisMode::kDynamic ? (*ctx.element_alpha)[index_] : 0.0;
+  }
+
+  /// The element's workspace in ctx as made by MakeWorkspace (null when ctx carries none).
+  template <class Workspace>
+  Workspace* WorkspaceIn(const StepContext& ctx) const {
+    return ctx.workspaces != nullptr ? static_cast<Workspace*>(ctx.workspaces->of(index_)) : nullptr;
   }
 
   std::vector<int> unknowns_;

@@ -6,16 +6,21 @@
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 
+#include "flexmbd/math/so3_generic.hpp"
+
 namespace flexmbd {
 
 using Vec3 = Eigen::Vector3d;
 using Mat3 = Eigen::Matrix3d;
 
+// Skew and Axial are defined here, inline: the beam kernel calls them a few hundred times per element and
+// evaluation, and a call cost as much as the few operations inside.
+
 /// Skew-symmetric matrix with Skew(a) b = a x b.
-Mat3 Skew(const Vec3& a);
+inline Mat3 Skew(const Vec3& a) { return so3::SkewOf<double>(a); }
 
 /// Vector a with Skew(a) = (A - A^T) / 2.
-Vec3 Axial(const Mat3& A);
+inline Vec3 Axial(const Mat3& A) { return 0.5 * Vec3(A(2, 1) - A(1, 2), A(0, 2) - A(2, 0), A(1, 0) - A(0, 1)); }
 
 /// Exponential map: rotation by |theta| about theta/|theta| (Rodrigues).
 Mat3 Exp(const Vec3& theta);

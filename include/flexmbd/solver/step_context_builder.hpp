@@ -1,6 +1,7 @@
 #pragma once
 /// @file
-/// Turns a start State and a trial vector of unknowns into the StepContext that elements read.
+/// Turns a start State and a trial vector of unknowns into the StepContext that elements read, and keeps the
+/// elements' workspaces that its contexts carry.
 
 #include <vector>
 
@@ -15,6 +16,8 @@ class Model;
 class StepContextBuilder {
  public:
   explicit StepContextBuilder(const Model& model);
+  StepContextBuilder(const StepContextBuilder&) = delete;
+  StepContextBuilder& operator=(const StepContextBuilder&) = delete;
 
   /// A dynamic step from `start` over h; `unknowns` holds (node increments, dq, lambda).
   const StepContext& Dynamic(const State& start, const Eigen::VectorXd& unknowns, double h,
@@ -66,6 +69,7 @@ class StepContextBuilder {
   std::vector<double> variable_alpha_;
   std::vector<double> element_alpha_;
   const std::vector<EffectState>* effect_modes_ = nullptr;
+  ElementWorkspaces workspaces_;
   StepContext ctx_;
 };
 

@@ -17,12 +17,47 @@ static_assert(Field::kMaxDofs <= kMaxRatePartUnknowns, "a beam's rate parts fit 
 // What a dynamic step's forces need: the configurations at the start, middle and end of the step and the
 // increments d, with the metric W of the discrete gradient (B5).
 struct BeamElement::StepFields {
-  std::optional<Field> start, mid, end;
+  Field::PointVectors start_strains, end_strains;
+  std::optional<Field> mid, end;  // end: with the tangent only
   Field::Vector d, Wd, W;      // increments, W d, diag(W)
   double norm = 0;             // d^T W d
   double strain_round_off = 0;  // StrainRoundOff of the step
   Field::IncrementMap to_mid, to_end;
 };
+
+struct BeamElement::KeptStrains {
+  Field::Nodes nodes;
+  Field::PointVectors strains;
+  int num_nodes = 0;  // 0: none kept yet
+
+  bool Holds(const Field::Nodes& c, int n) const {
+    if (n != num_nodes) return false;
+    for (int k = 0; k < n; ++k) {
+      if (c.x[k] != nodes.x[k] || c.R[k] != nodes.R[k]) return false;
+    }
+    return true;
+  }
+};
+
+struct BeamElement::StrainMemo : ElementWorkspace {
+  KeptStrains start, end;
+};
+
+std::unique_ptr<ElementWorkspace> BeamElement::MakeWorkspace() const { return std::make_unique<StrainMemo>(); }
+
+BeamElement::Field::PointVectors BeamElement::StrainsAt(const Field::Nodes& nodes, KeptStrains* kept) const {
+  const int n = shape_.num_nodes();
+  if (kept != nullptr && kept->Holds(nodes, n)) return kept->strains;
+  const Field field(shape_, nodes, Field::Order::kStrains);
+  Field::PointVectors strains;
+  for (int g = 0; g < shape_.num_points; ++g) strains[g] = field.strain(g);
+  if (kept != nullptr) {
+    kept->nodes = nodes;
+    kept->strains = strains;
+    kept->num_nodes = n;
+  }
+  return strains;
+}
 
 BeamElement::BeamElement(std::string name, std::vector<int> nodes, double length,
                          const Eigen::Matrix<double, 6, 6>& stiffness, double damping)
@@ -161,9 +196,17 @@ void BeamElement::EvaluateStep(const StepContext& ctx, Field::Vector* forces, Fi
   step.Wd = step.W.cwiseProduct(step.d);
   step.norm = step.d.dot(step.Wd);
   step.strain_round_off = StrainRoundOff(ctx);
-  step.start.emplace(shape_, start, Field::Order::kStrains);
+  StrainMemo* memo = WorkspaceIn<StrainMemo>(ctx);
+  step.start_strains = StrainsAt(start, memo != nullptr ? &memo->start : nullptr);
   step.mid.emplace(shape_, mid, tangent ? Field::Order::kSecond : Field::Order::kFirst);
-  step.end.emplace(shape_, end, tangent ? Field::Order::kFirst : Field::Order::kStrains);
+  // The end strains of a first-order field are not kept: its rotation ratios are summed from a higher term and
+  // may differ in the last bits from the kStrains ones that the step's work and history read.
+  if (tangent) {
+    step.end.emplace(shape_, end, Field::Order::kFirst);
+    for (int g = 0; g < shape_.num_points; ++g) step.end_strains[g] = step.end->strain(g);
+  } else {
+    step.end_strains = StrainsAt(end, memo != nullptr ? &memo->end : nullptr);
+  }
   const StepStress stress = StepStresses(ctx, step);
   *forces += stress.forces;
   if (!tangent) return;
@@ -200,9 +243,9 @@ BeamElement::StepStress BeamElement::StepStresses(const StepContext& ctx, const 
   StepStress stress;
   const Field::PointVectors mid_rates = mid.StrainDirectionalDerivatives(step.d);  // B_mid d
   for (int g = 0; g < mid.num_points(); ++g) {
-    const Vec6 de = step.end->strain(g) - step.start->strain(g);
+    const Vec6 de = step.end_strains[g] - step.start_strains[g];
     stress.rate[g] = (0.5 + viscosity) * weighted_stiffness_[g];
-    stress.stress[g] = weighted_stiffness_[g] * (0.5 * (step.start->strain(g) + step.end->strain(g)) + viscosity * de);
+    stress.stress[g] = weighted_stiffness_[g] * (0.5 * (step.start_strains[g] + step.end_strains[g]) + viscosity * de);
     if (alpha > 0) stress.stress[g] -= alpha * (weighted_stiffness_[g] * LaggedStrainChange(ctx, g));
     stress.gap[g] = de - mid_rates[g];
     // A gap at the round-off of the strains would be divided by the squared increments into forces that
@@ -285,9 +328,11 @@ void BeamElement::RecordHistory(const StepContext& ctx, Eigen::VectorXd* history
 BeamElement::Field::PointVectors BeamElement::StrainChanges(const StepContext& ctx) const {
   Field::Nodes start, end;
   StepEnds(ctx, &start, &end);
-  const Field at_start(shape_, start, Field::Order::kStrains), at_end(shape_, end, Field::Order::kStrains);
+  StrainMemo* memo = WorkspaceIn<StrainMemo>(ctx);
+  const Field::PointVectors at_start = StrainsAt(start, memo != nullptr ? &memo->start : nullptr);
+  const Field::PointVectors at_end = StrainsAt(end, memo != nullptr ? &memo->end : nullptr);
   Field::PointVectors de;
-  for (int g = 0; g < shape_.num_points; ++g) de[g] = at_end.strain(g) - at_start.strain(g);
+  for (int g = 0; g < shape_.num_points; ++g) de[g] = at_end[g] - at_start[g];
   return de;
 }
 

@@ -12,12 +12,6 @@ namespace {
 constexpr double kSincSeriesLimit = 1.0e-4;
 }  // namespace
 
-Mat3 Skew(const Vec3& a) { return so3::SkewOf<double>(a); }
-
-Vec3 Axial(const Mat3& A) {
-  return 0.5 * Vec3(A(2, 1) - A(1, 2), A(0, 2) - A(2, 0), A(1, 0) - A(0, 1));
-}
-
 IncrementMaps IncrementMapsOf(const Vec3& theta) {
   const double x2 = theta.squaredNorm();
   double sin_ratio, cos_ratio;

@@ -4,7 +4,7 @@
 
 namespace flexmbd {
 
-StepContextBuilder::StepContextBuilder(const Model& model) : model_(model) {
+StepContextBuilder::StepContextBuilder(const Model& model) : model_(model), workspaces_(model.elements()) {
   nodes_.resize(model.num_nodes());
   variables_.resize(model.num_variables());
   states_.resize(model.num_element_states());
@@ -12,6 +12,7 @@ StepContextBuilder::StepContextBuilder(const Model& model) : model_(model) {
   ctx_.element_states = &states_;
   ctx_.variables = &variables_;
   ctx_.lambda = &lambda_;
+  ctx_.workspaces = &workspaces_;
   ctx_.gravity = model.solver().gravity;
 }
 
