@@ -55,7 +55,11 @@ class FrictionEffect : public ModalEffect {
   /// The sticking threshold v0 in force at a state: min(1%, 100 error_tol) of the largest slip speed seen (at least
   /// 1e-6 m/s), or the given v0 where that is lower [m/s].
   double StickingSpeed(const EffectState& effect) const;
-  FrictionSample Sample(const State& state) const;
+  /// The joint's friction at `state`, which the step `step` led to (a static context at a state no step led to):
+  /// whether it is stuck at that instant, and the friction and normal forces of the step, those its work was booked
+  /// with. At the end of a step that slid to a stop the force is the kinetic one that stopped it, not the multiplier
+  /// of the stick that begins there.
+  FrictionSample Sample(const State& state, const StepContext& step) const;
   int variable() const { return variable_; }
   /// The sticking constraint's multiplier (its row among the constraint rows); -1 for the regularised law.
   int stick_multiplier() const { return stick_multiplier_; }
@@ -74,6 +78,9 @@ class FrictionEffect : public ModalEffect {
   StepForce Evaluate(const StepContext& ctx) const;
   // The sticking constraint's row, q_f - q_i - h qdot_i / 2 [rad or m].
   double StickingResidual(const StepContext& ctx) const;
+  // The friction force on q over the step ctx: the sticking multiplier, the law's force, or 0 where friction acts
+  // not (held, static) [N m or N].
+  double AppliedForce(const StepContext& ctx) const;
   // Energy the friction dissipates over the step ctx [J].
   double StepDissipation(const StepContext& ctx) const;
   // N and dN/d(joint position multipliers) from the multipliers and the motion axis in W.

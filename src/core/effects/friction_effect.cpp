@@ -193,11 +193,14 @@ double FrictionEffect::StickingResidual(const StepContext& ctx) const {
   return q.q_f - q.q_i - 0.5 * ctx.h * q.qdot_i;
 }
 
+double FrictionEffect::AppliedForce(const StepContext& ctx) const {
+  const bool sticking = Constrained(ctx) && stick_multiplier_ >= 0;
+  return sticking ? -(*ctx.lambda)[stick_multiplier_] : Evaluate(ctx).force;
+}
+
 double FrictionEffect::StepDissipation(const StepContext& ctx) const {
   const VariableStep& q = (*ctx.variables)[variable_];
-  const bool sticking = Constrained(ctx) && stick_multiplier_ >= 0;
-  const double force = sticking ? -(*ctx.lambda)[stick_multiplier_] : Evaluate(ctx).force;
-  return -force * (q.q_f - q.q_i);
+  return -AppliedForce(ctx) * (q.q_f - q.q_i);
 }
 
 void FrictionEffect::AddStepWork(const StepContext& ctx, StepWork* work) const {
@@ -332,21 +335,15 @@ void FrictionEffect::Commit(const StepContext& ctx, const State& end, EffectStat
   if (effect->mode == kSticking && ctx.start->effects[slot()].mode != kSticking) ++effect->events;
 }
 
-FrictionSample FrictionEffect::Sample(const State& state) const {
+FrictionSample FrictionEffect::Sample(const State& state, const StepContext& step) const {
   FrictionSample s;
   const EffectState& effect = state.effects[slot()];
   Vec3 unused;
-  s.normal_force = NormalForce(state.lambda.segment<3>(joint_multiplier_), AxisW(state), &unused);
+  s.normal_force = NormalForce(step.lambda->segment<3>(joint_multiplier_), AxisW(*step.start), &unused);
   s.slip_velocity = spec_.radius * state.qdot[variable_];
   s.work = effect.work;
-  if (spec_.law == FrictionSpec::Law::kRegularised) {
-    double unused_rate = 0;
-    s.torque = -Bound(spec_.mu_k, s.normal_force) * RegularisedFactor(s.slip_velocity, &unused_rate);
-    return s;
-  }
-  s.sticking = effect.mode == kSticking;
-  if (Held(state.effects)) return s;  // a stop or the other constraints hold the joint: no friction torque
-  s.torque = s.sticking ? -state.lambda[stick_multiplier_] : -Bound(spec_.mu_k, s.normal_force) * Direction(effect.mode);
+  s.sticking = spec_.law != FrictionSpec::Law::kRegularised && effect.mode == kSticking;
+  s.torque = AppliedForce(step);
   return s;
 }
 

@@ -64,7 +64,7 @@ OutputSample MakeSample(const Model& model, const State& state, const StepContex
     s.reaction_moment.push_back(joint->num_constraints() == 6 ? Vec3(-lambda.tail<3>()) : Vec3::Zero());
   }
   for (const JointStop* stop : model.stop_effects()) s.stops.push_back(stop->Sample(state));
-  for (const FrictionEffect* friction : model.friction_effects()) s.friction.push_back(friction->Sample(state));
+  for (const FrictionEffect* friction : model.friction_effects()) s.friction.push_back(friction->Sample(state, ctx));
   const EnergyTally energy = StateEnergy(model, state);
   s.kinetic = energy.kinetic;
   s.potential = energy.potential;
@@ -100,10 +100,17 @@ OutputSample Interpolate(const OutputSample& a, const OutputSample& b, double t)
     s.reaction_force_W[k] = mix(a.reaction_force_W[k], b.reaction_force_W[k]);
     s.reaction_moment[k] = mix(a.reaction_moment[k], b.reaction_moment[k]);
   }
-  // Contacts and sticking are events, not smooth signals: the nearer sample's records stand.
-  if (u < 0.5) {
-    s.stops = a.stops;
-    s.friction = a.friction;
+  // Contacts are events, not smooth signals: the nearer sample's records stand.
+  if (u < 0.5) s.stops = a.stops;
+  // Inside a step friction has the step's forces (b's) and is stuck where it is stuck at both ends.
+  if (u < 1.0) {
+    for (size_t k = 0; k < s.friction.size(); ++k) {
+      const FrictionSample &x = a.friction[k], &y = b.friction[k];
+      FrictionSample& z = s.friction[k];
+      z.sticking = x.sticking && y.sticking;
+      z.slip_velocity = (1.0 - u) * x.slip_velocity + u * y.slip_velocity;
+      z.work = (1.0 - u) * x.work + u * y.work;
+    }
   }
   s.kinetic = (1.0 - u) * a.kinetic + u * b.kinetic;
   s.potential = (1.0 - u) * a.potential + u * b.potential;
