@@ -65,6 +65,19 @@ TEST(IsolatedRun, EndlessLoopIsAHang) {
   EXPECT_EQ(isolated.termination, Termination::kTimedOut);
 }
 
+// The limit is CPU time: a child that waits (as one at low priority on a busy machine does) is not a hang. Before,
+// a wall-clock limit reported the antenna with friction, 0.3 s alone, as a hang in a campaign at nice 19 beside
+// two builds.
+TEST(IsolatedRun, WaitingIsNotAHang) {
+  const IsolatedResult isolated = RunIsolated(
+      [] {
+        sleep(2);
+        return TargetResult{};
+      },
+      OneSecond());
+  EXPECT_EQ(isolated.termination, Termination::kReturned);
+}
+
 TEST(IsolatedRun, ExitWithoutResultIsReported) {
   const IsolatedResult isolated = RunIsolated(
       [] {

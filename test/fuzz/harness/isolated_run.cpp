@@ -2,6 +2,7 @@
 
 #include <fcntl.h>
 #include <sys/resource.h>
+#include <sys/time.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -47,7 +48,9 @@ std::string ReadAll(int fd) {
     const rlimit limit{bytes, bytes};
     setrlimit(RLIMIT_AS, &limit);
   }
-  alarm(limits.seconds);
+  const itimerval cpu_limit{{0, 0}, {static_cast<time_t>(limits.seconds), 0}};
+  setitimer(ITIMER_PROF, &cpu_limit, nullptr);
+  alarm(kWallClockFactor * limits.seconds);
   const TargetResult result = work();
   // one byte of outcome, then the message; _exit skips the parent's atexit handlers and static destructors
   WriteAll(out, std::string(1, static_cast<char>(result.outcome)) + result.message);
@@ -74,7 +77,8 @@ IsolatedResult RunIsolated(const std::function<TargetResult()>& work, const Isol
   IsolatedResult isolated;
   if (WIFSIGNALED(status)) {
     isolated.signal = WTERMSIG(status);
-    isolated.termination = isolated.signal == SIGALRM ? Termination::kTimedOut : Termination::kCrashed;
+    const bool timed_out = isolated.signal == SIGPROF || isolated.signal == SIGALRM;
+    isolated.termination = timed_out ? Termination::kTimedOut : Termination::kCrashed;
   } else if (WEXITSTATUS(status) != 0 || data.empty()) {
     isolated.termination = Termination::kExited;
     isolated.exit_code = WEXITSTATUS(status);
@@ -83,6 +87,23 @@ IsolatedResult RunIsolated(const std::function<TargetResult()>& work, const Isol
     isolated.result.message = data.substr(1);
   }
   return isolated;
+}
+
+void ExtendTimeLimit(unsigned factor) {
+  itimerval cpu_limit{};
+  getitimer(ITIMER_PROF, &cpu_limit);
+  if (cpu_limit.it_value.tv_sec == 0 && cpu_limit.it_value.tv_usec == 0) return;  // no limit: not in a child
+  const long long micro = (cpu_limit.it_value.tv_sec * 1000000LL + cpu_limit.it_value.tv_usec) * factor;
+  cpu_limit.it_value = {static_cast<time_t>(micro / 1000000), static_cast<suseconds_t>(micro % 1000000)};
+  setitimer(ITIMER_PROF, &cpu_limit, nullptr);
+  const unsigned wall_left = alarm(0);
+  if (wall_left > 0) alarm(wall_left * factor);
+}
+
+double CpuSecondsLeft() {
+  itimerval cpu_limit{};
+  getitimer(ITIMER_PROF, &cpu_limit);
+  return cpu_limit.it_value.tv_sec + 1e-6 * cpu_limit.it_value.tv_usec;
 }
 
 }  // namespace fuzz

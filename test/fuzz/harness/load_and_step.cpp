@@ -1,7 +1,5 @@
 #include "load_and_step.hpp"
 
-#include <unistd.h>
-
 #include <algorithm>
 #include <typeinfo>
 
@@ -14,6 +12,7 @@
 #include "flexmbd/solver/eigen_analysis.hpp"
 #include "flexmbd/solver/steady_rotation.hpp"
 #include "flexmbd/solver/simulation.hpp"
+#include "isolated_run.hpp"
 #include "param_tree_from_yaml.hpp"
 
 namespace flexmbd {
@@ -31,17 +30,11 @@ ModelSpec Load(const FuzzInput& input) {
   return LoadModelSpecFromStrings(input.urdf, kUrdfParamName, tree, kParamNamespace);
 }
 
-// The alarm of RunIsolated's child, extended for the model's size; none in a replay in-process.
-void AllowTimeForSize(const Model& model) {
-  const unsigned left = alarm(0);
-  if (left > 0) alarm(left * TimeLimitFactor(model.num_unknowns()));
-}
-
 void Run(const FuzzInput& input) {
   const Model model = BuildModel(Load(input));
   if (input.channel == Channel::kParamTree) ros::UrdfFrameTree(input.urdf, model);
   if (model.num_unknowns() > kLargestRunModel) return;
-  AllowTimeForSize(model);
+  ExtendTimeLimit(TimeLimitFactor(model.num_unknowns()));  // the child's limit, for the model's size
   const auto no_output = [](const OutputSample&) {};
   switch (model.solver().analysis) {
     case SolverSpec::Analysis::kEigen: {

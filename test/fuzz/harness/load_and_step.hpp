@@ -40,7 +40,7 @@ struct TargetResult {
 
 /// Loads `input` through its channel, builds the model and runs it (static equilibrium, eigen-analysis, or
 /// kStepsRun steps of a dynamic run; not beyond kLargestRunModel unknowns), with no output files. Under a time
-/// limit (alarm) it extends the limit by TimeLimitFactor once the model is built. Catches every exception.
+/// limit it extends the limit by TimeLimitFactor once the model is built. Catches every exception.
 TargetResult LoadAndStep(const FuzzInput& input);
 
 }  // namespace fuzz
