@@ -1,7 +1,8 @@
-// Every test process writes its files in a directory of its own under TEST_TMPDIR. The shards of a layer run side
-// by side, and a case that tests in two shards share (a run made once per process) was written to the same file
-// by both: one shard then read the other's file half rewritten (WingAileronLco under the sanitizers). Without
-// TEST_TMPDIR (a developer running one binary) files go to /tmp as gtest's own default.
+// Every test process (a shard of a gtest layer, a rostest's test node) writes its files in a directory of its own
+// under TEST_TMPDIR. Shards and rostests run side by side, and a case that tests in two shards share (a run made
+// once per process) was written to the same file by both: one shard then read the other's file half rewritten
+// (WingAileronLco under the sanitizers). Without TEST_TMPDIR (a developer running one binary) files go to /tmp,
+// gtest's own default.
 
 #include <sys/stat.h>
 #include <unistd.h>
