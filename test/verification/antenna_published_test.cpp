@@ -14,6 +14,7 @@
 #include "flexmbd/math/time_function.hpp"
 #include "flexmbd/solver/simulation.hpp"
 #include "friction_bound.hpp"
+#include "sample_error.hpp"
 
 namespace flexmbd {
 namespace antenna_published_test {
@@ -152,8 +153,8 @@ TEST(AntennaPublished, Case0WholeRunWithin2000StepsAndOnePercentOfConvergedPeaks
 // steps than fixed steps of its accuracy. The error is bench/work_precision's: the largest difference of the four
 // hinge angles over the 20 Hz samples from a converged run, relative to the largest angle (B2's, 0.19 rad).
 struct HingeRun {
-  std::vector<std::array<double, 4>> angles;  ///< phi_1..phi_4 at each sample [rad]
-  long steps = 0;                             ///< attempted (accepted and rejected)
+  std::vector<double> angles;  ///< phi_1..phi_4 of each sample, one sample after another [rad]
+  long steps = 0;              ///< attempted (accepted and rejected)
 };
 
 HingeRun RunHinges(const ModelSpec& spec) {
@@ -161,21 +162,14 @@ HingeRun RunHinges(const ModelSpec& spec) {
   Simulation simulation(model);
   HingeRun run;
   simulation.Run([&](const OutputSample& s) {
-    run.angles.push_back({s.position[0], s.position[1], s.position[2], s.position[3]});
+    run.angles.insert(run.angles.end(), s.position.data(), s.position.data() + 4);
   });
   run.steps = simulation.statistics().accepted + simulation.statistics().rejected();
   return run;
 }
 
 double HingeError(const HingeRun& run, const HingeRun& reference) {
-  double error = 0, scale = 0;
-  for (size_t k = 0; k < reference.angles.size(); ++k) {
-    for (size_t j = 0; j < 4; ++j) {
-      error = std::max(error, std::abs(run.angles[k][j] - reference.angles[k][j]));
-      scale = std::max(scale, std::abs(reference.angles[k][j]));
-    }
-  }
-  return error / scale;
+  return test::RelativeSampleError(run.angles, reference.angles);
 }
 
 HingeRun Case0WithTolerance(double error_tol) {
