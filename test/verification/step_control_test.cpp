@@ -13,6 +13,7 @@
 #include "flexmbd/common/error.hpp"
 #include "flexmbd/io/config_loader.hpp"
 #include "flexmbd/solver/simulation.hpp"
+#include "sample_error.hpp"
 
 namespace flexmbd {
 namespace step_control_test {
@@ -166,12 +167,7 @@ BeamRun RunBeamTip(const ModelSpec& spec, int station = 0) {
 }
 
 double TipError(const BeamRun& run, const BeamRun& reference) {
-  double error = 0, scale = 0;
-  for (size_t k = 0; k < reference.tip.size(); ++k) {
-    error = std::max(error, std::abs(run.tip[k] - reference.tip[k]));
-    scale = std::max(scale, std::abs(reference.tip[k]));
-  }
-  return error / scale;
+  return test::RelativeSampleError(run.tip, reference.tip);
 }
 
 ModelSpec BeamArm(double error_tol) {
