@@ -317,13 +317,18 @@ TEST(ConnerSection, FreeplayLimitCycleAmplitudeScalesWithTheGap) {
     // Energy books as FreeMotion: no dissipation (restitution 1), the air's work balances the rest.
     EXPECT_LT(c->books, 1.0e-2 * c->throughput);
   }
-  // Amplitude proportional to the gap: measured flap RMS / gap 0.944, 0.946, 0.955 (1.2% apart) and plunge within
-  // 1.7%; 3% allows the 2% window-to-window spread of the irregular cycle.
-  constexpr double kScaling = 0.03;
-  EXPECT_NEAR(half.flap.rms * 2 / given.flap.rms, 1.0, kScaling);
-  EXPECT_NEAR(twice.flap.rms / 2 / given.flap.rms, 1.0, kScaling);
-  EXPECT_NEAR(half.plunge.rms * 2 / given.plunge.rms, 1.0, kScaling);
-  EXPECT_NEAR(twice.plunge.rms / 2 / given.plunge.rms, 1.0, kScaling);
+  // Amplitude proportional to the gap, within what the irregular cycle gives a 30 s window anyway. The given gap
+  // started at flap rates of 1.4 to 3.0 rad/s (7 runs) gave flap RMS 0.03455 to 0.03519 rad (1.9% apart) and plunge
+  // RMS 0.864e-3 to 0.908e-3 m (5.1% apart): the plunge, not locked to the flap, drifts more from window to window.
+  // Bounds of about 1.5 times those spreads (measured here: flap 0.4% and 1.2%, plunge 0.5% and 0.7%; plunge 4.5%
+  // in a build with FMA, whose round-off changes the trajectory). An eighth start (2.4 rad/s) met an episode of
+  // about 15 s with the flap inside its gap, its window's RMS 25% lower (docs/validation.md): no bound on a 30 s
+  // window covers such an episode, so a failure by that margin must be checked for one first.
+  constexpr double kFlapScaling = 0.03, kPlungeScaling = 0.08;
+  EXPECT_NEAR(half.flap.rms * 2 / given.flap.rms, 1.0, kFlapScaling);
+  EXPECT_NEAR(twice.flap.rms / 2 / given.flap.rms, 1.0, kFlapScaling);
+  EXPECT_NEAR(half.plunge.rms * 2 / given.plunge.rms, 1.0, kPlungeScaling);
+  EXPECT_NEAR(twice.plunge.rms / 2 / given.plunge.rms, 1.0, kPlungeScaling);
   // The frequency does not depend on the gap (measured 4.749, 4.739, 4.724 Hz): within two 1/30 Hz bins.
   constexpr double kBins = 2.0 / 30.0;
   EXPECT_NEAR(half.flap.frequency_hz, given.flap.frequency_hz, kBins);
