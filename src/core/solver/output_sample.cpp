@@ -135,15 +135,12 @@ OutputSample Interpolate(const OutputSample& a, const OutputSample& b, double t)
   }
   for (size_t k = 0; k < s.aero_sections.size(); ++k) s.aero_sections[k] = Mix(a.aero_sections[k], b.aero_sections[k], u);
   for (size_t k = 0; k < s.strip_stations.size(); ++k) s.strip_stations[k] = Mix(a.strip_stations[k], b.strip_stations[k], u);
+  auto blend = [u](double x, double y) { return (1.0 - u) * x + u * y; };
   for (size_t k = 0; k < s.aero_rotors.size(); ++k) {
     const AeroRotorSample &x = a.aero_rotors[k], &y = b.aero_rotors[k];
-    AeroRotorSample& z = s.aero_rotors[k];
-    z.inflow = (1.0 - u) * x.inflow + u * y.inflow;
-    z.thrust = (1.0 - u) * x.thrust + u * y.thrust;
-    z.inflow_cos = (1.0 - u) * x.inflow_cos + u * y.inflow_cos;
-    z.inflow_sin = (1.0 - u) * x.inflow_sin + u * y.inflow_sin;
-    z.moment_cos = (1.0 - u) * x.moment_cos + u * y.moment_cos;
-    z.moment_sin = (1.0 - u) * x.moment_sin + u * y.moment_sin;
+    s.aero_rotors[k] = {blend(x.inflow, y.inflow),         blend(x.thrust, y.thrust),
+                        blend(x.inflow_cos, y.inflow_cos), blend(x.inflow_sin, y.inflow_sin),
+                        blend(x.moment_cos, y.moment_cos), blend(x.moment_sin, y.moment_sin)};
   }
   return s;
 }
