@@ -62,7 +62,14 @@ CsvSink::CsvSink(const Model& model, const std::string& path) : path_(path), fil
     for (const char* column : {"lift", "moment", "hinge_moment"}) out_ << prefix << column;
     for (int k = 0; k < station.inner->num_states(); ++k) out_ << prefix << station.inner->StateName(k);
   }
-  for (const RotorInflow* rotor : model.aero_rotors()) out_ << ",aero." << rotor->name() << ".inflow,aero." << rotor->name() << ".thrust";
+  for (const RotorInflow* rotor : model.aero_rotors()) {
+    out_ << ",aero." << rotor->name() << ".inflow,aero." << rotor->name() << ".thrust";
+    harmonic_rotors_.push_back(rotor->harmonic());
+    if (!rotor->harmonic()) continue;
+    for (const char* column : {"inflow_cos", "inflow_sin", "moment_cos", "moment_sin"}) {
+      out_ << ",aero." << rotor->name() << '.' << column;
+    }
+  }
   out_ << ",energy.kinetic,energy.potential,energy.total,energy.external_work,energy.dissipated,"
           "energy.numerical_dissipation,solver.dt,solver.iterations\n";
   if (!out_) ThrowWriteError();
@@ -97,8 +104,11 @@ void CsvSink::Write(const OutputSample& s) {
       for (int k = 0; k < a.inflow.size(); ++k) PutField(out_, a.inflow[k]);
     }
   }
-  for (const AeroRotorSample& rotor : s.aero_rotors) {
+  for (size_t k = 0; k < s.aero_rotors.size(); ++k) {
+    const AeroRotorSample& rotor = s.aero_rotors[k];
     for (double value : {rotor.inflow, rotor.thrust}) PutField(out_, value);
+    if (!harmonic_rotors_[k]) continue;
+    for (double value : {rotor.inflow_cos, rotor.inflow_sin, rotor.moment_cos, rotor.moment_sin}) PutField(out_, value);
   }
   for (double value : {s.kinetic, s.potential, s.total(), s.external_work, s.dissipated, s.numerical_dissipation, s.dt}) {
     PutField(out_, value);

@@ -12,7 +12,7 @@ namespace flexmbd {
 namespace io {
 namespace {
 const std::vector<std::string> kAeroKeys = {"sections", "strips", "rotors", "free_stream", "density", "gust"};
-const std::vector<std::string> kRotorKeys = {"strips", "radius", "axis"};
+const std::vector<std::string> kRotorKeys = {"strips", "radius", "axis", "inflow", "center"};
 const std::vector<std::string> kStripKeys = {"beam",        "semichord",     "a",   "chord_axis",
                                              "normal_axis", "inflow_states", "flap"};
 const std::vector<std::string> kFlapKeys = {"beam", "c"};
@@ -129,7 +129,7 @@ AeroStripSpec ReadStrip(const Field& entry, const std::string& name, const UrdfM
   return strip;
 }
 
-// A rotor's uniform inflow (docs/config.md, "aero"); its strips are checked against aero.strips when the model is
+// A rotor's inflow (docs/config.md, "aero"); its strips are checked against aero.strips when the model is
 // built.
 AeroRotorSpec ReadRotor(const Field& entry, const std::string& name) {
   CheckKeys(entry, kRotorKeys);
@@ -153,6 +153,13 @@ AeroRotorSpec ReadRotor(const Field& entry, const std::string& name) {
     }
     rotor.axis.normalize();
   }
+  if (entry.Child("inflow").present()) {
+    rotor.inflow = ReadEnum<AeroRotorSpec::Inflow>(
+        entry.Child("inflow"), "rotor inflow",
+        {{"uniform", AeroRotorSpec::Inflow::kUniform}, {"harmonic", AeroRotorSpec::Inflow::kHarmonic}});
+  }
+  OverlayVec3(entry, "center", Quantity{"a disc centre in the world frame (on the shaft axis)", Bound::kAny, "m"},
+              &rotor.center);
   return rotor;
 }
 

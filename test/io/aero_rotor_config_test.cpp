@@ -1,5 +1,6 @@
 // `aero.rotors` (src/io/yaml_aero.cpp, docs/config.md "aero"): a rotor's uniform inflow read from YAML with its
-// defaults, one inflow state whose unknown the blades' strips share, and the messages of bad input. Reference: the
+// defaults, one inflow state whose unknown the blades' strips share, the harmonic inflow's three, and the messages
+// of bad input. Reference: the
 // values written in the inline documents below and config/goland_wing/goland_wing.urdf (its wing as a blade).
 
 #include <gtest/gtest.h>
@@ -28,6 +29,8 @@ TEST(AeroRotorConfig, RotorWithDefaultsSharesOneInflowStateWithItsStrips) {
   EXPECT_EQ(r.strips, std::vector<std::string>{"blade"});
   EXPECT_EQ(r.radius, 6.5);
   EXPECT_EQ(r.axis, Vec3::UnitZ());
+  EXPECT_EQ(r.inflow, AeroRotorSpec::Inflow::kUniform);
+  EXPECT_EQ(r.center, Vec3::Zero());
   // Seven strips of two states each, then the rotor's inflow, which every strip reads as its last unknown.
   const Model model = BuildModel(spec);
   ASSERT_EQ(model.aero_rotors().size(), 1u);
@@ -38,12 +41,33 @@ TEST(AeroRotorConfig, RotorWithDefaultsSharesOneInflowStateWithItsStrips) {
   for (const BeamStripAero* strip : model.aero_strips()) EXPECT_EQ(strip->unknowns().back(), inflow);
 }
 
+TEST(AeroRotorConfig, HarmonicRotorSharesThreeInflowStatesWithItsStrips) {
+  const ModelSpec spec = LoadRotor("strips: [blade], radius: 6.5, inflow: harmonic, center: [1, -2, 0.5]");
+  const AeroRotorSpec& r = spec.aero_rotors.at(0);
+  EXPECT_EQ(r.inflow, AeroRotorSpec::Inflow::kHarmonic);
+  EXPECT_EQ(r.center, Vec3(1.0, -2.0, 0.5));
+  // Seven strips of two states each, then nu_0, nu_c, nu_s, the last three unknowns of every strip.
+  const Model model = BuildModel(spec);
+  EXPECT_EQ(model.num_element_states(), 17);
+  const char* names[] = {"rotor main nu", "rotor main nu_c", "rotor main nu_s"};
+  for (int k = 0; k < 3; ++k) {
+    const int unknown = model.element_state_unknown(14 + k);
+    EXPECT_EQ(model.DescribeUnknown(unknown), names[k]);
+    for (const BeamStripAero* strip : model.aero_strips()) EXPECT_EQ(strip->unknowns().end()[k - 3], unknown);
+  }
+}
+
 TEST(AeroRotorConfig, AxisIsNormalised) {
   EXPECT_EQ(LoadRotor("strips: [blade], radius: 6.5, axis: [0, 0, -2]").aero_rotors.at(0).axis, -Vec3::UnitZ());
 }
 
 TEST(AeroRotorConfig, BadKeysAndValuesAreRejected) {
-  EXPECT_CONFIG_ERROR(LoadRotor("strips: [blade], radius: 6.5, hub: spin"), "test.yaml: aero.rotors.main.hub: unknown key; valid keys are: strips, radius, axis");
+  EXPECT_CONFIG_ERROR(LoadRotor("strips: [blade], radius: 6.5, hub: spin"), "test.yaml: aero.rotors.main.hub: unknown key; valid keys are: strips, radius, axis, inflow, center");
+  EXPECT_CONFIG_ERROR(LoadRotor("strips: [blade], radius: 6.5, inflow: skewed"),
+                      "test.yaml: aero.rotors.main.inflow: 'skewed' is not a valid rotor inflow; expected one of "
+                      "uniform, harmonic");
+  EXPECT_CONFIG_ERROR(LoadRotor("strips: [blade], radius: 6.5, center: [0, 0]"),
+                      "test.yaml: aero.rotors.main.center: [0, 0] has 2 entries; expected [x, y, z], a disc centre");
   EXPECT_CONFIG_ERROR(LoadRotor("strips: [blade]"), "test.yaml: aero.rotors.main: missing key 'radius'");
   EXPECT_CONFIG_ERROR(LoadRotor("radius: 6.5"), "test.yaml: aero.rotors.main: missing key 'strips'");
   EXPECT_CONFIG_ERROR(LoadRotor("strips: [], radius: 6.5"),

@@ -105,8 +105,10 @@ TEST(StripTangent, FlapEndPointStiffnessAndRatePartsMatchDifferences) {
 }
 
 // The Goland wing made the blade of a rotor whose shaft leans off every axis (docs/theory.md, (A13)): the strip
-// reads the rotor's inflow (the last element state) and adds its thrust to the inflow's row.
-Strip RotorStrip() {
+// reads the rotor's inflow (the last element state) and adds its thrust to the inflow's row. With the harmonic
+// inflow (A14) it reads the three states at its place, weighted by its position relative to a centre off every
+// axis, and adds its thrust and moments to their rows.
+Strip RotorStrip(AeroRotorSpec::Inflow inflow = AeroRotorSpec::Inflow::kUniform) {
   const std::string dir = std::string(FLEXMBD_SOURCE_DIR) + "/config/goland_wing/";
   ModelSpec spec = LoadModelSpec(dir + "goland_wing.urdf", dir + "flutter_below.yaml");
   AeroRotorSpec rotor;
@@ -114,6 +116,8 @@ Strip RotorStrip() {
   rotor.strips = {spec.aero_strips.at(0).name};
   rotor.radius = 6.0;
   rotor.axis = Vec3(0.1, -0.2, 1.0).normalized();
+  rotor.inflow = inflow;
+  rotor.center = Vec3(-0.7, 1.3, 0.4);
   spec.aero_rotors.push_back(rotor);
   return Shaken(spec, 5);
 }
@@ -130,6 +134,19 @@ TEST(StripTangent, RotorBladeMidStepSchemeTangentMatchesDifferences) {
 // The rotor's own element has no acceleration part (M = 0), which the end-point check cannot scale by: its
 // stiffness and rate parts are checked together in the mid-step scheme tangent above.
 TEST(StripTangent, RotorBladeEndPointStiffnessAndRatePartsMatchDifferences) { ExpectEndPointPartsMatchDifferences(RotorStrip()); }
+
+Strip HarmonicRotorStrip() { return RotorStrip(AeroRotorSpec::Inflow::kHarmonic); }
+
+TEST(StripTangent, HarmonicRotorBladeMidStepSchemeTangentMatchesDifferences) {
+  const Strip s = HarmonicRotorStrip();
+  ASSERT_EQ(s.element->num_local(), 6 + 4 + 3);
+  test::ExpectMidStepTangentMatchesDifferences(s.model, *s.element, s.start, kStep, kTolerance);
+  test::ExpectMidStepTangentMatchesDifferences(s.model, Rotor(s), s.start, kStep, kTolerance);
+}
+
+TEST(StripTangent, HarmonicRotorBladeEndPointStiffnessAndRatePartsMatchDifferences) {
+  ExpectEndPointPartsMatchDifferences(HarmonicRotorStrip());
+}
 
 }  // namespace strip_tangent_test
 }  // namespace flexmbd

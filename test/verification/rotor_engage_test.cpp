@@ -78,7 +78,7 @@ std::pair<double, std::string> FirstContact(const std::string& output, const std
 
 TEST(RotorEngage, BladesSettleOntoTheirDroopStopsAsTheRunUpStarts) {
   // The run-up's first 0.1 s in the published gust (CI's short version of rotor_engage.yaml, 30 s): released on
-  // their droop stops, the blades press them from the first step (measured 0.2 ms) to the end; the flap stops,
+  // their droop stops, the blades press them from the first step (measured 0.3 ms) to the end; the flap stops,
   // 2.04 deg above, stay clear: at rest speed the gust's 5.3 m/s downward pushes every blade down, whichever edge
   // the 19.9 m/s side wind meets first (docs/theory.md, (A12)).
   std::string yaml = ReadCase("rotor_engage.yaml");

@@ -28,11 +28,16 @@ struct StripFlap {
   Mat3 R_rest = Mat3::Identity();  ///< the strip node's frame in the flap node's at rest: R_flap^T R_strip
 };
 
-/// The rotor whose blade carries a strip (docs/theory.md, (A13)).
+/// The rotor whose blade carries a strip (docs/theory.md, (A13), (A14)).
 struct StripRotor {
-  int state = -1;             ///< the rotor's inflow nu in State::element_states (-1: no rotor)
-  int unknown = -1;           ///< its unknown
+  int state = -1;             ///< the rotor's first inflow state in State::element_states (-1: no rotor)
+  int unknown = -1;           ///< its unknown; the other states' follow
+  int num_states = 1;         ///< 1 (uniform nu) or 3 (nu_0, nu_c, nu_s)
   Vec3 axis = Vec3::UnitZ();  ///< the shaft axis in W; the inflow blows along -axis
+  Vec3 center = Vec3::Zero();  ///< the disc's centre in W [m]
+  /// (e_c, e_s) / R: the weights (r cos psi / R, r sin psi / R) of the harmonics per unit of the strip's place
+  /// relative to the centre [1/m]
+  Eigen::Matrix<double, 3, 2> harmonic_weights = Eigen::Matrix<double, 3, 2>::Zero();
 };
 
 class BeamStripAero : public Element {
@@ -63,11 +68,13 @@ class BeamStripAero : public Element {
   double length() const { return length_; }
   /// The flap's deflection [rad] (trailing edge down) at ctx; zero without a flap.
   double FlapAngle(const StepContext& ctx) const;
-  /// The strip's lift along its rotor's axis [N] at ctx; zero without a rotor.
-  double Thrust(const StepContext& ctx) const;
+  /// The strip's share of its rotor's rows at ctx: its lift along the axis T [N] times (1, r cos psi / R,
+  /// r sin psi / R), the last two zero for a uniform inflow; all zero without a rotor.
+  Eigen::Vector3d RotorRows(const StepContext& ctx) const;
 
  private:
   using States = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, kMaxInflowStates, 1>;
+  using RotorStates = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, 3, 1>;
   // Rows of what the strip computes: lift, moment, hinge moment (per unit span), then the decay terms of the
   // inflow equations (u/b)(mu_i + lag_i w34).
   static constexpr int kMaxRows = 3 + kMaxInflowStates;
@@ -82,7 +89,12 @@ class BeamStripAero : public Element {
     Mat3 R_flap, turn_flap;
     Vec3 w_flap, wdot_flap;
     States mu, mu_rate;
-    double nu = 0, nu_rate = 0;  // the rotor's inflow and its rate
+    Vec3 v;  // the node's velocity in W
+    // The rotor's states and their rates; the strip's weights of them (1, r cos psi / R, r sin psi / R); the
+    // inflow at the strip and its rate along the strip's path; the gradients of both over the disc.
+    RotorStates rotor_nu, rotor_nu_rate, weights;
+    double nu = 0, nu_rate = 0;
+    Vec3 nu_gradient = Vec3::Zero(), nu_rate_gradient = Vec3::Zero();
   };
   // The flap's deflection, its rate and acceleration, and the deflection's gradients by the rotation increments.
   struct Flap {
@@ -108,8 +120,10 @@ class BeamStripAero : public Element {
   int num_node_unknowns() const { return has_flap() ? 12 : 6; }
   bool has_flap() const { return flap_.node >= 0; }
   bool has_rotor() const { return rotor_.state >= 0; }
-  // The local unknown (and row) of the rotor's inflow: after the strip's own states.
+  // The local unknown (and row) of the rotor's first inflow state: after the strip's own states.
   int rotor_local() const { return num_node_unknowns() + num_states(); }
+  // The weights' gradient by the strip's place (3 x rotor states): zero for nu_0, (e_c, e_s) / R for the harmonics.
+  Eigen::Matrix<double, 3, Eigen::Dynamic, 0, 3, 3> RotorWeightGradient() const;
   // The thrust per unit lift (per span): the strip's length times the chord normal's share along the axis.
   double ThrustShare(const Motion& m) const { return has_rotor() ? length_ * rotor_.axis.dot(m.R * normal_) : 0.0; }
 

@@ -16,6 +16,7 @@
 
 #include <ostream>
 #include <string>
+#include <vector>
 
 #include "flexmbd/io/whole_line_file_buffer.hpp"
 #include "flexmbd/solver/output_sample.hpp"
@@ -41,6 +42,7 @@ class CsvSink {
   [[noreturn]] void ThrowWriteError();
 
   std::string path_;
+  std::vector<bool> harmonic_rotors_;  ///< per rotor: whether it has the harmonic inflow's columns
   WholeLineFileBuffer file_;
   std::ostream out_;
 };

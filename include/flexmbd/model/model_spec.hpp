@@ -294,13 +294,18 @@ struct AeroFlowSpec {
   AeroFlowSpec() { gust_scale.value = 1.0; }
 };
 
-/// A rotor's uniform induced inflow (docs/config.md, "aero"; docs/theory.md, (A13)): one state, the induced
-/// velocity nu through the disc, driven by the thrust of the rotor's strips and blown through every one of them.
+/// A rotor's induced inflow (docs/config.md, "aero"; docs/theory.md, (A13), (A14)): the induced velocity through
+/// the disc, uniform (one state nu, driven by the thrust of the rotor's strips) or with Pitt-Peters' first harmonics
+/// over the disc (three states, driven by the thrust and the strips' moments about the centre), blown through every
+/// strip of the rotor.
 struct AeroRotorSpec {
+  enum class Inflow { kUniform, kHarmonic };
   std::string name;
   std::vector<std::string> strips;  ///< names under aero.strips: the blades
   double radius = 0.0;              ///< R [m]: the disc's area pi R^2 and its air's apparent mass (8/3) rho R^3
   Vec3 axis = Vec3::UnitZ();        ///< unit shaft axis in W, along the thrust; the inflow blows along -axis
+  Inflow inflow = Inflow::kUniform;
+  Vec3 center = Vec3::Zero();       ///< the disc's centre in W [m], on the shaft axis (the harmonics' origin)
 };
 
 class Element;

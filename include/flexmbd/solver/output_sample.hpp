@@ -48,10 +48,12 @@ struct AeroSectionSample {
   Eigen::VectorXd inflow;   ///< Peters' states mu_1..mu_N (docs/theory.md, (A6), (A9)) [m/s]
 };
 
-/// One rotor (aero.rotors) at a sample (docs/theory.md, (A13)).
+/// One rotor (aero.rotors) at a sample (docs/theory.md, (A13), (A14)).
 struct AeroRotorSample {
-  double inflow = 0;  ///< the induced velocity nu through the disc, along -axis [m/s]
+  double inflow = 0;  ///< the induced velocity nu (nu_0 with harmonics) through the disc, along -axis [m/s]
   double thrust = 0;  ///< the blades' strips' lift along the axis [N]
+  /// With harmonics: nu_c, nu_s [m/s] and the lift's moments about the centre M_c, M_s [N m] (zero without)
+  double inflow_cos = 0, inflow_sin = 0, moment_cos = 0, moment_sin = 0;
 };
 
 struct OutputSample {

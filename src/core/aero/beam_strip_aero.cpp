@@ -70,7 +70,7 @@ BeamStripAero::BeamStripAero(const AeroStripSpec& spec, const AeroFlowSpec& flow
     for (int k = 0; k < 6; ++k) unknowns_.push_back(flap.node_unknown + k);
   }
   for (int k = 0; k < spec.inflow_states; ++k) unknowns_.push_back(first_state_unknown + k);
-  if (has_rotor()) unknowns_.push_back(rotor.unknown);
+  for (int k = 0; has_rotor() && k < rotor.num_states; ++k) unknowns_.push_back(rotor.unknown + k);
   if (spec.inflow_states > 0) {
     lag_ = inflow_.A.partialPivLu().solve(inflow_.c);
     lag0_ = 0.5 * inflow_.b.dot(lag_);
@@ -94,10 +94,24 @@ BeamStripAero::Motion BeamStripAero::MotionAt(const StepContext& ctx) const {
     v = n.v_f;
     acceleration = n.vdot_f;
   }
+  m.v = v;
   if (has_rotor()) {
-    const ElementStateStep& x = (*ctx.element_states)[rotor_.state];
-    m.nu = x.value;
-    m.nu_rate = x.rate;
+    // The inflow at the strip's place in the disc (A14), and its rate along the strip's path.
+    const int nr = rotor_.num_states;
+    m.rotor_nu.resize(nr);
+    m.rotor_nu_rate.resize(nr);
+    for (int k = 0; k < nr; ++k) {
+      const ElementStateStep& x = (*ctx.element_states)[rotor_.state + k];
+      m.rotor_nu[k] = x.value;
+      m.rotor_nu_rate[k] = x.rate;
+    }
+    const Vec3 place = (ctx.mode == AnalysisMode::kDynamic ? 0.5 * (n.x_i + n.x_f) : n.x_f) - rotor_.center;
+    const auto gradient = RotorWeightGradient();
+    m.weights = RotorStates::Unit(nr, 0) + gradient.transpose() * place;
+    m.nu_gradient = gradient * m.rotor_nu;
+    m.nu_rate_gradient = gradient * m.rotor_nu_rate;
+    m.nu = m.weights.dot(m.rotor_nu);
+    m.nu_rate = m.weights.dot(m.rotor_nu_rate) + v.dot(m.nu_gradient);
   }
   // The rotor's inflow blows along -axis (A13).
   const Vec3 air = free_stream_ + Evaluate(gust_scale_, t) * gust_ - m.nu * rotor_.axis;
@@ -290,11 +304,12 @@ void BeamStripAero::AddResidual(const StepContext& ctx, Eigen::Ref<Eigen::Vector
     r[nn + i] += lag + decay;
     magnitude[nn + i] += std::abs(lag) + std::abs(decay);
   }
-  // The strip's share of the rotor's thrust in the inflow's row (A13); an equilibrium keeps the inflow it has.
+  // The strip's share of the rotor's thrust (and its moments) in the inflow's rows (A13), (A14); an equilibrium
+  // keeps the inflow it has.
   if (has_rotor() && ctx.mode != AnalysisMode::kStatic) {
-    const double thrust = ThrustShare(m) * loads.y[0];
-    r[rotor_local()] -= thrust;
-    magnitude[rotor_local()] += std::abs(thrust);
+    const RotorStates thrust = ThrustShare(m) * loads.y[0] * m.weights;
+    r.segment(rotor_local(), thrust.size()) -= thrust;
+    magnitude.segment(rotor_local(), thrust.size()) += thrust.cwiseAbs();
   }
 }
 
@@ -321,19 +336,37 @@ void BeamStripAero::AddTangent(const StepContext& ctx, Eigen::Ref<Eigen::MatrixX
   J.block(0, nn, nn, N) -= mid * F.topRows(nn) * loads.dmu.topRows(3);
   J.block(nn, nn, N, N) += mid * loads.dmu.bottomRows(N);
   if (!has_rotor()) return;
-  // The rotor's inflow moves the air along -axis: V changes by -R^T axis per unit nu.
-  const int ri = rotor_local();
-  const Rows by_nu = -loads.dV * (m.R.transpose() * rotor_.axis);
-  J.block(0, ri, nn, 1) -= mid * F.topRows(nn) * by_nu.head<3>();
-  J.block(nn, ri, N, 1) += mid * by_nu.tail(N);
+  // The rotor's inflow moves the air along -axis: V changes by -R^T axis per unit nu at the strip, Vdot by as much
+  // per unit of its rate. Both read the states through the strip's weights, the rate also through the strip's
+  // velocity across the disc's gradient (A14); the strip's place moves both.
+  const int ri = rotor_local(), nr = rotor_.num_states;
+  const Vec3 down = m.R.transpose() * rotor_.axis;
+  const Rows by_nu = -loads.dV * down, by_nu_rate = -loads.dVdot * down;
+  const auto gradient = RotorWeightGradient();
+  const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, kMaxRows, 3> by_states =
+      by_nu * m.weights.transpose() + by_nu_rate * (gradient.transpose() * m.v).transpose();
+  const RowGradient by_place = mid * (by_nu * m.nu_gradient.transpose() + by_nu_rate * m.nu_rate_gradient.transpose());
+  J.block(0, ri, nn, nr) -= mid * F.topRows(nn) * by_states.topRows(3);
+  J.block(nn, ri, N, nr) += mid * by_states.bottomRows(N);
+  J.block(0, 0, nn, 3) -= F.topRows(nn) * by_place.topRows<3>();
+  J.block(nn, 0, N, 3) += by_place.bottomRows(N);
   if (ctx.mode == AnalysisMode::kStatic) return;
-  // The thrust row: the lift's gradients times the share along the axis, which turns with the chord normal.
+  // The inflow's rows: the lift's gradients times the share along the axis, which turns with the chord normal,
+  // times the weights, which move with the strip's place.
   const double share = ThrustShare(m);
-  J.block<1, 3>(ri, kRotation) -= share * by_node.row(0);
-  J.block<1, 3>(ri, kRotation) += length_ * loads.y[0] * rotor_.axis.transpose() * m.R * Skew(normal_) * m.turn;
-  if (has_flap()) J.block<1, 3>(ri, kFlapRotation) -= share * loads.dflap(0, 0) * f.d_flap;
-  J.block(ri, nn, 1, N) -= mid * share * loads.dmu.block(0, 0, 1, N);
-  J(ri, ri) -= mid * share * by_nu[0];
+  J.block(ri, kRotation, nr, 3) -= m.weights * (share * by_node.row(0));
+  J.block(ri, kRotation, nr, 3) +=
+      m.weights * (length_ * loads.y[0] * rotor_.axis.transpose() * m.R * Skew(normal_) * m.turn);
+  if (has_flap()) J.block(ri, kFlapRotation, nr, 3) -= m.weights * (share * loads.dflap(0, 0) * f.d_flap);
+  J.block(ri, nn, nr, N) -= m.weights * (mid * share * loads.dmu.block(0, 0, 1, N));
+  J.block(ri, ri, nr, nr) -= mid * share * m.weights * by_states.row(0);
+  J.block(ri, 0, nr, 3) -= m.weights * (share * by_place.row(0)) + (mid * share * loads.y[0]) * gradient.transpose();
+}
+
+Eigen::Matrix<double, 3, Eigen::Dynamic, 0, 3, 3> BeamStripAero::RotorWeightGradient() const {
+  Eigen::Matrix<double, 3, Eigen::Dynamic, 0, 3, 3> gradient = Eigen::MatrixXd::Zero(3, rotor_.num_states);
+  if (rotor_.num_states == 3) gradient.rightCols<2>() = rotor_.harmonic_weights;
+  return gradient;
 }
 
 void BeamStripAero::AddRateParts(const StepContext& ctx, Eigen::Ref<Eigen::MatrixXd> D,
@@ -351,7 +384,7 @@ void BeamStripAero::AddRateParts(const StepContext& ctx, Eigen::Ref<Eigen::Matri
   auto add = [&](Eigen::Ref<Eigen::MatrixXd> target, int column, const RowGradient& g, double factor) {
     target.block(0, column, nn, 3) -= factor * F.topRows(nn) * g.topRows<3>();
     target.block(nn, column, N, 3) += factor * g.bottomRows(N);
-    if (has_rotor()) target.block<1, 3>(rotor_local(), column) -= factor * share * g.row(0);
+    if (has_rotor()) target.block(rotor_local(), column, rotor_.num_states, 3) -= m.weights * (factor * share * g.row(0));
   };
   // Columns: node translation rate (V = R^T (air - v)), body-frame angular rates (the flap's rate and
   // acceleration are the flap node's minus the node's about the pitch axis).
@@ -366,13 +399,15 @@ void BeamStripAero::AddRateParts(const StepContext& ctx, Eigen::Ref<Eigen::Matri
   }
   D.block(nn, nn, N, N) += inflow_.A;
   if (!has_rotor()) return;
-  // The inflow's rate turns the air's rate: Vdot changes by -R^T axis per unit nu' (the state's rate part, for any
-  // scheme).
-  const int ri = rotor_local();
+  // The inflow's rate turns the air's rate: Vdot changes by -R^T axis per unit nu' at the strip (the states' rate
+  // parts, for any scheme), which reads the states' rates through the weights and the strip's velocity through
+  // the disc's gradient (A14).
+  const int ri = rotor_local(), nr = rotor_.num_states;
   const Rows by_nu_rate = -loads.dVdot * (Rt * rotor_.axis);
-  D.block(0, ri, nn, 1) -= F.topRows(nn) * by_nu_rate.head<3>();
-  D.block(nn, ri, N, 1) += by_nu_rate.tail(N);
-  D(ri, ri) -= share * by_nu_rate[0];
+  D.block(0, ri, nn, nr) -= F.topRows(nn) * by_nu_rate.head<3>() * m.weights.transpose();
+  D.block(nn, ri, N, nr) += by_nu_rate.tail(N) * m.weights.transpose();
+  D.block(ri, ri, nr, nr) -= share * m.weights * by_nu_rate[0] * m.weights.transpose();
+  add(D, 0, by_nu_rate * m.nu_gradient.transpose(), rate);
 }
 
 void BeamStripAero::AddStepWork(const StepContext& ctx, StepWork* work) const {
@@ -389,9 +424,12 @@ Vec3 BeamStripAero::StripLoads(const StepContext& ctx) const {
   return length_ * Compute(m, FlapOf(m)).y.head<3>();
 }
 
-double BeamStripAero::Thrust(const StepContext& ctx) const {
+Eigen::Vector3d BeamStripAero::RotorRows(const StepContext& ctx) const {
+  Eigen::Vector3d rows = Eigen::Vector3d::Zero();
+  if (!has_rotor()) return rows;
   const Motion m = MotionAt(ctx);
-  return ThrustShare(m) * Compute(m, FlapOf(m)).y[0];
+  rows.head(rotor_.num_states) = ThrustShare(m) * Compute(m, FlapOf(m)).y[0] * m.weights;
+  return rows;
 }
 
 double BeamStripAero::FlapAngle(const StepContext& ctx) const { return FlapOf(MotionAt(ctx)).delta[0]; }

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "flexmbd/aero/rotor_inflow.hpp"
 #include "flexmbd/common/error.hpp"
 
 namespace flexmbd {
@@ -94,8 +95,18 @@ std::vector<StripRotor> StripRotors(const Model& model, const std::string& prefi
                                     int first_state) {
   std::vector<StripRotor> rotors(spec.aero_strips.size());
   std::vector<std::string> owner(spec.aero_strips.size());
+  int state = first_state;
   for (size_t r = 0; r < spec.aero_rotors.size(); ++r) {
     const AeroRotorSpec& rotor = spec.aero_rotors[r];
+    StripRotor blade;
+    blade.state = state;
+    blade.unknown = model.element_state_unknown(state);
+    blade.num_states = RotorInflowStates(rotor);
+    blade.axis = rotor.axis;
+    blade.center = rotor.center;
+    const std::pair<Vec3, Vec3> disc = DiscAxes(rotor.axis);
+    blade.harmonic_weights << disc.first / rotor.radius, disc.second / rotor.radius;
+    state += blade.num_states;
     for (size_t k = 0; k < rotor.strips.size(); ++k) {
       const std::string field = prefix + "aero.rotors." + rotor.name + ".strips[" + std::to_string(k) + "]";
       const auto strip = std::find_if(spec.aero_strips.begin(), spec.aero_strips.end(),
@@ -109,8 +120,7 @@ std::vector<StripRotor> StripRotors(const Model& model, const std::string& prefi
                           "'; expected each strip on one rotor at most");
       }
       owner[index] = rotor.name;
-      rotors[index] = {first_state + static_cast<int>(r), model.element_state_unknown(first_state + static_cast<int>(r)),
-                       rotor.axis};
+      rotors[index] = blade;
     }
   }
   return rotors;

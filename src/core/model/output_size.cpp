@@ -13,6 +13,7 @@ constexpr int kValuesPerFriction = 5;        // sticking, torque, normal_force, 
 constexpr int kValuesPerBeamStation = 18;    // loads, strains, displacement, rotation
 constexpr int kValuesPerAeroSection = 3;     // lift, moment, hinge moment; then its inflow states
 constexpr int kValuesPerRotor = 2;           // inflow, thrust
+constexpr int kValuesPerHarmonics = 4;       // a rotor's harmonic inflows and moments
 constexpr int kValuesPerSampleHeader = 1;    // t
 constexpr int kValuesPerSampleTrailer = 8;   // six energies, dt, iterations
 }  // namespace
@@ -21,7 +22,7 @@ long OutputValuesPerSample(const Model& model) {
   long aero = 0;
   for (const TypicalSectionAero* section : model.aero_sections()) aero += kValuesPerAeroSection + section->num_states();
   for (const StripStationInfo& station : model.strip_stations()) aero += kValuesPerAeroSection + station.inner->num_states();
-  aero += kValuesPerRotor * static_cast<long>(model.aero_rotors().size());
+  for (const RotorInflow* rotor : model.aero_rotors()) aero += kValuesPerRotor + (rotor->harmonic() ? kValuesPerHarmonics : 0);
   return aero + kValuesPerSampleHeader + kValuesPerVariable * static_cast<long>(model.variable_names().size()) +
          kValuesPerJoint * static_cast<long>(model.joints().size()) +
          kValuesPerStop * static_cast<long>(model.stops().size()) +

@@ -80,7 +80,15 @@ OutputSample MakeSample(const Model& model, const State& state, const StepContex
     s.strip_stations.push_back(between ? Mix(inner, SampleStrip(*station.outer, state, ctx), station.weight) : inner);
   }
   for (const RotorInflow* rotor : model.aero_rotors()) {
-    s.aero_rotors.push_back({state.element_states[rotor->first_state()], rotor->Thrust(ctx)});
+    const Eigen::Vector3d loads = rotor->Loads(ctx);
+    AeroRotorSample sample{state.element_states[rotor->first_state()], loads[0]};
+    if (rotor->harmonic()) {
+      sample.inflow_cos = state.element_states[rotor->first_state() + 1];
+      sample.inflow_sin = state.element_states[rotor->first_state() + 2];
+      sample.moment_cos = loads[1];
+      sample.moment_sin = loads[2];
+    }
+    s.aero_rotors.push_back(sample);
   }
   s.dt = dt;
   s.iterations = iterations;
@@ -127,9 +135,12 @@ OutputSample Interpolate(const OutputSample& a, const OutputSample& b, double t)
   }
   for (size_t k = 0; k < s.aero_sections.size(); ++k) s.aero_sections[k] = Mix(a.aero_sections[k], b.aero_sections[k], u);
   for (size_t k = 0; k < s.strip_stations.size(); ++k) s.strip_stations[k] = Mix(a.strip_stations[k], b.strip_stations[k], u);
+  auto blend = [u](double x, double y) { return (1.0 - u) * x + u * y; };
   for (size_t k = 0; k < s.aero_rotors.size(); ++k) {
-    s.aero_rotors[k].inflow = (1.0 - u) * a.aero_rotors[k].inflow + u * b.aero_rotors[k].inflow;
-    s.aero_rotors[k].thrust = (1.0 - u) * a.aero_rotors[k].thrust + u * b.aero_rotors[k].thrust;
+    const AeroRotorSample &x = a.aero_rotors[k], &y = b.aero_rotors[k];
+    s.aero_rotors[k] = {blend(x.inflow, y.inflow),         blend(x.thrust, y.thrust),
+                        blend(x.inflow_cos, y.inflow_cos), blend(x.inflow_sin, y.inflow_sin),
+                        blend(x.moment_cos, y.moment_cos), blend(x.moment_sin, y.moment_sin)};
   }
   return s;
 }
