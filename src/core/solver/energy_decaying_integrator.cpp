@@ -32,6 +32,12 @@ constexpr double kDissipationJudgedAt = 1.0e-2;
 constexpr int kMaxModeRevisions = 4;
 constexpr double kModeChatterShrink = 0.25;
 
+// A step shorter than this fraction of the step before that is redone for a stop or friction event is redone from
+// its start velocities projected onto the constraints ("Velocity projection after jumps"): the end rates of the
+// longer step carry its alternating velocity mode, which the short step has to turn around with constraint forces
+// of the order of that step's impulse over its own size, and the event it saw may be that mode's.
+constexpr double kShortStepFraction = 0.1;
+
 bool SameModes(const std::vector<EffectState>& a, const std::vector<EffectState>& b) {
   for (size_t k = 0; k < a.size(); ++k) {
     if (a[k].mode != b[k].mode) return false;
@@ -173,7 +179,22 @@ double EnergyDecayingIntegrator::ExpectedJudgingContraction() const {
   return std::pow(std::max(judging_contraction_factor_, std::numeric_limits<double>::epsilon()), 0.8);
 }
 
-StepResult EnergyDecayingIntegrator::Step(const State& start, double h, State* end) {
+StepResult EnergyDecayingIntegrator::Step(const State& given, double h, State* end) {
+  const StepResult result = SolveStep(StartOf(given), h, end);
+  if (result.status == StepStatus::kRejectedEvent && h < kShortStepFraction * given.h_prev) {
+    short_event_start_ = given.t;
+  }
+  return result;
+}
+
+const State& EnergyDecayingIntegrator::StartOf(const State& given) {
+  if (given.t != short_event_start_) return given;
+  projected_start_ = given;
+  const std::vector<bool> nothing_held(held_.size(), false);
+  return projection_.Apply(&projected_start_, nothing_held) ? projected_start_ : given;
+}
+
+StepResult EnergyDecayingIntegrator::SolveStep(const State& start, double h, State* end) {
   Coefficients coefficients = Choose(start);
   modes_ = start.effects;
   redundancy_.Mark(start, &modes_);
