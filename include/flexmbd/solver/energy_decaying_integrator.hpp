@@ -53,10 +53,16 @@ class EnergyDecayingIntegrator : public TimeIntegrator {
   // stretch dissipates with the scheme's term, whether or not the term was on.
   void RecordElementDissipation(const Coefficients& c);
   Eigen::VectorXd Predict(const State& start, double h) const;
+  // The step from `start` (Step's work, from the start StartOf chose).
+  StepResult SolveStep(const State& start, double h, State* end);
+  // The state a step starts from: `given`, or, once a step from it much shorter than the one before was redone for
+  // a friction event, `given` with its velocities projected onto the constraints (kept in projected_start_).
+  const State& StartOf(const State& given);
   // Asks every effect with modes whether the converged step contradicts its trial mode; true if any did.
   bool ReviseModes();
-  // The effects' step-size requests and their state at the end of the accepted step.
-  void CommitEffects(State* end, StepLimit* limit) const;
+  // The effects' step-size requests and their state at the end of the accepted step; true when a friction asked to
+  // redo the step (a slip reversal located from end rates).
+  bool CommitEffects(State* end, StepLimit* limit) const;
   // True when an effect changed its mode from `start` to `end` with a jump in the motion (ModeChangesAreSmooth).
   bool ModesJumped(const State& start, const State& end) const;
   /// theta / (1 - theta) a judging solve assumes for its first increment (NaN while no rate was measured).
@@ -73,6 +79,10 @@ class EnergyDecayingIntegrator : public TimeIntegrator {
   std::vector<bool> held_;          ///< per effect slot: held in the projection (a contact brought to rest)
   std::vector<Mat3> node_inertia_;  ///< rotational inertia of each node's body, weights the dissipation check
   std::vector<EffectState> modes_;  ///< trial modes of the step being solved
+  bool end_rate_event_ = false;  ///< the last step solved was redone for a friction event (CommitEffects)
+  /// Time of the start from which a step much shorter than the one before was redone for a friction event (StartOf).
+  double short_event_start_ = std::numeric_limits<double>::quiet_NaN();
+  State projected_start_;  ///< that start with its velocities projected, for the steps redone from it
   TangentReuse tangent_reuse_;     ///< whether a step starts from the previous one's factorisation, learnt
   DissipationJudging judging_;      ///< when a step judges its dissipation terms, learnt from the steps taken
   std::vector<double> elements_all_on_;  ///< by Element::index(): alpha_inf for elements with a stretch of their own

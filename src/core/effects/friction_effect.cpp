@@ -229,8 +229,13 @@ int FrictionEffect::ReviseMode(const StepContext& ctx) const {
   if (BreakingAway(ctx)) return mode;
   // A slip that reverses within the step sticks in it if it was slow enough to stick; a faster one is located
   // first (Limit).
-  const double slip_i = spec_.radius * std::abs((*ctx.variables)[variable_].qdot_i);
+  const double qdot_i = (*ctx.variables)[variable_].qdot_i;
+  const double slip_i = spec_.radius * std::abs(qdot_i);
   const bool slow = slip_i <= kCaptureSpeeds * StickingSpeed(ctx.start->effects[slot()]);
+  // A start rate against the slide, faster than a capture (velocities projected before a much shorter step,
+  // "Velocity projection after jumps", can turn it), says that the slip stopped before the step: there is no stop
+  // within it to locate, and the joint slides the way it moves. (A slower one is judged as a capture below.)
+  if (!slow && Direction(mode) * qdot_i < 0) return InitialMode(qdot_i);
   return Direction(mode) * EndRate(ctx, variable_) < 0 && slow ? kSticking : mode;
 }
 

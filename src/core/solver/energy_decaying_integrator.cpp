@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 
+#include "flexmbd/effects/friction_effect.hpp"
 #include "flexmbd/model/model.hpp"
 #include "flexmbd/solver/joint_rates.hpp"
 #include "flexmbd/solver/sparse_system.hpp"
@@ -31,6 +32,12 @@ constexpr double kDissipationJudgedAt = 1.0e-2;
 // Mode revisions allowed in one step before it is redone shorter (a stop touched and left within the step).
 constexpr int kMaxModeRevisions = 4;
 constexpr double kModeChatterShrink = 0.25;
+
+// A step shorter than this fraction of the step before that is redone for a friction event is redone from its start
+// velocities projected onto the constraints ("Velocity projection after jumps"): the end rates of the longer step
+// carry its alternating velocity mode, which the short step has to turn around with constraint forces of the order
+// of that step's impulse over its own size, and the slip reversal it saw in its end rates may be that mode's.
+constexpr double kShortStepFraction = 0.1;
 
 bool SameModes(const std::vector<EffectState>& a, const std::vector<EffectState>& b) {
   for (size_t k = 0; k < a.size(); ++k) {
@@ -173,7 +180,23 @@ double EnergyDecayingIntegrator::ExpectedJudgingContraction() const {
   return std::pow(std::max(judging_contraction_factor_, std::numeric_limits<double>::epsilon()), 0.8);
 }
 
-StepResult EnergyDecayingIntegrator::Step(const State& start, double h, State* end) {
+StepResult EnergyDecayingIntegrator::Step(const State& given, double h, State* end) {
+  const StepResult result = SolveStep(StartOf(given), h, end);
+  if (result.status == StepStatus::kRejectedEvent && end_rate_event_ && h < kShortStepFraction * given.h_prev) {
+    short_event_start_ = given.t;
+  }
+  return result;
+}
+
+const State& EnergyDecayingIntegrator::StartOf(const State& given) {
+  if (given.t != short_event_start_) return given;
+  projected_start_ = given;
+  const std::vector<bool> nothing_held(held_.size(), false);
+  return projection_.Apply(&projected_start_, nothing_held) ? projected_start_ : given;
+}
+
+StepResult EnergyDecayingIntegrator::SolveStep(const State& start, double h, State* end) {
+  end_rate_event_ = false;
   Coefficients coefficients = Choose(start);
   modes_ = start.effects;
   redundancy_.Mark(start, &modes_);
@@ -263,7 +286,7 @@ StepResult EnergyDecayingIntegrator::Step(const State& start, double h, State* e
   if (choice_matters) judging_.Record(early, iterations);
   if (alpha_inf_ != 0.0 && start.history_steps >= 1) RecordElementDissipation(coefficients);
   Commit(start, unknowns, h, coefficients.nodes, end);
-  CommitEffects(end, &result.limit);
+  end_rate_event_ = CommitEffects(end, &result.limit);
   // The accelerations of a step whose modes changed with a jump (an impact, a stick-slip transition) say nothing
   // about the next: the local error estimate and the scheme's dissipation restart their history.
   const bool jumped = ModesJumped(start, *end);
@@ -294,12 +317,21 @@ bool EnergyDecayingIntegrator::ModesJumped(const State& start, const State& end)
   return false;
 }
 
-void EnergyDecayingIntegrator::CommitEffects(State* end, StepLimit* limit) const {
+bool EnergyDecayingIntegrator::CommitEffects(State* end, StepLimit* limit) const {
   const StepContext& ctx = builder_.context();
-  for (const ModalEffect* effect : model_.modal_effects()) limit->Merge(effect->Limit(ctx, *end));
+  const auto& frictions = model_.friction_effects();
+  bool end_rate_event = false;
+  for (const ModalEffect* effect : model_.modal_effects()) {
+    const StepLimit own = effect->Limit(ctx, *end);
+    // Friction locates its slip reversals from end rates; stops locate contacts from gaps, which carry no velocity.
+    const bool friction = std::find(frictions.begin(), frictions.end(), effect) != frictions.end();
+    end_rate_event = end_rate_event || (friction && own.retry < ctx.h);
+    limit->Merge(own);
+  }
   end->effects = modes_;
   for (const ModalEffect* effect : model_.modal_effects()) effect->Commit(ctx, *end, &end->effects[effect->slot()]);
   if (!SameModes(modes_, end->effects)) system_->set_factorisation_key(std::numeric_limits<double>::quiet_NaN());
+  return end_rate_event;
 }
 
 void EnergyDecayingIntegrator::Commit(const State& start, const Eigen::VectorXd& unknowns, double h,

@@ -1,0 +1,27 @@
+#pragma once
+// The energy books (docs/theory.md (T6)) of a row of the runner's CSV: energy now plus everything removed, less the
+// energy of the first row, and the energy that passed through the books, to which the imbalance is compared.
+
+#include <cmath>
+#include <vector>
+
+#include "../integration/helpers/csv_table.hpp"
+
+namespace flexmbd {
+namespace test {
+
+struct CsvBooks {
+  double imbalance = 0;   ///< E + dissipated + numerical - external - E_first [J]
+  double throughput = 0;  ///< |E_first| + dissipated + numerical + |external| [J]
+};
+
+inline CsvBooks BooksAt(const CsvTable& table, const std::vector<double>& row) {
+  auto at = [&](const char* column) { return row.at(table.Column(column)); };
+  const double first = table.rows.front().at(table.Column("energy.total"));
+  const double removed = at("energy.dissipated") + at("energy.numerical_dissipation");
+  return {at("energy.total") + removed - at("energy.external_work") - first,
+          std::abs(first) + removed + std::abs(at("energy.external_work"))};
+}
+
+}  // namespace test
+}  // namespace flexmbd
