@@ -99,6 +99,7 @@ OutputSample Interpolate(const OutputSample& a, const OutputSample& b, double t)
   const double span = b.t - a.t;
   const double u = span > 0 ? (t - a.t) / span : 1.0;
   auto mix = [u](const auto& x, const auto& y) { return ((1.0 - u) * x + u * y).eval(); };
+  auto blend = [u](double x, double y) { return (1.0 - u) * x + u * y; };
   OutputSample s = b;
   s.t = t;
   s.position = mix(a.position, b.position);
@@ -116,15 +117,15 @@ OutputSample Interpolate(const OutputSample& a, const OutputSample& b, double t)
       const FrictionSample &x = a.friction[k], &y = b.friction[k];
       FrictionSample& z = s.friction[k];
       z.sticking = x.sticking && y.sticking;
-      z.slip_velocity = (1.0 - u) * x.slip_velocity + u * y.slip_velocity;
-      z.work = (1.0 - u) * x.work + u * y.work;
+      z.slip_velocity = blend(x.slip_velocity, y.slip_velocity);
+      z.work = blend(x.work, y.work);
     }
   }
-  s.kinetic = (1.0 - u) * a.kinetic + u * b.kinetic;
-  s.potential = (1.0 - u) * a.potential + u * b.potential;
-  s.external_work = (1.0 - u) * a.external_work + u * b.external_work;
-  s.dissipated = (1.0 - u) * a.dissipated + u * b.dissipated;
-  s.numerical_dissipation = (1.0 - u) * a.numerical_dissipation + u * b.numerical_dissipation;
+  s.kinetic = blend(a.kinetic, b.kinetic);
+  s.potential = blend(a.potential, b.potential);
+  s.external_work = blend(a.external_work, b.external_work);
+  s.dissipated = blend(a.dissipated, b.dissipated);
+  s.numerical_dissipation = blend(a.numerical_dissipation, b.numerical_dissipation);
   for (size_t k = 0; k < s.beam_stations.size(); ++k) {
     const BeamStationSample &x = a.beam_stations[k], &y = b.beam_stations[k];
     BeamStationSample& z = s.beam_stations[k];
@@ -135,7 +136,6 @@ OutputSample Interpolate(const OutputSample& a, const OutputSample& b, double t)
   }
   for (size_t k = 0; k < s.aero_sections.size(); ++k) s.aero_sections[k] = Mix(a.aero_sections[k], b.aero_sections[k], u);
   for (size_t k = 0; k < s.strip_stations.size(); ++k) s.strip_stations[k] = Mix(a.strip_stations[k], b.strip_stations[k], u);
-  auto blend = [u](double x, double y) { return (1.0 - u) * x + u * y; };
   for (size_t k = 0; k < s.aero_rotors.size(); ++k) {
     const AeroRotorSample &x = a.aero_rotors[k], &y = b.aero_rotors[k];
     s.aero_rotors[k] = {blend(x.inflow, y.inflow),         blend(x.thrust, y.thrust),
