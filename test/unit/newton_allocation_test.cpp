@@ -1,6 +1,6 @@
 // No heap allocation in the Newton loop (issue 12): after a warm-up iteration, assembling residual and tangent,
 // refactorising and solving allocate nothing, for a model with beams, joints,
-// springs, dampers, elastic stops and Coulomb friction. Counted by interposing malloc for the whole process
+// springs, dampers, elastic stops and Coulomb friction, and for a rotor whose blades' strips share its inflow. Counted by interposing malloc for the whole process
 // (libstdc++'s operator new and Eigen's dynamic storage both end in malloc).
 
 #include <gtest/gtest.h>
@@ -37,11 +37,15 @@ extern "C" void* malloc(size_t size) {
 namespace flexmbd {
 namespace newton_allocation_test {
 
+ModelSpec Load(const std::string& urdf, const std::string& yaml) {
+  const std::string dir = std::string(FLEXMBD_SOURCE_DIR) + "/";
+  return LoadModelSpec(dir + urdf, dir + yaml);
+}
+
 // Allocations made by one Newton iteration (assembly with and without the tangent, refactorisation and
 // solve) at the last iteration of the model's `steps`-th step.
-long AllocationsPerIteration(const std::string& urdf, const std::string& yaml, int steps) {
-  const std::string dir = std::string(FLEXMBD_SOURCE_DIR) + "/";
-  const Model model = BuildModel(LoadModelSpec(dir + urdf, dir + yaml));
+long AllocationsPerIteration(const ModelSpec& spec, int steps) {
+  const Model model = BuildModel(spec);
   Simulation simulation(model);
   for (int k = 0; k < steps; ++k) simulation.TryStep(model.solver().dt);
   const StepContext& ctx = simulation.last_context();
@@ -63,8 +67,20 @@ long AllocationsPerIteration(const std::string& urdf, const std::string& yaml, i
 
 TEST(NewtonIteration, FlexibleAntennaWithFrictionAndStopsAllocatesNothing) {
   if (!kCountsAllocations) GTEST_SKIP() << "malloc is AddressSanitizer's in this build";
-  EXPECT_EQ(AllocationsPerIteration("config/antenna/antenna.urdf", "test/data/yaml/antenna_flexible_friction.yaml", 5),
+  EXPECT_EQ(AllocationsPerIteration(Load("config/antenna/antenna.urdf", "test/data/yaml/antenna_flexible_friction.yaml"), 5),
             0);
+}
+
+// The stiff two-bladed hover rotor (test/data/yaml/hover_rotor.yaml) with either inflow: the rotor's element
+// evaluates its one or three states (docs/theory.md, (A13), (A14)), each blade's strips read them and add to their
+// rows.
+TEST(NewtonIteration, RotorWithUniformOrHarmonicInflowAllocatesNothing) {
+  if (!kCountsAllocations) GTEST_SKIP() << "malloc is AddressSanitizer's in this build";
+  ModelSpec spec = Load("test/data/urdf/hover_rotor.urdf", "test/data/yaml/hover_rotor.yaml");
+  for (const AeroRotorSpec::Inflow inflow : {AeroRotorSpec::Inflow::kUniform, AeroRotorSpec::Inflow::kHarmonic}) {
+    spec.aero_rotors.at(0).inflow = inflow;
+    EXPECT_EQ(AllocationsPerIteration(spec, 5), 0) << (inflow == AeroRotorSpec::Inflow::kHarmonic ? "harmonic" : "uniform");
+  }
 }
 
 }  // namespace newton_allocation_test

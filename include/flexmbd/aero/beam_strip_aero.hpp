@@ -13,6 +13,7 @@
 #include <string>
 
 #include "flexmbd/aero/peters_inflow.hpp"
+#include "flexmbd/aero/rotor_inflow.hpp"
 #include "flexmbd/aero/thin_airfoil_loads.hpp"
 #include "flexmbd/aero/typical_section_aero.hpp"
 #include "flexmbd/elements/element.hpp"
@@ -74,7 +75,6 @@ class BeamStripAero : public Element {
 
  private:
   using States = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, kMaxInflowStates, 1>;
-  using RotorStates = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, 3, 1>;
   // Rows of what the strip computes: lift, moment, hinge moment (per unit span), then the decay terms of the
   // inflow equations (u/b)(mu_i + lag_i w34).
   static constexpr int kMaxRows = 3 + kMaxInflowStates;

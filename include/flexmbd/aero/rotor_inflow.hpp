@@ -21,6 +21,10 @@ namespace flexmbd {
 
 class BeamStripAero;
 
+/// A rotor's inflow states or their rates: at most three (A14), stored in place, so that evaluating them in the
+/// Newton loop allocates nothing (issue 12).
+using RotorStates = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, 3, 1>;
+
 class RotorInflow : public Element {
  public:
   /// @param first_state_unknown the unknown of the first inflow state (the others follow).
@@ -51,8 +55,9 @@ class RotorInflow : public Element {
   double disc_area() const { return disc_area_; }          ///< A [m^2]
 
  private:
+  using StateSlope = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, 3, 3>;
   // The momentum terms of (A13) or (A14) and their derivative by the states, for the stream at time t.
-  Eigen::VectorXd Momentum(double t, const Eigen::VectorXd& nu, Eigen::MatrixXd* slope) const;
+  RotorStates Momentum(double t, const RotorStates& nu, StateSlope* slope) const;
 
   std::string name_;
   bool harmonic_;

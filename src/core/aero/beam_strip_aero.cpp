@@ -107,7 +107,10 @@ BeamStripAero::Motion BeamStripAero::MotionAt(const StepContext& ctx) const {
     }
     const Vec3 place = (ctx.mode == AnalysisMode::kDynamic ? 0.5 * (n.x_i + n.x_f) : n.x_f) - rotor_.center;
     const auto gradient = RotorWeightGradient();
-    m.weights = RotorStates::Unit(nr, 0) + gradient.transpose() * place;
+    // (1, e_c . p / R, e_s . p / R), the gradient's first column being zero; written as Unit(nr, 0) plus the
+    // product, the sum would go through a temporary of unbounded size, on the heap.
+    m.weights = gradient.transpose() * place;
+    m.weights[0] += 1.0;
     m.nu_gradient = gradient * m.rotor_nu;
     m.nu_rate_gradient = gradient * m.rotor_nu_rate;
     m.nu = m.weights.dot(m.rotor_nu);

@@ -39,7 +39,7 @@ RotorInflow::RotorInflow(const AeroRotorSpec& spec, const AeroFlowSpec& flow, in
   for (int k = 0; k < num_states(); ++k) unknowns_.push_back(first_state_unknown + k);
 }
 
-Eigen::VectorXd RotorInflow::Momentum(double t, const Eigen::VectorXd& nu, Eigen::MatrixXd* slope) const {
+RotorStates RotorInflow::Momentum(double t, const RotorStates& nu, StateSlope* slope) const {
   const Vec3 air = free_stream_ + Evaluate(gust_scale_, t) * gust_;
   const double climb = -axis_.dot(air);
   const double k = density_ * disc_area_;
@@ -52,13 +52,13 @@ Eigen::VectorXd RotorInflow::Momentum(double t, const Eigen::VectorXd& nu, Eigen
   const double in_plane = (air + climb * axis_).norm();
   const double through = climb + nu[0], speed = std::hypot(in_plane, through);  // V_c + nu and V_T
   // d(V_T nu)/d nu = V_T + nu (V_c + nu) / V_T; at V_T = 0 (no stream, no inflow) both terms vanish.
-  *slope = Eigen::MatrixXd::Constant(1, 1, 2.0 * k * (speed + (speed > 0.0 ? nu[0] * through / speed : 0.0)));
-  return Eigen::VectorXd::Constant(1, 2.0 * k * speed * nu[0]);
+  *slope = StateSlope::Constant(1, 1, 2.0 * k * (speed + (speed > 0.0 ? nu[0] * through / speed : 0.0)));
+  return RotorStates::Constant(1, 2.0 * k * speed * nu[0]);
 }
 
 namespace {
 // The states' values and rates at ctx.
-void ReadStates(const StepContext& ctx, int first, int n, Eigen::VectorXd* value, Eigen::VectorXd* rate) {
+void ReadStates(const StepContext& ctx, int first, int n, RotorStates* value, RotorStates* rate) {
   value->resize(n);
   rate->resize(n);
   for (int k = 0; k < n; ++k) {
@@ -79,10 +79,10 @@ void RotorInflow::AddResidual(const StepContext& ctx, Eigen::Ref<Eigen::VectorXd
     }
     return;
   }
-  Eigen::VectorXd nu, rate;
+  RotorStates nu, rate;
   ReadStates(ctx, first_state(), n, &nu, &rate);
-  Eigen::MatrixXd slope;
-  const Eigen::VectorXd momentum = Momentum(ctx.force_time(), nu, &slope);
+  StateSlope slope;
+  const RotorStates momentum = Momentum(ctx.force_time(), nu, &slope);
   for (int k = 0; k < n; ++k) {
     const double lag = (k == 0 ? apparent_mass_ : kHarmonicMass * density_ * std::pow(radius_, 3)) * rate[k];
     r[k] += lag + momentum[k];
@@ -96,9 +96,9 @@ void RotorInflow::AddTangent(const StepContext& ctx, Eigen::Ref<Eigen::MatrixXd>
     J.topLeftCorner(n, n) += Eigen::MatrixXd::Identity(n, n);
     return;
   }
-  Eigen::VectorXd nu, rate;
+  RotorStates nu, rate;
   ReadStates(ctx, first_state(), n, &nu, &rate);
-  Eigen::MatrixXd slope;
+  StateSlope slope;
   Momentum(ctx.force_time(), nu, &slope);
   J.topLeftCorner(n, n) += ctx.mid_rate() * slope;
 }
