@@ -57,6 +57,32 @@ TEST(AeroRotorConfig, HarmonicRotorSharesThreeInflowStatesWithItsStrips) {
   }
 }
 
+// Two rotors whose order is not their strips': `main` (harmonic) has the second strip, `tail` (uniform) the first.
+// The strips' states come first (7 nodes of 2 states, then 7 of none), then main's nu_0, nu_c, nu_s (14-16) and
+// tail's nu (17); each rotor lists its own blade's strips, and those read its states.
+TEST(AeroRotorConfig, EachRotorHasItsOwnBladesAndStates) {
+  const Model model = BuildModel(test::LoadInline(
+      GolandUrdf(), kBeam + "aero: {strips: {blade: {beam: wing, semichord: 0.9, a: -0.34, inflow_states: 2}, "
+                            "other: {beam: wing, semichord: 0.9, a: -0.34, inflow_states: 0}}, "
+                            "rotors: {main: {strips: [other], radius: 6.5, inflow: harmonic}, "
+                            "tail: {strips: [blade], radius: 6.5}}}"));
+  ASSERT_EQ(model.aero_rotors().size(), 2u);
+  ASSERT_EQ(model.aero_strips().size(), 14u);
+  EXPECT_EQ(model.num_element_states(), 18);
+  const RotorInflow &main = *model.aero_rotors()[0], &tail = *model.aero_rotors()[1];
+  EXPECT_EQ(main.name(), "main");
+  const std::vector<const BeamStripAero*> blade(model.aero_strips().begin(), model.aero_strips().begin() + 7),
+      other(model.aero_strips().begin() + 7, model.aero_strips().end());
+  EXPECT_EQ(main.strips(), other);
+  EXPECT_EQ(tail.strips(), blade);
+  for (const BeamStripAero* strip : other) {
+    EXPECT_EQ(strip->unknowns().end()[-3], model.element_state_unknown(14));
+    EXPECT_EQ(strip->unknowns().back(), model.element_state_unknown(16));
+  }
+  for (const BeamStripAero* strip : blade) EXPECT_EQ(strip->unknowns().back(), model.element_state_unknown(17));
+  EXPECT_EQ(model.DescribeUnknown(model.element_state_unknown(17)), "rotor tail nu");
+}
+
 TEST(AeroRotorConfig, AxisIsNormalised) {
   EXPECT_EQ(LoadRotor("strips: [blade], radius: 6.5, axis: [0, 0, -2]").aero_rotors.at(0).axis, -Vec3::UnitZ());
 }

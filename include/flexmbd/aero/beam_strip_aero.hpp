@@ -31,7 +31,8 @@ struct StripFlap {
 
 /// The rotor whose blade carries a strip (docs/theory.md, (A13), (A14)).
 struct StripRotor {
-  int state = -1;             ///< the rotor's first inflow state in State::element_states (-1: no rotor)
+  int index = -1;             ///< the rotor's place in aero.rotors (-1: no rotor)
+  int state = -1;             ///< the rotor's first inflow state in State::element_states
   int unknown = -1;           ///< its unknown; the other states' follow
   int num_states = 1;         ///< 1 (uniform nu) or 3 (nu_0, nu_c, nu_s)
   Vec3 axis = Vec3::UnitZ();  ///< the shaft axis in W; the inflow blows along -axis
@@ -119,7 +120,7 @@ class BeamStripAero : public Element {
   Eigen::Matrix<double, 12, 3> ForceMap(const Motion& m) const;
   int num_node_unknowns() const { return has_flap() ? 12 : 6; }
   bool has_flap() const { return flap_.node >= 0; }
-  bool has_rotor() const { return rotor_.state >= 0; }
+  bool has_rotor() const { return rotor_.index >= 0; }
   // The local unknown (and row) of the rotor's first inflow state: after the strip's own states.
   int rotor_local() const { return num_node_unknowns() + num_states(); }
   // The weights' gradient by the strip's place (3 x rotor states): zero for nu_0, (e_c, e_s) / R for the harmonics.

@@ -99,6 +99,7 @@ std::vector<StripRotor> StripRotors(const Model& model, const std::string& prefi
   for (size_t r = 0; r < spec.aero_rotors.size(); ++r) {
     const AeroRotorSpec& rotor = spec.aero_rotors[r];
     StripRotor blade;
+    blade.index = static_cast<int>(r);
     blade.state = state;
     blade.unknown = model.element_state_unknown(state);
     blade.num_states = RotorInflowStates(rotor);

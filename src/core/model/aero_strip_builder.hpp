@@ -20,7 +20,7 @@ std::vector<std::unique_ptr<BeamStripAero>> MakeAeroStrips(const Model& model, c
                                                            const AeroStripSpec& strip, const AeroFlowSpec& flow,
                                                            int first_state, const StripRotor& rotor);
 
-/// The rotor of each strip of spec.aero_strips (in that order; no rotor where state < 0), the rotors' inflows
+/// The rotor of each strip of spec.aero_strips (in that order; no rotor where index < 0), the rotors' inflows
 /// numbered from `first_state` in spec.aero_rotors' order. Throws ConfigError (after `prefix`) for a rotor naming
 /// a strip that is not under aero.strips or that another rotor already has.
 std::vector<StripRotor> StripRotors(const Model& model, const std::string& prefix, const ModelSpec& spec,

@@ -346,20 +346,11 @@ Model BuildModel(const ModelSpec& spec) {
   }
   const std::vector<StripRotor> strip_rotors = StripRotors(model, Prefix(spec), spec, first_rotor_state);
   std::vector<std::vector<const BeamStripAero*>> blades(spec.aero_rotors.size());
-  std::vector<int> rotor_first_state;  // each rotor's first inflow state
-  int next_state = first_rotor_state;
-  for (const AeroRotorSpec& rotor : spec.aero_rotors) {
-    rotor_first_state.push_back(next_state);
-    next_state += RotorInflowStates(rotor);
-  }
   for (size_t k = 0; k < spec.aero_strips.size(); ++k) {
     const StripRotor& rotor = strip_rotors[k];
     for (auto& element : MakeAeroStrips(model, Prefix(spec), spec.aero_strips[k], spec.aero_flow, first_state, rotor)) {
       model.aero_strips_.push_back(element.get());
-      if (rotor.state >= 0) {
-        const auto owner = std::find(rotor_first_state.begin(), rotor_first_state.end(), rotor.state);
-        blades[owner - rotor_first_state.begin()].push_back(element.get());
-      }
+      if (rotor.index >= 0) blades[rotor.index].push_back(element.get());
       add_state_owner(std::move(element));
     }
   }
