@@ -114,5 +114,19 @@ TEST(AeroRotorConfig, StripsMustBeUnderAeroStripsAndOnOneRotor) {
                                         "'main'; expected each strip on one rotor at most");
 }
 
+// The wing, 6 m along x from the hub at the origin (2 elements: node 6 the tip), as the blade: the disc about a centre
+// 4 m off the hub leaves the tip sqrt(6^2 + 4^2) = 7.21 m from the shaft axis; a radius short of the tip leaves it
+// 6 m from the axis; the centre's place along the axis does not count (docs/theory.md, (A14)).
+TEST(AeroRotorConfig, BladesMustLieWithinTheRadiusOfTheShaftAxisThroughTheCentre) {
+  EXPECT_CONFIG_ERROR(BuildModel(LoadRotor("strips: [blade], radius: 6.5, inflow: harmonic, center: [0, 4, 0]")),
+                      "test.yaml: aero.rotors.main.center: [0.000000, 4.000000, 0.000000] leaves node 6 of strip "
+                      "'blade' 7.211103 m from the shaft axis through it, beyond the radius 6.500000 m; expected the "
+                      "disc's centre on the shaft axis (the hub's), every blade node within the radius of it");
+  EXPECT_CONFIG_ERROR(BuildModel(LoadRotor("strips: [blade], radius: 5.9")),
+                      "test.yaml: aero.rotors.main.center: [0.000000, 0.000000, 0.000000] leaves node 6 of strip "
+                      "'blade' 6.000000 m from the shaft axis through it, beyond the radius 5.900000 m");
+  EXPECT_EQ(BuildModel(LoadRotor("strips: [blade], radius: 6.0, center: [0, 0, 40]")).aero_rotors().size(), 1u);
+}
+
 }  // namespace aero_rotor_config_test
 }  // namespace flexmbd

@@ -114,7 +114,7 @@ Strip RotorStrip(AeroRotorSpec::Inflow inflow = AeroRotorSpec::Inflow::kUniform)
   AeroRotorSpec rotor;
   rotor.name = "rotor";
   rotor.strips = {spec.aero_strips.at(0).name};
-  rotor.radius = 6.0;
+  rotor.radius = 7.0;  // the tip stands 6.9 m from the leaning axis through the centre
   rotor.axis = Vec3(0.1, -0.2, 1.0).normalized();
   rotor.inflow = inflow;
   rotor.center = Vec3(-0.7, 1.3, 0.4);

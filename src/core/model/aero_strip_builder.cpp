@@ -12,6 +12,9 @@ namespace {
 // the beam's length, and on the hinge line when its offset from the line b (c - a) aft of the axis along the chord
 // is below this share of the semichord: positions written to six figures are.
 constexpr double kSameStation = 1.0e-6, kOnHinge = 1.0e-3;
+// A blade's node stands within the disc when its distance from the shaft axis exceeds the radius by less than this
+// share of it: a tip written to six figures at the radius does.
+constexpr double kWithinDisc = 1.0e-6;
 
 const BeamInfo& FindBeam(const Model& model, const std::string& name, const std::string& field) {
   std::string names;
@@ -68,6 +71,27 @@ std::vector<StripFlap> StripFlaps(const Model& model, const std::string& prefix,
   }
   return flaps;
 }
+
+// The rotor's disc reaches every node of a blade (docs/theory.md, (A14)): the harmonics weigh a strip by its place
+// relative to the centre, and the centre's component along the axis does not count, so a centre off the shaft axis
+// (or a radius short of the tips) shows as a node farther from the axis through the centre than the radius.
+void CheckBladeWithinDisc(const Model& model, const std::string& prefix, const AeroRotorSpec& rotor,
+                          const AeroStripSpec& strip) {
+  const BeamInfo& beam = StripBeam(model, prefix, strip);
+  for (size_t k = 0; k < beam.nodes.size(); ++k) {
+    const Vec3 offset = model.initial_state().nodes[beam.nodes[k]].x - rotor.center;
+    const double distance = (offset - offset.dot(rotor.axis) * rotor.axis).norm();
+    if (distance > (1.0 + kWithinDisc) * rotor.radius) {
+      const Vec3& c = rotor.center;
+      throw ConfigError(prefix + "aero.rotors." + rotor.name + ".center: [" + std::to_string(c.x()) + ", " +
+                        std::to_string(c.y()) + ", " + std::to_string(c.z()) + "] leaves node " + std::to_string(k) +
+                        " of strip '" + strip.name + "' " + std::to_string(distance) +
+                        " m from the shaft axis through it, beyond the radius " + std::to_string(rotor.radius) +
+                        " m; expected the disc's centre on the shaft axis (the hub's), every blade node within the "
+                        "radius of it");
+    }
+  }
+}
 }  // namespace
 
 const BeamInfo& StripBeam(const Model& model, const std::string& prefix, const AeroStripSpec& strip) {
@@ -120,6 +144,7 @@ std::vector<StripRotor> StripRotors(const Model& model, const std::string& prefi
         throw ConfigError(field + ": strip '" + rotor.strips[k] + "' is already a blade of rotor '" + owner[index] +
                           "'; expected each strip on one rotor at most");
       }
+      CheckBladeWithinDisc(model, prefix, rotor, *strip);
       owner[index] = rotor.name;
       rotors[index] = blade;
     }
