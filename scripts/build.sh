@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Builds flexmbd (Release) in a catkin workspace outside the source tree:
 #   ${FLEXMBD_WS:-$HOME/flexmbd_ws}/src/flexmbd -> this repository.
-# Re-running it rebuilds incrementally. Extra arguments go to catkin_make (e.g. a make target:
+# Re-running it rebuilds incrementally. Extra arguments go to catkin_make and so to ninja (e.g. a target:
 # `build.sh run_tests`).
 set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
@@ -30,6 +30,14 @@ else
   ln -s "${FLEXMBD_REPO_ROOT}" "${link}"
 fi
 
+# Ninja, not make: with make a target's files wait until every library it links is built, so the last batch of the
+# core, then of io, then of the ROS layer compiled alone with the other core idle; ninja compiles a file as soon as
+# its sources and generated headers exist. A workspace configured for make is configured again.
+if [[ -f "${FLEXMBD_WS}/build/Makefile" && ! -f "${FLEXMBD_WS}/build/build.ninja" ]]; then
+  echo "build: workspace ${FLEXMBD_WS} was configured for make; configuring it for ninja (full rebuild)"
+  rm -rf "${FLEXMBD_WS:?}/build"
+fi
+
 echo "build: workspace ${FLEXMBD_WS} (src/flexmbd -> ${FLEXMBD_REPO_ROOT})"
 cd "${FLEXMBD_WS}"
 # catkin fixes the environment of the tests (build/catkin_generated/setup_cached.sh) when CMake first runs,
@@ -42,7 +50,7 @@ if [[ -f "${cached_setup}" ]] && ! grep -q "${python_devel}" "${cached_setup}"; 
   force_cmake=(--force-cmake)
 fi
 mkdir -p "${python_devel}" || die "cannot create ${python_devel}"
-if ! catkin_make "${force_cmake[@]}" -DCMAKE_BUILD_TYPE=Release -DPYTHON_EXECUTABLE=/usr/bin/python3 -j2 "$@" </dev/null; then
+if ! catkin_make --use-ninja "${force_cmake[@]}" -DCMAKE_BUILD_TYPE=Release -DPYTHON_EXECUTABLE=/usr/bin/python3 -j2 "$@" </dev/null; then
   die "catkin_make $* failed in ${FLEXMBD_WS} (see the compiler output above)"
 fi
 echo "build: done (${FLEXMBD_WS}/devel)"

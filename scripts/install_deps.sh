@@ -28,7 +28,7 @@ PACKAGES=(
   # parameter sweeps as Slurm job arrays (scripts/sweep.py --slurm), and the single-node Slurm of its test
   slurm-client slurmctld slurmd munge
   # toolchain
-  cmake g++ make
+  cmake g++ make ninja-build
 )
 
 missing=()

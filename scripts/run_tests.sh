@@ -19,19 +19,20 @@ bash "${scripts}/build.sh" || failed_steps+=("build")
 
 results="${FLEXMBD_WS}/build/test_results"
 rm -rf "${results}"
-make_targets=""
-if [[ -f "${FLEXMBD_WS}/build/Makefile" ]]; then
-  make_targets="$(make -C "${FLEXMBD_WS}/build" help 2>/dev/null || true)"
+targets=""
+if [[ -f "${FLEXMBD_WS}/build/build.ninja" ]]; then
+  targets="$(ninja -C "${FLEXMBD_WS}/build" -t targets all 2>/dev/null | sed -n 's/^\([^:]*\): .*/\1/p' || true)"
 fi
-if [[ -z "${make_targets}" ]]; then
+if [[ -z "${targets}" ]]; then
   failed_steps+=("configuring the workspace")
-elif ! grep -qx '\.\.\. run_tests_flexmbd' <<<"${make_targets}"; then
+elif ! grep -qx 'run_tests_flexmbd' <<<"${targets}"; then
   failed_steps+=("finding tests: CMake defined no test target (run_tests_flexmbd)")
 else
   # run_tests_flexmbd runs each test once its own executable is built (catkin's plain run_tests
-  # first builds every test executable), and -k goes on past a test that does not compile, so one
-  # broken test file does not hide the results of the others. Old results were removed above.
-  bash "${scripts}/build.sh" run_tests_flexmbd -k || failed_steps+=("building or running the tests")
+  # first builds every test executable), and -k 0 goes on past a test that does not compile, so one
+  # broken test file does not hide the results of the others. Old results were removed above. -j4: two tests
+  # besides the two compiles CMakeLists.txt allows (its job pool): most rostests wait on the clock or the master.
+  bash "${scripts}/build.sh" run_tests_flexmbd -k 0 -j4 || failed_steps+=("building or running the tests")
 fi
 
 echo
@@ -48,7 +49,7 @@ while read -r target; do
   if [[ "${suite}" == *_* ]]; then
     expected_suites+=("${suite/_/-}")
   fi
-done < <(sed -n 's/^\.\.\. \(run_tests_flexmbd_[^ ]*\)$/\1/p' <<<"${make_targets}")
+done < <(grep '^run_tests_flexmbd_' <<<"${targets}")
 summary_status=0
 /usr/bin/python3 "${scripts}/summarize_test_results.py" "${results}" "${expected_suites[@]}" || summary_status=$?
 
