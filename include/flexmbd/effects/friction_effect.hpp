@@ -48,6 +48,7 @@ class FrictionEffect : public ModalEffect {
   /// Sliding the way the joint moves (a joint at rest stays stuck: its rate is then consistent already).
   int ReleasedMode(const State& state) const override { return InitialMode(state.qdot[variable_]); }
   StepLimit Limit(const StepContext& ctx, const State& end) const override;
+  bool LocatesEventsFromEndRates() const override { return true; }
   void Commit(const StepContext& ctx, const State& end, EffectState* effect) const override;
 
   /// The initial mode for a starting rate: sliding in its direction, sticking at rest.

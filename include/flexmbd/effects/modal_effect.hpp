@@ -51,6 +51,11 @@ class ModalEffect : public Element {
   /// Otherwise (an impact, a stick-slip transition) the history restarts after the change.
   virtual bool ModeChangesAreSmooth() const { return false; }
 
+  /// True when the redone steps this effect asks for (Limit's retry) locate its events from the end rates of the
+  /// step, which carry the scheme's alternating velocity mode (a slip reversal); false when they come from
+  /// positions, which do not (a stop's gap).
+  virtual bool LocatesEventsFromEndRates() const { return false; }
+
   /// Updates `effect` (which holds the converged step's mode and the start's memory) for the accepted step
   /// ctx that led to `end`: memory, events, dissipated work, mode changes decided at the end of a step.
   virtual void Commit(const StepContext& ctx, const State& end, EffectState* effect) const = 0;

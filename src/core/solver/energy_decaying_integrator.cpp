@@ -4,7 +4,6 @@
 #include <cmath>
 #include <limits>
 
-#include "flexmbd/effects/friction_effect.hpp"
 #include "flexmbd/model/model.hpp"
 #include "flexmbd/solver/joint_rates.hpp"
 #include "flexmbd/solver/sparse_system.hpp"
@@ -319,13 +318,10 @@ bool EnergyDecayingIntegrator::ModesJumped(const State& start, const State& end)
 
 bool EnergyDecayingIntegrator::CommitEffects(State* end, StepLimit* limit) const {
   const StepContext& ctx = builder_.context();
-  const auto& frictions = model_.friction_effects();
   bool end_rate_event = false;
   for (const ModalEffect* effect : model_.modal_effects()) {
     const StepLimit own = effect->Limit(ctx, *end);
-    // Friction locates its slip reversals from end rates; stops locate contacts from gaps, which carry no velocity.
-    const bool friction = std::find(frictions.begin(), frictions.end(), effect) != frictions.end();
-    end_rate_event = end_rate_event || (friction && own.retry < ctx.h);
+    end_rate_event = end_rate_event || (effect->LocatesEventsFromEndRates() && own.retry < ctx.h);
     limit->Merge(own);
   }
   end->effects = modes_;
