@@ -50,7 +50,10 @@ if [[ -f "${cached_setup}" ]] && ! grep -q "${python_devel}" "${cached_setup}"; 
   force_cmake=(--force-cmake)
 fi
 mkdir -p "${python_devel}" || die "cannot create ${python_devel}"
-if ! catkin_make --use-ninja "${force_cmake[@]}" -DCMAKE_BUILD_TYPE=Release -DPYTHON_EXECUTABLE=/usr/bin/python3 -j2 "$@" </dev/null; then
+# -j4: CMakeLists.txt's job pool keeps compiles and links at two; the other two slots run the message generators
+# (short Python scripts that the ROS layer waits for) beside them. With -j2 they ran one at a time beside a single
+# compile once the core's batches were done: a minute of one idle core on a loaded machine.
+if ! catkin_make --use-ninja "${force_cmake[@]}" -DCMAKE_BUILD_TYPE=Release -DPYTHON_EXECUTABLE=/usr/bin/python3 -j4 "$@" </dev/null; then
   die "catkin_make $* failed in ${FLEXMBD_WS} (see the compiler output above)"
 fi
 echo "build: done (${FLEXMBD_WS}/devel)"

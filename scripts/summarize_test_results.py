@@ -7,7 +7,8 @@ Exit status: 0 when at least one test case ran and none failed, 1 otherwise.
 
 Usage: summarize_test_results.py RESULTS_DIR [EXPECTED_SUITE ...]
 An EXPECTED_SUITE (e.g. gtest-test_unit, the result file's name without .xml) that has no result
-file counts as one failed test case: its executable did not build or its test did not run.
+file counts as one failed test case: its executable did not build or its test did not run. A result
+file without any test case counts as one failed test case too.
 """
 
 import os
@@ -65,7 +66,8 @@ def summarize_file(path):
         return label, 0, 1, 0, ["unreadable result file %s: %s" % (path, exc)]
     passed = failed = skipped = 0
     failures = []
-    for case in root.iter("testcase"):
+    cases = list(root.iter("testcase"))
+    for case in cases:
         outcome, message = classify(case)
         if case.get("classname") == ROSTEST_LAUNCH_CLASS and outcome == "passed":
             continue
@@ -83,6 +85,11 @@ def summarize_file(path):
         if errors:
             failed += errors
             failures.append("suite reported %d error(s) without test cases" % errors)
+    # A gtest run that selected no test writes an empty file: a rostest whose --gtest_filter names no suite
+    # of its executable (test/integration/*.test) would otherwise pass.
+    if not cases and failed == 0:
+        failed = 1
+        failures.append("no test case ran (a --gtest_filter that matches no test?)")
     return label, passed, failed, skipped, failures
 
 

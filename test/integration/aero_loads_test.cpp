@@ -14,7 +14,7 @@
 
 namespace flexmbd {
 namespace test {
-namespace {
+namespace aero_loads_test {
 
 constexpr char kNodeName[] = "flexmbd_aero_loads";
 constexpr char kUrdf[] = "config/conner_section/conner_section.urdf";
@@ -87,6 +87,6 @@ TEST_F(AeroLoads, SteadyLoadsHoldTheSpringsAtTheThinAirfoilValue) {
   }
 }
 
-}  // namespace
+}  // namespace aero_loads_test
 }  // namespace test
 }  // namespace flexmbd

@@ -13,7 +13,7 @@
 
 namespace flexmbd {
 namespace test {
-namespace {
+namespace beam_loads_test {
 
 constexpr char kNodeName[] = "flexmbd_beam_loads";
 constexpr char kUrdf[] = "test/data/urdf/beam_arm.urdf";
@@ -99,6 +99,6 @@ TEST_F(BeamLoads, ShearForcesCarryTheWeightBeyondEachStation) {
   }
 }
 
-}  // namespace
+}  // namespace beam_loads_test
 }  // namespace test
 }  // namespace flexmbd

@@ -8,7 +8,7 @@
 
 namespace flexmbd {
 namespace test {
-namespace {
+namespace double_pendulum_launch_test {
 
 // Bound on roslaunch start-up on a loaded 2-core machine; met in about a second.
 const ::ros::Duration kTimeout(30.0);
@@ -47,6 +47,6 @@ TEST(DoublePendulumLaunch, LatchesTheBodyMarkers) {
   EXPECT_EQ(message->markers.size(), 4u);  // per body: a sphere and its sticks
 }
 
-}  // namespace
+}  // namespace double_pendulum_launch_test
 }  // namespace test
 }  // namespace flexmbd

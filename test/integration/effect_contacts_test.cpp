@@ -11,7 +11,7 @@
 
 namespace flexmbd {
 namespace test {
-namespace {
+namespace effect_contacts_test {
 
 constexpr char kNodeName[] = "flexmbd_contacts";
 constexpr char kUrdf[] = "config/pendulum_stop/pendulum_stop.urdf";
@@ -96,6 +96,6 @@ TEST_F(EffectContacts, RecordsMatchTheRunnersCsv) {
   }
 }
 
-}  // namespace
+}  // namespace effect_contacts_test
 }  // namespace test
 }  // namespace flexmbd

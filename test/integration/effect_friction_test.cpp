@@ -11,7 +11,7 @@
 
 namespace flexmbd {
 namespace test {
-namespace {
+namespace effect_friction_test {
 
 constexpr char kNodeName[] = "flexmbd_friction";
 constexpr char kUrdf[] = "config/antenna/antenna.urdf";
@@ -78,6 +78,6 @@ TEST_F(EffectFriction, DissipatedWorkClosesTheEnergyBooks) {
   EXPECT_NEAR(friction_work, energy.dissipated, 1e-9 * (1 + friction_work)) << "friction is the only damper";
 }
 
-}  // namespace
+}  // namespace effect_friction_test
 }  // namespace test
 }  // namespace flexmbd

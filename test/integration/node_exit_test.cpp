@@ -18,7 +18,7 @@
 
 namespace flexmbd {
 namespace test {
-namespace {
+namespace node_exit_test {
 
 constexpr int kBadInputExit = 2;
 constexpr int kRunFailedExit = 3;
@@ -158,6 +158,6 @@ TEST(NodeExit, CsvWriteFailureInTheWriterThreadExitsWithThreeInOneLine) {
       << node.Output();
 }
 
-}  // namespace
+}  // namespace node_exit_test
 }  // namespace test
 }  // namespace flexmbd

@@ -14,7 +14,7 @@
 
 namespace flexmbd {
 namespace test {
-namespace {
+namespace node_services_test {
 
 constexpr char kNodeName[] = "flexmbd_services";
 constexpr double kSamplePeriod = 0.01;
@@ -158,6 +158,6 @@ TEST_F(NodeServices, StepAfterTheEndFailsAndResetRunsAgain) {
   EXPECT_NEAR(TimeOf(recorder_->Snapshot().joint_states.back()), kEndTime, kStampResolution);
 }
 
-}  // namespace
+}  // namespace node_services_test
 }  // namespace test
 }  // namespace flexmbd

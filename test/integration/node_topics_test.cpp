@@ -13,7 +13,7 @@
 
 namespace flexmbd {
 namespace test {
-namespace {
+namespace node_topics_test {
 
 constexpr char kNodeName[] = "flexmbd_topics";
 constexpr char kUrdf[] = "config/double_pendulum/double_pendulum.urdf";
@@ -118,6 +118,6 @@ TEST_F(NodeTopics, LinkFramesStayOnTheirJoints) {
   }
 }
 
-}  // namespace
+}  // namespace node_topics_test
 }  // namespace test
 }  // namespace flexmbd

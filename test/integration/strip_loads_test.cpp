@@ -15,7 +15,7 @@
 
 namespace flexmbd {
 namespace test {
-namespace {
+namespace strip_loads_test {
 
 constexpr char kNodeName[] = "flexmbd_strip_loads";
 constexpr char kUrdf[] = "config/goland_wing/goland_wing.urdf";
@@ -83,6 +83,6 @@ TEST_F(StripLoads, SteadyLoadsFollowTheClosedFormTwist) {
   }
 }
 
-}  // namespace
+}  // namespace strip_loads_test
 }  // namespace test
 }  // namespace flexmbd
