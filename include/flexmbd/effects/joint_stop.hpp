@@ -5,7 +5,8 @@
 /// contact force F >= 0 acts along dg/dq, a generalised force F s rho on q.
 ///   RigidStop    g >= 0. A step that ends with g_f < 0 is redone with g_f = g_i enforced by a multiplier,
 ///                the contact force, which does no work because the gap does not change over the step; a
-///                step in contact whose multiplier would pull is redone open.
+///                step in contact whose multiplier would pull is redone open. With adaptive steps the step
+///                that begins an impact holds the joint no longer than the local error test allows (C5').
 ///   ElasticStop  F = V'(a) [1 + chi a_dot] at approach a = -g > 0 (ContactLaw), with the exact discrete
 ///                gradient of V so the books of stored and dissipated energy close.
 /// A stop with a retraction rule stops acting at the first separation after a named variable's speed
@@ -51,19 +52,31 @@ class JointStop : public ModalEffect {
 
 class RigidStop : public JointStop {
  public:
-  RigidStop(const StopSpec& spec, int variable, int variable_unknown, int multiplier, int multiplier_unknown, int slot);
+  RigidStop(const StopSpec& spec, int variable, int variable_unknown, int multiplier, int multiplier_unknown, int slot,
+            const SolverSpec& solver);
   void AddResidual(const StepContext& ctx, Eigen::Ref<Eigen::VectorXd> r,
                    Eigen::Ref<Eigen::VectorXd> magnitude) const override;
   void AddTangent(const StepContext& ctx, Eigen::Ref<Eigen::MatrixXd> J) const override;
   int ReviseMode(const StepContext& ctx) const override;
   /// A plastic impact, or a contact that goes on after its first step while the joint still moves (C2a').
   bool ComesToRest(const State& start, const State& end, double negligible_rate) const override;
+  /// The approach rule (C5), and with adaptive steps the impact rule (C5'): a step that crosses the stop or begins
+  /// an impact is redone when it would hold the joint longer than the local error test allows.
+  StepLimit Limit(const StepContext& ctx, const State& end) const override;
   /// Remembers the fastest impact.
   void Commit(const StepContext& ctx, const State& end, EffectState* effect) const override;
   StopSample Sample(const State& state) const override;
 
  private:
+  // True when a contact begun with the gap closing at `closing` [m/s] is an impact that rebounds, not a plastic
+  // one that comes to rest (C2a'); `fastest` is the fastest impact the stop has seen.
+  static bool Rebounds(double closing, double fastest);
+  // The longest step that may begin an impact from `start` [s] (C5'): infinity with fixed steps or for a plastic
+  // contact.
+  double LongestImpactStep(const State& start) const;
+
   int multiplier_;
+  SolverSpec solver_;
 };
 
 class ElasticStop : public JointStop {

@@ -2,6 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
+
+#include "flexmbd/solver/time_integrator.hpp"
 
 namespace flexmbd {
 namespace {
@@ -61,8 +64,8 @@ void JointStop::Commit(const StepContext& ctx, const State& end, EffectState* ef
 }
 
 RigidStop::RigidStop(const StopSpec& spec, int variable, int variable_unknown, int multiplier, int multiplier_unknown,
-                     int slot)
-    : JointStop(spec, variable, slot), multiplier_(multiplier) {
+                     int slot, const SolverSpec& solver)
+    : JointStop(spec, variable, slot), multiplier_(multiplier), solver_(solver) {
   unknowns_ = {variable_unknown, multiplier_unknown};
 }
 
@@ -83,14 +86,44 @@ void RigidStop::AddResidual(const StepContext& ctx, Eigen::Ref<Eigen::VectorXd> 
   r[1] += ctx.at_end() ? Gap(q.q_f) : Gap(q.q_f) - Gap(q.q_i);
 }
 
+bool RigidStop::Rebounds(double closing, double fastest) { return closing >= kPlasticFraction * fastest; }
+
 bool RigidStop::ComesToRest(const State& start, const State& end, double negligible_rate) const {
   const EffectState& before = start.effects[slot()];
   if (end.effects[slot()].mode != kContact) return false;
-  if (before.mode != kContact) {
-    return -GapRate(start.qdot[variable()]) < kPlasticFraction * before.reference;
-  }
+  if (before.mode != kContact) return !Rebounds(-GapRate(start.qdot[variable()]), before.reference);
   const double rest_rate = std::max(negligible_rate, kPlasticFraction * before.reference);
   return std::abs(GapRate(end.qdot[variable()])) > rest_rate;
+}
+
+double RigidStop::LongestImpactStep(const State& start) const {
+  const double rate = start.qdot[variable()];
+  const bool impact = Rebounds(-GapRate(rate), start.effects[slot()].reference);
+  // A step in contact holds the joint where it began (C2a), while the exact motion turns at the stop and leaves it:
+  // at the step's end the two are up to |qdot_i| h apart, the step's local error in the joint variable. The error
+  // test (T12) accepts floor + error_tol h peak_joint_rate there, so the step may last at most
+  // floor / (|qdot_i| - error_tol peak_joint_rate), and never less than dt_min (C5').
+  const double excess = std::abs(rate) - solver_.error_tol * start.peak_joint_rate;
+  if (!solver_.adaptive || !impact || excess <= 0) return std::numeric_limits<double>::infinity();
+  return std::max(JointErrorFloor(solver_) / excess, solver_.dt_min);
+}
+
+StepLimit RigidStop::Limit(const StepContext& ctx, const State& end) const {
+  StepLimit limit = JointStop::Limit(ctx, end);
+  const State& start = *ctx.start;
+  const double longest = LongestImpactStep(start);
+  if (ctx.h <= longest || start.effects[slot()].mode == kContact) return limit;
+  // A step longer than that which crossed the stop (redone to land before it, (C5)) or began an impact is redone
+  // to end before the stop, 50 times closer to it, as long as that is at least `longest`; the step of `longest`
+  // that then meets the stop begins the contact wherever it starts (ReviseMode). Never shorter than dt_min.
+  const VariableStep& q = (*ctx.variables)[variable()];
+  const double g_i = std::max(Gap(q.q_i), 0.0);
+  double t_stop = 0;  // the time to the stop: interpolated over the step that crossed it, else at the start's rate
+  if (TrialMode(ctx) == kOpen && limit.retry < ctx.h) t_stop = ctx.h * g_i / (g_i - Gap(q.q_f));
+  else if (TrialMode(ctx) == kContact) t_stop = g_i / -GapRate(start.qdot[variable()]);
+  else return limit;
+  limit.retry = std::max(kEventLanding * t_stop, longest);
+  return limit;
 }
 
 void RigidStop::Commit(const StepContext& ctx, const State& end, EffectState* effect) const {
@@ -114,8 +147,11 @@ int RigidStop::ReviseMode(const StepContext& ctx) const {
   const VariableStep& q = (*ctx.variables)[variable()];
   const double g_i = Gap(q.q_i), g_f = Gap(q.q_f);
   // Only a closing gap begins a contact: a joint that a plastic impact left a round-off inside the stop and
-  // that moves off it stays open.
-  if (mode == kOpen && g_f < 0 && g_f < g_i && g_i <= kEventFraction * (g_i - g_f)) return kContact;
+  // that moves off it stays open. It begins close to the stop (C5), or anywhere in a step short enough to begin
+  // an impact (C5'), whose travel is within the error test's floor.
+  const double longest = LongestImpactStep(*ctx.start);
+  const bool close = g_i <= kEventFraction * (g_i - g_f) || (std::isfinite(longest) && ctx.h <= longest);
+  if (mode == kOpen && g_f < 0 && g_f < g_i && close) return kContact;
   if (mode == kContact && (*ctx.lambda)[multiplier_] < 0) return kOpen;
   return mode;
 }
