@@ -6,7 +6,7 @@
 ///   RigidStop    g >= 0. A step that ends with g_f < 0 is redone with g_f = g_i enforced by a multiplier,
 ///                the contact force, which does no work because the gap does not change over the step; a
 ///                step in contact whose multiplier would pull is redone open. With adaptive steps the step
-///                that begins an impact holds the joint no longer than the local error test allows (C5').
+///                that begins an impact meets the stop at its midpoint (C5').
 ///   ElasticStop  F = V'(a) [1 + chi a_dot] at approach a = -g > 0 (ContactLaw), with the exact discrete
 ///                gradient of V so the books of stored and dissipated energy close.
 /// A stop with a retraction rule stops acting at the first separation after a named variable's speed
@@ -60,8 +60,8 @@ class RigidStop : public JointStop {
   int ReviseMode(const StepContext& ctx) const override;
   /// A plastic impact, or a contact that goes on after its first step while the joint still moves (C2a').
   bool ComesToRest(const State& start, const State& end, double negligible_rate) const override;
-  /// The approach rule (C5), and with adaptive steps the impact rule (C5'): a step that crosses the stop or begins
-  /// an impact is redone when it would hold the joint longer than the local error test allows.
+  /// The approach rule (C5), and with adaptive steps the impact rule (C5'): a step that crosses the stop away from
+  /// its midpoint is redone, and an open step closing on it bounds the next to twice the time to the stop.
   StepLimit Limit(const StepContext& ctx, const State& end) const override;
   /// Remembers the fastest impact.
   void Commit(const StepContext& ctx, const State& end, EffectState* effect) const override;
@@ -71,9 +71,17 @@ class RigidStop : public JointStop {
   // True when a contact begun with the gap closing at `closing` [m/s] is an impact that rebounds, not a plastic
   // one that comes to rest (C2a'); `fastest` is the fastest impact the stop has seen.
   static bool Rebounds(double closing, double fastest);
-  // The longest step that may begin an impact from `start` [s] (C5'): infinity with fixed steps or for a plastic
-  // contact.
-  double LongestImpactStep(const State& start) const;
+  // True when, with adaptive steps, an impact from `start` rebounds: its contact step then lasts twice the time to
+  // the stop, exact for a constant acceleration (C5').
+  bool MeetsStopAtMidstep(const State& start) const;
+  // The first time [s] at which a gap [m] moving at `rate` [m/s] with constant `acceleration` [m/s^2] closes:
+  // 0 for a closed gap, infinity when it never does.
+  static double TimeToStop(double gap, double rate, double acceleration);
+  // When the converged step's gap crosses the stop [s], on the parabola through its ends at the start's rate.
+  double CrossingTime(const StepContext& ctx) const;
+  // True when the step is long enough to be the impact's contact step: twice its crossing time within the local
+  // error test's allowance, or dt_min.
+  bool SpansTheImpact(const StepContext& ctx) const;
 
   int multiplier_;
   SolverSpec solver_;

@@ -96,33 +96,57 @@ bool RigidStop::ComesToRest(const State& start, const State& end, double negligi
   return std::abs(GapRate(end.qdot[variable()])) > rest_rate;
 }
 
-double RigidStop::LongestImpactStep(const State& start) const {
-  const double rate = start.qdot[variable()];
-  const bool impact = Rebounds(-GapRate(rate), start.effects[slot()].reference);
-  // A step in contact holds the joint where it began (C2a), while the exact motion turns at the stop and leaves it:
-  // at the step's end the two are up to |qdot_i| h apart, the step's local error in the joint variable. The error
-  // test (T12) accepts floor + error_tol h peak_joint_rate there, so the step may last at most
-  // floor / (|qdot_i| - error_tol peak_joint_rate), and never less than dt_min (C5').
-  const double excess = std::abs(rate) - solver_.error_tol * start.peak_joint_rate;
-  if (!solver_.adaptive || !impact || excess <= 0) return std::numeric_limits<double>::infinity();
-  return std::max(JointErrorFloor(solver_) / excess, solver_.dt_min);
+bool RigidStop::MeetsStopAtMidstep(const State& start) const {
+  return solver_.adaptive && Rebounds(-GapRate(start.qdot[variable()]), start.effects[slot()].reference);
+}
+
+double RigidStop::TimeToStop(double gap, double rate, double acceleration) {
+  if (gap <= 0) return 0;
+  // The smaller positive root of gap + rate t + acceleration t^2 / 2 = 0, in the form that keeps its digits when
+  // the acceleration is small; none when the discriminant is negative or both roots are negative.
+  const double discriminant = rate * rate - 2 * acceleration * gap;
+  const double denominator = discriminant < 0 ? -1.0 : std::sqrt(discriminant) - rate;
+  return denominator > 0 ? 2 * gap / denominator : std::numeric_limits<double>::infinity();
+}
+
+double RigidStop::CrossingTime(const StepContext& ctx) const {
+  const VariableStep& q = (*ctx.variables)[variable()];
+  const double g_i = Gap(q.q_i), rate = GapRate(q.qdot_i), h = ctx.h;
+  // The constant acceleration that takes the gap from g_i at the start's rate to the step's end g_f: the parabola
+  // passes through both ends, so it crosses the stop within the step.
+  return TimeToStop(g_i, rate, 2 * (Gap(q.q_f) - g_i - h * rate) / (h * h));
+}
+
+bool RigidStop::SpansTheImpact(const StepContext& ctx) const {
+  if (ctx.h <= solver_.dt_min) return true;
+  // A contact step of length h instead of 2 t_x moves the rebound by |qdot_i| |h - 2 t_x| in the joint: it may do
+  // so by as much as the local error test (T12) accepts there.
+  const State& start = *ctx.start;
+  const double allowance = JointErrorFloor(solver_) + solver_.error_tol * ctx.h * start.peak_joint_rate;
+  return std::abs(start.qdot[variable()]) * std::abs(ctx.h - 2 * CrossingTime(ctx)) <= allowance;
 }
 
 StepLimit RigidStop::Limit(const StepContext& ctx, const State& end) const {
-  StepLimit limit = JointStop::Limit(ctx, end);
-  const State& start = *ctx.start;
-  const double longest = LongestImpactStep(start);
-  if (ctx.h <= longest || start.effects[slot()].mode == kContact) return limit;
-  // A step longer than that which crossed the stop (redone to land before it, (C5)) or began an impact is redone
-  // to end before the stop, 50 times closer to it, as long as that is at least `longest`; the step of `longest`
-  // that then meets the stop begins the contact wherever it starts (ReviseMode). Never shorter than dt_min.
+  if (!MeetsStopAtMidstep(*ctx.start)) return JointStop::Limit(ctx, end);
+  StepLimit limit;
+  if (TrialMode(ctx) != kOpen) return limit;
   const VariableStep& q = (*ctx.variables)[variable()];
-  const double g_i = std::max(Gap(q.q_i), 0.0);
-  double t_stop = 0;  // the time to the stop: interpolated over the step that crossed it, else at the start's rate
-  if (TrialMode(ctx) == kOpen && limit.retry < ctx.h) t_stop = ctx.h * g_i / (g_i - Gap(q.q_f));
-  else if (TrialMode(ctx) == kContact) t_stop = g_i / -GapRate(start.qdot[variable()]);
-  else return limit;
-  limit.retry = std::max(kEventLanding * t_stop, longest);
+  if (Gap(q.q_f) < 0 && Gap(q.q_f) < Gap(q.q_i)) {
+    // A step that crossed the stop off its midpoint (ReviseMode): one that crossed in its first half is redone
+    // with the crossing at its midpoint; one that crossed later lands where the next step, twice the time left,
+    // meets the stop at its midpoint, and at least halfway to the crossing, so that the controller (which at
+    // most doubles a step) can let the next step be that long (C5').
+    const double t_x = CrossingTime(ctx), h = ctx.h;
+    limit.retry = std::max(2 * t_x <= h ? 2 * t_x : std::max(t_x - h / 2, t_x / 2), solver_.dt_min);
+    return limit;
+  }
+  // An open step closing on the stop: the next step, if it reaches the stop, is the contact step whose midpoint
+  // the stop is at the end's rate and acceleration.
+  if (MeetsStopAtMidstep(end)) {
+    const int v = variable();
+    const double acceleration = end.qddot_prev.size() > v ? GapRate(end.qddot_prev[v]) : 0.0;
+    limit.next = std::max(2 * TimeToStop(Gap(end.q[v]), GapRate(end.qdot[v]), acceleration), solver_.dt_min);
+  }
   return limit;
 }
 
@@ -147,11 +171,12 @@ int RigidStop::ReviseMode(const StepContext& ctx) const {
   const VariableStep& q = (*ctx.variables)[variable()];
   const double g_i = Gap(q.q_i), g_f = Gap(q.q_f);
   // Only a closing gap begins a contact: a joint that a plastic impact left a round-off inside the stop and
-  // that moves off it stays open. It begins close to the stop (C5), or anywhere in a step short enough to begin
-  // an impact (C5'), whose travel is within the error test's floor.
-  const double longest = LongestImpactStep(*ctx.start);
-  const bool close = g_i <= kEventFraction * (g_i - g_f) || (std::isfinite(longest) && ctx.h <= longest);
-  if (mode == kOpen && g_f < 0 && g_f < g_i && close) return kContact;
+  // that moves off it stays open. An impact with adaptive steps begins in a step that meets the stop at its
+  // midpoint (C5'), any other contact close to the stop (C5).
+  if (mode == kOpen && g_f < 0 && g_f < g_i) {
+    const bool close = g_i <= kEventFraction * (g_i - g_f);
+    if (g_i <= 0 || (MeetsStopAtMidstep(*ctx.start) ? SpansTheImpact(ctx) : close)) return kContact;
+  }
   if (mode == kContact && (*ctx.lambda)[multiplier_] < 0) return kOpen;
   return mode;
 }
