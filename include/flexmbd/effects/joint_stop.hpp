@@ -5,8 +5,7 @@
 /// contact force F >= 0 acts along dg/dq, a generalised force F s rho on q.
 ///   RigidStop    g >= 0. A step that ends with g_f < 0 is redone with g_f = g_i enforced by a multiplier,
 ///                the contact force, which does no work because the gap does not change over the step; a
-///                step in contact whose multiplier would pull is redone open. With adaptive steps the step
-///                that begins an impact meets the stop at its midpoint (C5').
+///                step in contact whose multiplier would pull is redone open.
 ///   ElasticStop  F = V'(a) [1 + chi a_dot] at approach a = -g > 0 (ContactLaw), with the exact discrete
 ///                gradient of V so the books of stored and dissipated energy close.
 /// A stop with a retraction rule stops acting at the first separation after a named variable's speed
@@ -52,39 +51,19 @@ class JointStop : public ModalEffect {
 
 class RigidStop : public JointStop {
  public:
-  RigidStop(const StopSpec& spec, int variable, int variable_unknown, int multiplier, int multiplier_unknown, int slot,
-            const SolverSpec& solver);
+  RigidStop(const StopSpec& spec, int variable, int variable_unknown, int multiplier, int multiplier_unknown, int slot);
   void AddResidual(const StepContext& ctx, Eigen::Ref<Eigen::VectorXd> r,
                    Eigen::Ref<Eigen::VectorXd> magnitude) const override;
   void AddTangent(const StepContext& ctx, Eigen::Ref<Eigen::MatrixXd> J) const override;
   int ReviseMode(const StepContext& ctx) const override;
   /// A plastic impact, or a contact that goes on after its first step while the joint still moves (C2a').
   bool ComesToRest(const State& start, const State& end, double negligible_rate) const override;
-  /// The approach rule (C5), and with adaptive steps the impact rule (C5'): a step that crosses the stop away from
-  /// its midpoint is redone, and an open step closing on it bounds the next to twice the time to the stop.
-  StepLimit Limit(const StepContext& ctx, const State& end) const override;
   /// Remembers the fastest impact.
   void Commit(const StepContext& ctx, const State& end, EffectState* effect) const override;
   StopSample Sample(const State& state) const override;
 
  private:
-  // True when a contact begun with the gap closing at `closing` [m/s] is an impact that rebounds, not a plastic
-  // one that comes to rest (C2a'); `fastest` is the fastest impact the stop has seen.
-  static bool Rebounds(double closing, double fastest);
-  // True when, with adaptive steps, an impact from `start` rebounds: its contact step then lasts twice the time to
-  // the stop, exact for a constant acceleration (C5').
-  bool MeetsStopAtMidstep(const State& start) const;
-  // The first time [s] at which a gap [m] moving at `rate` [m/s] with constant `acceleration` [m/s^2] closes:
-  // 0 for a closed gap, infinity when it never does.
-  static double TimeToStop(double gap, double rate, double acceleration);
-  // When the converged step's gap crosses the stop [s], on the parabola through its ends at the start's rate.
-  double CrossingTime(const StepContext& ctx) const;
-  // True when the step is long enough to be the impact's contact step: twice its crossing time within the local
-  // error test's allowance, or dt_min.
-  bool SpansTheImpact(const StepContext& ctx) const;
-
   int multiplier_;
-  SolverSpec solver_;
 };
 
 class ElasticStop : public JointStop {

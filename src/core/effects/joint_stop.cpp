@@ -2,9 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
-
-#include "flexmbd/solver/time_integrator.hpp"
 
 namespace flexmbd {
 namespace {
@@ -64,8 +61,8 @@ void JointStop::Commit(const StepContext& ctx, const State& end, EffectState* ef
 }
 
 RigidStop::RigidStop(const StopSpec& spec, int variable, int variable_unknown, int multiplier, int multiplier_unknown,
-                     int slot, const SolverSpec& solver)
-    : JointStop(spec, variable, slot), multiplier_(multiplier), solver_(solver) {
+                     int slot)
+    : JointStop(spec, variable, slot), multiplier_(multiplier) {
   unknowns_ = {variable_unknown, multiplier_unknown};
 }
 
@@ -86,68 +83,14 @@ void RigidStop::AddResidual(const StepContext& ctx, Eigen::Ref<Eigen::VectorXd> 
   r[1] += ctx.at_end() ? Gap(q.q_f) : Gap(q.q_f) - Gap(q.q_i);
 }
 
-bool RigidStop::Rebounds(double closing, double fastest) { return closing >= kPlasticFraction * fastest; }
-
 bool RigidStop::ComesToRest(const State& start, const State& end, double negligible_rate) const {
   const EffectState& before = start.effects[slot()];
   if (end.effects[slot()].mode != kContact) return false;
-  if (before.mode != kContact) return !Rebounds(-GapRate(start.qdot[variable()]), before.reference);
+  if (before.mode != kContact) {
+    return -GapRate(start.qdot[variable()]) < kPlasticFraction * before.reference;
+  }
   const double rest_rate = std::max(negligible_rate, kPlasticFraction * before.reference);
   return std::abs(GapRate(end.qdot[variable()])) > rest_rate;
-}
-
-bool RigidStop::MeetsStopAtMidstep(const State& start) const {
-  return solver_.adaptive && Rebounds(-GapRate(start.qdot[variable()]), start.effects[slot()].reference);
-}
-
-double RigidStop::TimeToStop(double gap, double rate, double acceleration) {
-  if (gap <= 0) return 0;
-  // The smaller positive root of gap + rate t + acceleration t^2 / 2 = 0, in the form that keeps its digits when
-  // the acceleration is small; none when the discriminant is negative or both roots are negative.
-  const double discriminant = rate * rate - 2 * acceleration * gap;
-  const double denominator = discriminant < 0 ? -1.0 : std::sqrt(discriminant) - rate;
-  return denominator > 0 ? 2 * gap / denominator : std::numeric_limits<double>::infinity();
-}
-
-double RigidStop::CrossingTime(const StepContext& ctx) const {
-  const VariableStep& q = (*ctx.variables)[variable()];
-  const double g_i = Gap(q.q_i), rate = GapRate(q.qdot_i), h = ctx.h;
-  // The constant acceleration that takes the gap from g_i at the start's rate to the step's end g_f: the parabola
-  // passes through both ends, so it crosses the stop within the step.
-  return TimeToStop(g_i, rate, 2 * (Gap(q.q_f) - g_i - h * rate) / (h * h));
-}
-
-bool RigidStop::SpansTheImpact(const StepContext& ctx) const {
-  if (ctx.h <= solver_.dt_min) return true;
-  // A contact step of length h instead of 2 t_x moves the rebound by |qdot_i| |h - 2 t_x| in the joint: it may do
-  // so by as much as the local error test (T12) accepts there.
-  const State& start = *ctx.start;
-  const double allowance = JointErrorFloor(solver_) + solver_.error_tol * ctx.h * start.peak_joint_rate;
-  return std::abs(start.qdot[variable()]) * std::abs(ctx.h - 2 * CrossingTime(ctx)) <= allowance;
-}
-
-StepLimit RigidStop::Limit(const StepContext& ctx, const State& end) const {
-  if (!MeetsStopAtMidstep(*ctx.start)) return JointStop::Limit(ctx, end);
-  StepLimit limit;
-  if (TrialMode(ctx) != kOpen) return limit;
-  const VariableStep& q = (*ctx.variables)[variable()];
-  if (Gap(q.q_f) < 0 && Gap(q.q_f) < Gap(q.q_i)) {
-    // A step that crossed the stop off its midpoint (ReviseMode): one that crossed in its first half is redone
-    // with the crossing at its midpoint; one that crossed later lands where the next step, twice the time left,
-    // meets the stop at its midpoint, and at least halfway to the crossing, so that the controller (which at
-    // most doubles a step) can let the next step be that long (C5').
-    const double t_x = CrossingTime(ctx), h = ctx.h;
-    limit.retry = std::max(2 * t_x <= h ? 2 * t_x : std::max(t_x - h / 2, t_x / 2), solver_.dt_min);
-    return limit;
-  }
-  // An open step closing on the stop: the next step, if it reaches the stop, is the contact step whose midpoint
-  // the stop is at the end's rate and acceleration.
-  if (MeetsStopAtMidstep(end)) {
-    const int v = variable();
-    const double acceleration = end.qddot_prev.size() > v ? GapRate(end.qddot_prev[v]) : 0.0;
-    limit.next = std::max(2 * TimeToStop(Gap(end.q[v]), GapRate(end.qdot[v]), acceleration), solver_.dt_min);
-  }
-  return limit;
 }
 
 void RigidStop::Commit(const StepContext& ctx, const State& end, EffectState* effect) const {
@@ -171,12 +114,8 @@ int RigidStop::ReviseMode(const StepContext& ctx) const {
   const VariableStep& q = (*ctx.variables)[variable()];
   const double g_i = Gap(q.q_i), g_f = Gap(q.q_f);
   // Only a closing gap begins a contact: a joint that a plastic impact left a round-off inside the stop and
-  // that moves off it stays open. An impact with adaptive steps begins in a step that meets the stop at its
-  // midpoint (C5'), any other contact close to the stop (C5).
-  if (mode == kOpen && g_f < 0 && g_f < g_i) {
-    const bool close = g_i <= kEventFraction * (g_i - g_f);
-    if (g_i <= 0 || (MeetsStopAtMidstep(*ctx.start) ? SpansTheImpact(ctx) : close)) return kContact;
-  }
+  // that moves off it stays open.
+  if (mode == kOpen && g_f < 0 && g_f < g_i && g_i <= kEventFraction * (g_i - g_f)) return kContact;
   if (mode == kContact && (*ctx.lambda)[multiplier_] < 0) return kOpen;
   return mode;
 }

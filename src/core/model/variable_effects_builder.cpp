@@ -86,7 +86,7 @@ void VariableEffectsBuilder::AddStop(const std::string& where, const std::string
   std::unique_ptr<JointStop> element;
   if (stop.kind == StopSpec::Kind::kRigid) {
     element = std::make_unique<RigidStop>(stop, v, model_.variable_unknown(v), *multiplier,
-                                          model_.multiplier_unknown(*multiplier), slot, model_.solver());
+                                          model_.multiplier_unknown(*multiplier), slot);
     model_.multiplier_names_.push_back("stop " + stop.name + " of " + model_.variable_names_[v]);
     ++*multiplier;
   } else {
