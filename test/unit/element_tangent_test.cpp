@@ -218,17 +218,22 @@ TEST(ElementTangent, RigidStopMatchesFiniteDifference) {
   }
 }
 
-TEST(ElementTangent, ElasticStopMatchesFiniteDifference) {
-  // Reference: central differences of -s rho DG (1 + chi (a_f - a_i)/h) (C2b) for a Hertz stop, in a step that
-  // stays in contact, one that closes the gap and one that opens it (the discrete gradient over signed
-  // approaches), and of -s rho DG in statics. The approaches stay >= 6e-4 m from 0, far beyond the difference
-  // step (3e-7 m), so no difference straddles the kink of V at a = 0.
+// A Hertz stop of 1e4 N/m^1.5 at radius 0.3 m with restitution 0.6.
+StopSpec HertzStop() {
   StopSpec elastic;
   elastic.radius = 0.3;
   elastic.kind = StopSpec::Kind::kElastic;
   elastic.stiffness = 1.0e4;
   elastic.restitution = 0.6;
-  const Model model = ModelWithStop(elastic);
+  return elastic;
+}
+
+TEST(ElementTangent, ElasticStopMatchesFiniteDifference) {
+  // Reference: central differences of -s rho DG (1 + chi (a_f - a_i)/h) (C2b) for a Hertz stop, in a step that
+  // stays in contact, one that closes the gap and one that opens it (the discrete gradient over signed
+  // approaches), and of -s rho DG in statics. The approaches stay >= 6e-4 m from 0, far beyond the difference
+  // step (3e-7 m), so no difference straddles the kink of V at a = 0.
+  const Model model = ModelWithStop(HertzStop());
   ExpectDynamicTangents<ElasticStop>(model, 214, AtStop(model, -0.03, -0.02, JointStop::kContact));
   ExpectDynamicTangents<ElasticStop>(model, 215, AtStop(model, 0.01, -0.03, JointStop::kOpen));
   ExpectDynamicTangents<ElasticStop>(model, 216, AtStop(model, -0.01, 0.012, JointStop::kContact));
@@ -241,12 +246,7 @@ TEST(ElementTangent, ElasticStopEndPointPartsMatchFiniteDifference) {
   // contact 9e-3 m deep, closing at 0.09 m/s, remembered approach speed 0.5 m/s. The stiffness was once the discrete
   // gradient's derivative in the end alone, V''/2, which halved a stop's stiffness in every eigen-analysis, and the
   // damping was missing.
-  StopSpec elastic;
-  elastic.radius = 0.3;
-  elastic.kind = StopSpec::Kind::kElastic;
-  elastic.stiffness = 1.0e4;
-  elastic.restitution = 0.6;
-  const Model model = ModelWithStop(elastic);
+  const Model model = ModelWithStop(HertzStop());
   State start = model.initial_state();
   start.q[0] = kStopAngle - 0.03;
   start.effects[0] = EffectState{JointStop::kContact, 0.5, 0.0, 0};

@@ -5,8 +5,6 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <fstream>
-#include <sstream>
 #include <string>
 
 #include "runner_output.hpp"
@@ -20,12 +18,7 @@ constexpr char kPendulumUrdf[] = "test/data/urdf/pend_rev.urdf";
 // on an upper stop of radius 0.1 m with a torque of 1 N m (rest 1 rad, stop at 0), no gravity.
 constexpr double kInertia = 1.0001, kSpring = 1.0, kRadius = 0.1;
 
-std::string DataYaml(const std::string& name) {
-  std::ifstream file(std::string(FLEXMBD_SOURCE_DIR) + "/test/data/yaml/" + name);
-  std::ostringstream text;
-  text << file.rdbuf();
-  return text.str();
-}
+std::string DataYaml(const std::string& name) { return test::SourceText("test/data/yaml/" + name); }
 
 double Hz(double stiffness, double inertia) { return std::sqrt(stiffness / inertia) / (2.0 * kPi); }
 

@@ -6,8 +6,6 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <fstream>
-#include <sstream>
 #include <string>
 #include <vector>
 
@@ -29,12 +27,7 @@ std::vector<double> EquilibriumRow(const std::string& urdf, std::string yaml_tex
   return csv->rows.empty() ? std::vector<double>() : csv->rows.back();
 }
 
-std::string DataYaml(const std::string& name) {
-  std::ifstream file(std::string(FLEXMBD_SOURCE_DIR) + "/test/data/yaml/" + name);
-  std::ostringstream text;
-  text << file.rdbuf();
-  return text.str();
-}
+std::string DataYaml(const std::string& name) { return test::SourceText("test/data/yaml/" + name); }
 
 TEST(StaticRigidStop, BlockStartedOnItsStopRestsThereWithItsWeightAlongTheIncline) {
   // incline.urdf: 2 kg on a frictionless 30 deg incline, the rigid stop 0.5 m downhill where it starts: it stays at
@@ -73,26 +66,25 @@ TEST(StaticRigidStop, HingedBladeRestsOnItsDroopStopAsAClampedCantilever) {
   EXPECT_NEAR(-row[csv.Column("beam.blade.s1.uz")], tip, kGeometric * tip);
 }
 
+// The static equilibrium of pend_rev.urdf started at 0.3 rad on a rigid stop on `side` (radius 0.1 m).
+std::vector<double> PendulumOnStop(const std::string& side, test::CsvTable* csv) {
+  const std::string yaml = "joints: {pivot: {initial: {position: 0.3}, backlash: {" + side + ": 0.3, radius_" + side +
+                           ": 0.1, stop: {type: rigid}}}}\nsolver: {analysis: static}";
+  return EquilibriumRow("test/data/urdf/pend_rev.urdf", yaml, "pend_" + side, csv);
+}
+
 TEST(StaticRigidStop, StopThatWouldPullOpensAndOneThatPushesHolds) {
   // pend_rev.urdf hangs 1 kg 1 m below its pivot; started at 0.3 rad on a stop. A lower stop there holds it against
   // gravity's m g l sin(0.3) over its radius 0.1 m; an upper one would pull it, opens, and the pendulum hangs at 0.
   // Both to the static solve's round-off.
   constexpr double kRoundOff = 1.0e-9;
   test::CsvTable csv;
-  std::vector<double> row = EquilibriumRow(
-      "test/data/urdf/pend_rev.urdf",
-      "joints: {pivot: {initial: {position: 0.3}, backlash: {lower: 0.3, radius_lower: 0.1, stop: {type: rigid}}}}\n"
-      "solver: {analysis: static}",
-      "pend_lower", &csv);
+  std::vector<double> row = PendulumOnStop("lower", &csv);
   ASSERT_FALSE(row.empty());
   EXPECT_NEAR(row[csv.Column("joint.pivot.position")], 0.3, kRoundOff);
   const double holding = kG * std::sin(0.3) / 0.1;
   EXPECT_NEAR(row[csv.Column("stop.pivot.lower.force")], holding, kRoundOff * holding);
-  row = EquilibriumRow(
-      "test/data/urdf/pend_rev.urdf",
-      "joints: {pivot: {initial: {position: 0.3}, backlash: {upper: 0.3, radius_upper: 0.1, stop: {type: rigid}}}}\n"
-      "solver: {analysis: static}",
-      "pend_upper", &csv);
+  row = PendulumOnStop("upper", &csv);
   ASSERT_FALSE(row.empty());
   EXPECT_NEAR(row[csv.Column("joint.pivot.position")], 0.0, kRoundOff);
   EXPECT_EQ(row[csv.Column("stop.pivot.upper.in_contact")], 0.0);
