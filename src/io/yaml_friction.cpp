@@ -19,6 +19,11 @@ FrictionSpec ReadFriction(const Field& field, const VariableUnits& units) {
   RequireKey(field, "mu_k", Expected(coefficient));
   friction.mu_k = ReadNumber(field.Child("mu_k"), coefficient);
   friction.mu_s = friction.mu_k;
+  if (friction.law == FrictionSpec::Law::kRegularised && field.Child("mu_s").present()) {
+    field.Child("mu_s").Fail("the regularised law mu_k rho N (1 - exp(-|v|/v0)) never sticks and has no static "
+                             "coefficient; expected no mu_s with law: regularised (or law: coulomb_stick, which "
+                             "sticks within mu_s rho N)");
+  }
   OverlayNumber(field, "mu_s", coefficient, &friction.mu_s);
   if (friction.mu_s < friction.mu_k) {
     field.Child("mu_s").Fail(FormatNumber(friction.mu_s) + " is below mu_k " + FormatNumber(friction.mu_k) +

@@ -23,6 +23,7 @@ void ApplyYamlOverlay(const YAML::Node& params, const std::string& params_name, 
   ReadAero(root.Child("aero"), model);
   ReadStripStations(root.Child("output"), *model, &model->spec.output);
   CheckAirspeedSweep(root, model->spec);
+  CheckStaticStart(root, model->spec);
 }
 
 }  // namespace io

@@ -87,7 +87,7 @@ TEST(YamlOverlay, SolverSettingsRead) {
   EXPECT_EQ(solver.error_tol, 1.0e-5);
   EXPECT_EQ(solver.max_iterations, 12);
   EXPECT_EQ(solver.load_steps, 4);
-  EXPECT_TRUE(solver.static_first);
+  EXPECT_FALSE(solver.static_first);  // given false: B1 starts moving, which a static start would refuse
   EXPECT_EQ(solver.gravity, Vec3(0.0, 0.0, -9.81));
 }
 

@@ -218,21 +218,53 @@ TEST(ElementTangent, RigidStopMatchesFiniteDifference) {
   }
 }
 
-TEST(ElementTangent, ElasticStopMatchesFiniteDifference) {
-  // Reference: central differences of -s rho DG (1 + chi (a_f - a_i)/h) (C2b) for a Hertz stop, in a step that
-  // stays in contact, one that closes the gap and one that opens it (the discrete gradient over signed
-  // approaches), and of -s rho DG in statics. The approaches stay >= 6e-4 m from 0, far beyond the difference
-  // step (3e-7 m), so no difference straddles the kink of V at a = 0.
+// A Hertz stop of 1e4 N/m^1.5 at radius 0.3 m with restitution 0.6.
+StopSpec HertzStop() {
   StopSpec elastic;
   elastic.radius = 0.3;
   elastic.kind = StopSpec::Kind::kElastic;
   elastic.stiffness = 1.0e4;
   elastic.restitution = 0.6;
-  const Model model = ModelWithStop(elastic);
+  return elastic;
+}
+
+TEST(ElementTangent, ElasticStopMatchesFiniteDifference) {
+  // Reference: central differences of -s rho DG (1 + chi (a_f - a_i)/h) (C2b) for a Hertz stop, in a step that
+  // stays in contact, one that closes the gap and one that opens it (the discrete gradient over signed
+  // approaches), and of -s rho DG in statics. The approaches stay >= 6e-4 m from 0, far beyond the difference
+  // step (3e-7 m), so no difference straddles the kink of V at a = 0.
+  const Model model = ModelWithStop(HertzStop());
   ExpectDynamicTangents<ElasticStop>(model, 214, AtStop(model, -0.03, -0.02, JointStop::kContact));
   ExpectDynamicTangents<ElasticStop>(model, 215, AtStop(model, 0.01, -0.03, JointStop::kOpen));
   ExpectDynamicTangents<ElasticStop>(model, 216, AtStop(model, -0.01, 0.012, JointStop::kContact));
   ExpectStaticTangents<ElasticStop>(model, 217, AtStop(model, -0.03, -0.02, JointStop::kContact));
+}
+
+TEST(ElementTangent, ElasticStopEndPointPartsMatchFiniteDifference) {
+  // Reference: central differences of -s rho V'(a) (1 + chi a_dot_f) at the end point (eigen-analysis), in the
+  // configuration (stiffness V''(a) (1 + chi a_dot_f)) and in the end rate (damping V'(a) chi): a Hertz stop in
+  // contact 9e-3 m deep, closing at 0.09 m/s, remembered approach speed 0.5 m/s. The stiffness was once the discrete
+  // gradient's derivative in the end alone, V''/2, which halved a stop's stiffness in every eigen-analysis, and the
+  // damping was missing.
+  const Model model = ModelWithStop(HertzStop());
+  State start = model.initial_state();
+  start.q[0] = kStopAngle - 0.03;
+  start.effects[0] = EffectState{JointStop::kContact, 0.5, 0.0, 0};
+  const ElasticStop& stop = *ElementsOf<ElasticStop>(model).at(0);
+  ASSERT_TRUE(stop.HasRateParts(AnalysisMode::kEndPoint));
+  StepContextBuilder builder(model);
+  auto context_at = [&](const Eigen::VectorXd& u) -> const StepContext& {
+    const StepContext& ctx = builder.EndPoint(start, u, start.t, 1.0e-3);
+    builder.variables()[0].qdot_f = -0.3;
+    return ctx;
+  };
+  const Eigen::VectorXd u = Eigen::VectorXd::Zero(model.num_unknowns());
+  ExpectTangentMatchesFiniteDifference(stop, context_at, u, "end point");
+  const test::RateParts parts = test::LocalRateParts(stop, context_at(u));
+  const Eigen::MatrixXd damping = test::RateDifferences(stop, context_at(u), false, kFiniteDifferenceStep);
+  EXPECT_GT(test::MaxAbs(damping), 0.0);
+  EXPECT_LT(test::MaxAbs(parts.D - damping), kTangentTolerance * test::MaxAbs(damping)) << parts.D << "\n" << damping;
+  EXPECT_EQ(test::MaxAbs(parts.M), 0.0);
 }
 
 TEST(ElementTangent, LinearElasticStopMatchesFiniteDifferenceInStaticsOpenAndInContact) {

@@ -32,6 +32,14 @@ inline std::string RunnerOutput(const std::string& urdf, const std::string& yaml
   return text.str();
 }
 
+/// The text of a file of the source tree ("test/data/yaml/stop_eigen.yaml"), to run or edit before running.
+inline std::string SourceText(const std::string& relative) {
+  std::ifstream file(std::string(FLEXMBD_SOURCE_DIR) + "/" + relative);
+  std::stringstream text;
+  text << file.rdbuf();
+  return text.str();
+}
+
 // Frequency [Hz], damping ratio and remark of row `index` of a printed mode table.
 struct TableRow {
   double frequency_hz = std::nan(""), damping_ratio = std::nan("");

@@ -62,6 +62,8 @@ class FrictionEffect : public ModalEffect {
   /// of the stick that begins there.
   FrictionSample Sample(const State& state, const StepContext& step) const;
   int variable() const { return variable_; }
+  /// The law and its parameters as given.
+  const FrictionSpec& spec() const { return spec_; }
   /// The sticking constraint's multiplier (its row among the constraint rows); -1 for the regularised law.
   int stick_multiplier() const { return stick_multiplier_; }
   bool has_sticking_row() const { return stick_multiplier_ >= 0; }

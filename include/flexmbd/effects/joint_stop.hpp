@@ -74,6 +74,10 @@ class ElasticStop : public JointStop {
   void AddResidual(const StepContext& ctx, Eigen::Ref<Eigen::VectorXd> r,
                    Eigen::Ref<Eigen::VectorXd> magnitude) const override;
   void AddTangent(const StepContext& ctx, Eigen::Ref<Eigen::MatrixXd> J) const override;
+  /// At the end point (eigen-analysis) the Hunt-Crossley factor reads the end rate: a damping part.
+  bool HasRateParts(AnalysisMode mode) const override;
+  void AddRateParts(const StepContext& ctx, Eigen::Ref<Eigen::MatrixXd> D,
+                    Eigen::Ref<Eigen::MatrixXd> M) const override;
   void AddEnergy(const State& state, const Vec3& gravity, EnergyTally* tally) const override;
   void AddStepWork(const StepContext& ctx, StepWork* work) const override;
   /// The force does not depend on the mode: the mode only records contact.
@@ -91,6 +95,7 @@ class ElasticStop : public JointStop {
     double elastic = 0;          ///< discrete gradient of V [N]
     double force = 0;            ///< with the Hunt-Crossley factor [N]
     double d_dq_f = 0;           ///< d force / d q_f
+    double d_dqdot_f = 0;        ///< d force / d qdot_f (end point only)
     double reference_speed = 0;  ///< v_in used [m/s]
   };
   StepForce Evaluate(const StepContext& ctx) const;

@@ -71,6 +71,10 @@ void ReadAero(const Field& aero, UrdfModel* model);
 /// strips without the free stream's direction.
 void CheckAirspeedSweep(const Field& root, const ModelSpec& spec);
 
+/// Fails at a joint variable's non-zero initial velocity (not a drive's) when solver.static_first (dynamic) or
+/// solver.eigen.static_first (eigen) starts from the static equilibrium, which is at rest.
+void CheckStaticStart(const Field& root, const ModelSpec& spec);
+
 /// A time function: `law` (required) and the keys that law takes. Values are in `unit` (SI; "" for a plain
 /// factor) or, if `measure` is angular, in degrees under `<key>_deg`; `phase_deg` is always allowed.
 TimeFunctionSpec ReadTimeFunction(const Field& map, const std::string& unit, const Measure& measure);

@@ -63,7 +63,7 @@ struct StripStationInfo {
 
 /// A stop (backlash) as the user named it.
 struct StopInfo {
-  std::string joint;  ///< joint name
+  std::string joint;  ///< its variable's name: the joint's, or joint/k on the k-th variable of a multi-variable joint
   std::string stop;   ///< "lower", "upper", or the name given in YAML
   int variable = -1;  ///< the joint variable it acts on
 };

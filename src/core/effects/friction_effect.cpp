@@ -129,7 +129,8 @@ double FrictionEffect::EndRate(const StepContext& ctx, int variable) {
 FrictionEffect::StepForce FrictionEffect::Evaluate(const StepContext& ctx) const {
   StepForce f;
   const int mode = TrialMode(ctx);
-  if (ctx.mode == AnalysisMode::kStatic || Held(*ctx.effects) ||
+  // Static and eigen-analysis (the end-point evaluations) leave friction out (docs/theory.md, "Friction").
+  if (ctx.at_end() || Held(*ctx.effects) ||
       (mode == kSticking && spec_.law != FrictionSpec::Law::kRegularised)) {
     return f;
   }
@@ -152,7 +153,7 @@ FrictionEffect::StepForce FrictionEffect::Evaluate(const StepContext& ctx) const
 }
 
 bool FrictionEffect::Constrained(const StepContext& ctx) const {
-  return TrialMode(ctx) == kSticking && ctx.mode != AnalysisMode::kStatic && !Held(*ctx.effects);
+  return TrialMode(ctx) == kSticking && !ctx.at_end() && !Held(*ctx.effects);
 }
 
 void FrictionEffect::AddResidual(const StepContext& ctx, Eigen::Ref<Eigen::VectorXd> r,

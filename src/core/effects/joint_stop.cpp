@@ -154,15 +154,19 @@ ElasticStop::StepForce ElasticStop::Evaluate(const StepContext& ctx) const {
   const double da_dq = -GapRate(1.0);
   double d_elastic = 0;
   f.elastic = law_.DiscreteForce(f.a_i, f.a_f, &d_elastic);
-  if (ctx.mode == AnalysisMode::kStatic) {
-    // At rest the start moves with the end (a_i = a_f): the force is V'(a_f), whose derivative V''(a_f) is twice
-    // the discrete gradient's derivative in a_f alone at coincident approaches.
-    f.force = f.elastic;
-    f.d_dq_f = 2.0 * d_elastic * da_dq;
-    return f;
-  }
   f.reference_speed = ReferenceSpeed(ctx);
   const double chi = law_.damping_number() / f.reference_speed;
+  if (ctx.at_end()) {
+    // Static and end-point (eigen-analysis) evaluations move the start with the end (a_i = a_f): the force is
+    // V'(a_f), whose derivative V''(a_f) is twice the discrete gradient's derivative in a_f alone at coincident
+    // approaches. At the end point the Hunt-Crossley factor reads the end rate, which gives the damping part.
+    const double factor = ctx.mode == AnalysisMode::kEndPoint ? 1.0 + chi * -GapRate(q.qdot_f) : 1.0;
+    if (factor <= 0) return f;
+    f.force = f.elastic * factor;
+    f.d_dq_f = 2.0 * d_elastic * factor * da_dq;
+    f.d_dqdot_f = ctx.mode == AnalysisMode::kEndPoint ? f.elastic * chi * da_dq : 0.0;
+    return f;
+  }
   // Hunt-Crossley factor, never pulling (it stays positive over an exact impact: 1 - alpha_e e > 0).
   const double factor = 1.0 + chi * (f.a_f - f.a_i) / ctx.h;
   if (factor <= 0 || f.elastic == 0) return f;
@@ -180,6 +184,13 @@ void ElasticStop::AddResidual(const StepContext& ctx, Eigen::Ref<Eigen::VectorXd
 
 void ElasticStop::AddTangent(const StepContext& ctx, Eigen::Ref<Eigen::MatrixXd> J) const {
   J(0, 0) -= GeneralisedForce(Evaluate(ctx).d_dq_f);
+}
+
+bool ElasticStop::HasRateParts(AnalysisMode mode) const { return mode == AnalysisMode::kEndPoint; }
+
+void ElasticStop::AddRateParts(const StepContext& ctx, Eigen::Ref<Eigen::MatrixXd> D,
+                               Eigen::Ref<Eigen::MatrixXd>) const {
+  D(0, 0) -= GeneralisedForce(Evaluate(ctx).d_dqdot_f);
 }
 
 void ElasticStop::AddEnergy(const State& state, const Vec3&, EnergyTally* tally) const {

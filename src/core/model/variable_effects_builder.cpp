@@ -24,7 +24,7 @@ void VariableEffectsBuilder::Add(const std::string& where, const JointSpec& join
   if (effects.drives.size() > 1) throw ConfigError(where + "more than one drive on one variable");
   for (const TimeFunctionSpec& law : effects.drives) AddDrive(where, v, law, multiplier);
   if (effects.static_hold) AddHold(where, v, effects, multiplier);
-  for (const StopSpec& stop : effects.stops) AddStop(where, joint.name, v, stop, multiplier);
+  for (const StopSpec& stop : effects.stops) AddStop(where, v, stop, multiplier);
   if (effects.frictions.size() > 1) throw ConfigError(where + "more than one friction on one variable");
   // A stuck joint is held by a constraint, which would repeat the drive's and make the iteration matrix singular.
   const bool sticks = !effects.frictions.empty() && effects.frictions[0].law != FrictionSpec::Law::kRegularised;
@@ -71,8 +71,7 @@ void VariableEffectsBuilder::AddHold(const std::string& where, int v, const Vari
   ++*multiplier;
 }
 
-void VariableEffectsBuilder::AddStop(const std::string& where, const std::string& joint, int v, StopSpec stop,
-                                     int* multiplier) {
+void VariableEffectsBuilder::AddStop(const std::string& where, int v, StopSpec stop, int* multiplier) {
   ValidateStop(where, stop);
   if (!stop.retraction.joint.empty()) {
     const auto named = first_variable_of_.find(stop.retraction.joint);
@@ -99,7 +98,8 @@ void VariableEffectsBuilder::AddStop(const std::string& where, const std::string
         << stop.limit << "; expected an initial position inside the stops";
     throw ConfigError(msg.str());
   }
-  model_.stops_.push_back({joint, stop.name, v});
+  // Named by its variable, so that stops on two variables of one joint are told apart (joint/k).
+  model_.stops_.push_back({model_.variable_names_[v], stop.name, v});
   model_.stop_effects_.push_back(element.get());
   model_.modal_effects_.push_back(element.get());
   model_.elements_.push_back(std::move(element));

@@ -31,7 +31,7 @@ class VariableEffectsBuilder {
  private:
   void AddDrive(const std::string& where, int v, const TimeFunctionSpec& law, int* multiplier);
   void AddHold(const std::string& where, int v, const VariableEffectsSpec& effects, int* multiplier);
-  void AddStop(const std::string& where, const std::string& joint, int v, StopSpec stop, int* multiplier);
+  void AddStop(const std::string& where, int v, StopSpec stop, int* multiplier);
   void AddFriction(const std::string& where, const JointSpec& joint, int v, const FrictionSpec& friction,
                    int* multiplier);
 

@@ -59,10 +59,14 @@ std::vector<std::string> DescribeEffectIntervals(const Model& model, const std::
     const auto intervals =
         Intervals(events, slot, FrictionEffect::kSticking, model.initial_state().effects[slot].mode, t_end);
     std::ostringstream line;
-    line << "friction " << model.frictions()[k].joint << ": sticking threshold v0 = "
-         << friction.StickingSpeed(state.effects[slot]) << " m/s, largest slip speed " << state.effects[slot].reference
-         << " m/s, dissipated " << state.effects[slot].work << " J, " << intervals.size() << " sticking interval(s)"
-         << ListIntervals(intervals);
+    line << "friction " << model.frictions()[k].joint << ": ";
+    // The regularised law never sticks: its v0 is the regularisation speed the user gave, not a threshold.
+    const bool regularised = friction.spec().law == FrictionSpec::Law::kRegularised;
+    if (regularised) line << "regularised, v0 = " << friction.spec().v0 << " m/s (never sticks)";
+    else line << "sticking threshold v0 = " << friction.StickingSpeed(state.effects[slot]) << " m/s";
+    line << ", largest slip speed " << state.effects[slot].reference << " m/s, dissipated " << state.effects[slot].work
+         << " J";
+    if (!regularised) line << ", " << intervals.size() << " sticking interval(s)" << ListIntervals(intervals);
     lines.push_back(line.str());
   }
   return lines;

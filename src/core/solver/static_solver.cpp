@@ -54,9 +54,36 @@ std::vector<const ElasticStop*> ElasticStops(const Model& model) {
   return stops;
 }
 
-}  // namespace
+// Rigid stops that the joint touches (gap within round-off) are closed: a static analysis has no time steps whose
+// events would close them, and a joint resting on its stop with nothing else to hold it (a block on a frictionless
+// incline, a hinged blade on its droop stop) had a singular iteration matrix. In contact the stop's row is g_f = 0
+// (C2a). Returns whether any was closed.
+bool CloseTouchedRigidStops(const Model& model, double round_off, State* state) {
+  bool closed = false;
+  for (const JointStop* stop : model.stop_effects()) {
+    EffectState& effect = state->effects[stop->slot()];
+    if (dynamic_cast<const RigidStop*>(stop) == nullptr || effect.mode != JointStop::kOpen) continue;
+    if (stop->Gap(state->q[stop->variable()]) > round_off) continue;
+    effect.mode = JointStop::kContact;
+    closed = true;
+  }
+  return closed;
+}
 
-StaticResult SolveStatic(const Model& model, SparseSystem* system, State* state) {
+// Opens the closed rigid stops of an equilibrium whose contact force pulls (the load takes the joint off the stop).
+// Returns whether any was opened.
+bool OpenPullingStops(const Model& model, const State& equilibrium, State* start) {
+  bool opened = false;
+  for (const JointStop* stop : model.stop_effects()) {
+    EffectState& effect = start->effects[stop->slot()];
+    if (effect.mode != JointStop::kContact || stop->Sample(equilibrium).force >= 0.0) continue;
+    effect.mode = JointStop::kOpen;
+    opened = true;
+  }
+  return opened;
+}
+
+StaticResult SolveLoadSteps(const Model& model, SparseSystem* system, State* state) {
   StepContextBuilder builder(model);
   builder.set_geometric_stiffness(true);
   StaticResult result;
@@ -107,6 +134,22 @@ StaticResult SolveStatic(const Model& model, SparseSystem* system, State* state)
   state->qdot = JointRates(model, *state);
   state->element_state_rates.setZero();
   result.converged = true;
+  return result;
+}
+
+}  // namespace
+
+StaticResult SolveStatic(const Model& model, SparseSystem* system, State* state) {
+  State start = *state;
+  if (!CloseTouchedRigidStops(model, RoundOffFloor(model.length_scale()), &start)) {
+    return SolveLoadSteps(model, system, state);
+  }
+  // Each closed stop either holds (a contact force >= 0) or is opened and the equilibrium solved again without it.
+  StaticResult result;
+  do {
+    *state = start;
+    result = SolveLoadSteps(model, system, state);
+  } while (result.converged && OpenPullingStops(model, *state, &start));
   return result;
 }
 

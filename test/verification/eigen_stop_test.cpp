@@ -1,0 +1,82 @@
+// Eigen-analysis of joints pressed on elastic stops, run the user's way (flexmbd_run on YAML in test/data/yaml),
+// against the closed-form frequency of the stop's stiffness V''(a) rho^2. The analysis once took the discrete
+// gradient's derivative in the end approach alone, V''/2, and gave 1/sqrt(2) of these frequencies.
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+
+#include "runner_output.hpp"
+
+namespace flexmbd {
+namespace eigen_stop_test {
+
+constexpr double kPi = 3.14159265358979323846;
+constexpr char kPendulumUrdf[] = "test/data/urdf/pend_rev.urdf";
+// pend_rev.urdf: 1 kg at 1 m from the pivot with 1e-4 kg m^2 of its own; the YAMLs' spring (1 N m/rad) presses it
+// on an upper stop of radius 0.1 m with a torque of 1 N m (rest 1 rad, stop at 0), no gravity.
+constexpr double kInertia = 1.0001, kSpring = 1.0, kRadius = 0.1;
+
+std::string DataYaml(const std::string& name) { return test::SourceText("test/data/yaml/" + name); }
+
+double Hz(double stiffness, double inertia) { return std::sqrt(stiffness / inertia) / (2.0 * kPi); }
+
+TEST(EigenStop, LinearStopAboutTheStaticEquilibriumHasItsFullStiffness) {
+  // k rho^2 = 1e6 * 0.01 = 1e4 N m/rad in parallel with the spring: 15.9155 Hz. The equilibrium and the linear
+  // law's stiffness are exact; the printed table keeps 6 significant digits (relative 5e-6 at most).
+  constexpr double kPrinted = 1.0e-5;
+  const std::string out = test::RunnerOutput(kPendulumUrdf, DataYaml("stop_eigen.yaml"), "stop_eigen");
+  const double expected = Hz(1.0e6 * kRadius * kRadius + kSpring, kInertia);
+  EXPECT_NEAR(test::TableFrequency(out, 1), expected, kPrinted * expected) << out;
+}
+
+TEST(EigenStop, HertzStopAboutTheStaticEquilibriumHasTheSlopeOfItsForce) {
+  // Equilibrium: k a^1.5 rho = k_s (rest - a / rho) (the spring relaxes by the rotation a / rho into the stop), solved
+  // by fixed-point iteration (it contracts by 1e-4 a step); the stiffness dF/da = 1.5 k a^0.5 times rho^2, plus
+  // the spring: 13.27984 Hz (13.2805 with the spring's relaxation left out). The static solve leaves a relative
+  // residual far below the 6 printed digits.
+  constexpr double kPrinted = 1.0e-5;
+  const std::string out = test::RunnerOutput(kPendulumUrdf, DataYaml("stop_eigen_hertz.yaml"), "stop_eigen_hertz");
+  const double stiffness = 1.0e8, rest = 1.0;
+  double approach = 0.0;
+  for (int k = 0; k < 20; ++k) {
+    approach = std::pow(kSpring * (rest - approach / kRadius) / (kRadius * stiffness), 2.0 / 3.0);
+  }
+  const double expected = Hz(1.5 * stiffness * std::sqrt(approach) * kRadius * kRadius + kSpring, kInertia);
+  EXPECT_NEAR(test::TableFrequency(out, 1), expected, kPrinted * expected) << out;
+}
+
+TEST(EigenStop, LinearStopInContactDuringARunHasItsFullStiffness) {
+  // stop_dyn2_at.yaml: released 1e-6 rad off the stop, the pendulum is in contact at t = 0.03 s (contact from
+  // 1.4 ms for half a period of 31 ms), where the linear law's stiffness does not depend on the approach and the
+  // restitution of 1 adds no damping: 15.9155 Hz, undamped, to the printed digits.
+  constexpr double kPrinted = 1.0e-5;
+  const std::string out = test::RunnerOutput(kPendulumUrdf, DataYaml("stop_dyn2_at.yaml"), "stop_dyn2_at");
+  const std::string table = test::ModeTableAt(out, 0.03);
+  const double expected = Hz(1.0e6 * kRadius * kRadius + kSpring, kInertia);
+  const test::TableRow mode = test::ModeRow(table, 1);
+  EXPECT_NEAR(mode.frequency_hz, expected, kPrinted * expected) << out;
+  EXPECT_EQ(mode.damping_ratio, 0.0) << table;
+}
+
+TEST(EigenStop, StiffBladeOnALinearStopHasTheHingeFrequencyOfItsStop) {
+  // hbeam_eigen_stiff.yaml: a 1 m blade of 2 kg/m (m_ii about y 1e-5 kg m), hinged at its root and resting on its
+  // droop stop (k rho^2 = 1e4 N m/rad): rigid, sqrt(1e4 / (m L^3/3 + m_ii L)) / 2 pi = 19.4923 Hz, mode 2 (mode 1 is
+  // the lag bending, EI3 1e3 N m^2: 12.5 Hz). The blade's flexibility lowers it: under the mode's inertial load
+  // m w^2 x the tip moves, relative to the rigid rotation, by 11 m w^2 L^4 / (120 EI2) = 3.3e-4 in bending and
+  // m w^2 L^2 / (3 GA) = 1.0e-3 in shear, so the frequency lies below the rigid one by about half of their sum,
+  // 7e-4 (measured 7.2e-4; with EI2 and GA 1e11, 2.6e-6 above it). A band of 1.5e-3 below holds that; half the
+  // stop's stiffness is 29% off.
+  constexpr double kBladeCompliance = 1.5e-3;
+  const std::string out =
+      test::RunnerOutput("test/data/urdf/hbeam.urdf", DataYaml("hbeam_eigen_stiff.yaml"), "hbeam_eigen_stiff");
+  const double mass = 2.0, length = 1.0, rotary = 1.0e-5;
+  const double rigid = Hz(1.0e6 * kRadius * kRadius, mass * length * length * length / 3.0 + rotary * length);
+  const double hinge_mode = test::TableFrequency(out, 2);
+  EXPECT_LT(hinge_mode, rigid) << out;
+  EXPECT_GT(hinge_mode, (1.0 - kBladeCompliance) * rigid) << out;
+}
+
+}  // namespace eigen_stop_test
+}  // namespace flexmbd

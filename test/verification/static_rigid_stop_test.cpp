@@ -1,0 +1,94 @@
+// Static analysis of joints resting on rigid stops, run the user's way (flexmbd_run on YAML in test/data/yaml):
+// a stop the joint touches holds it with g = 0 (docs/theory.md (C2a)) and the contact force of the closed form,
+// unless that force would pull, when the stop opens. The static solver once never closed a rigid stop: a block
+// started on its stop had a singular iteration matrix, a blade on its droop stop no converged Newton iteration.
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "../integration/helpers/csv_table.hpp"
+#include "runner_output.hpp"
+
+namespace flexmbd {
+namespace static_rigid_stop_test {
+
+constexpr double kG = 9.81;
+
+// The last row of the CSV of a runner run on `yaml_text` (which must not give output.csv).
+std::vector<double> EquilibriumRow(const std::string& urdf, std::string yaml_text, const std::string& name,
+                                   test::CsvTable* csv) {
+  const std::string path = testing::TempDir() + name + ".csv";
+  yaml_text += "\noutput: {csv: " + path + "}\n";
+  test::RunnerOutput(urdf, yaml_text, name);
+  *csv = test::ReadCsv(path);
+  return csv->rows.empty() ? std::vector<double>() : csv->rows.back();
+}
+
+std::string DataYaml(const std::string& name) { return test::SourceText("test/data/yaml/" + name); }
+
+TEST(StaticRigidStop, BlockStartedOnItsStopRestsThereWithItsWeightAlongTheIncline) {
+  // incline.urdf: 2 kg on a frictionless 30 deg incline, the rigid stop 0.5 m downhill where it starts: it stays at
+  // 0.5 m, and the stop carries m g sin 30 = 9.81 N, a balance of two forces exact to round-off.
+  constexpr double kRoundOff = 1.0e-12;
+  test::CsvTable csv;
+  const std::vector<double> row =
+      EquilibriumRow("test/data/urdf/incline.urdf", DataYaml("incline_stop_static_on.yaml"), "incline_on", &csv);
+  ASSERT_FALSE(row.empty());
+  EXPECT_NEAR(row[csv.Column("joint.slide.position")], 0.5, kRoundOff);
+  EXPECT_EQ(row[csv.Column("stop.slide.upper.in_contact")], 1.0);
+  EXPECT_NEAR(row[csv.Column("stop.slide.upper.force")], 2.0 * kG * 0.5, kRoundOff * 10.0);
+}
+
+TEST(StaticRigidStop, HingedBladeRestsOnItsDroopStopAsAClampedCantilever) {
+  // hbeam_static_rigid.yaml: a 1 m blade of 2 kg/m hinged at its root on its rigid droop stop (radius 0.1 m): the
+  // stop holds the hinge at 0 with the weight's moment m g L^2 / 2 over the radius, 98.1 N, and the tip deflects as
+  // a clamped cantilever's, w L^4 / (8 EI) + w L^2 / (2 GA) = 2.45348e-3 m. The beam is geometrically exact: its
+  // rotations of 3e-3 rad change both by relative amounts of their square's order, 1e-5 (measured 2.4e-6 in the
+  // force, 4e-6 in the deflection); 1e-4 holds them.
+  constexpr double kGeometric = 1.0e-4;
+  std::string yaml = DataYaml("hbeam_static_rigid.yaml");
+  const std::string output = "output: {beam_stations: {blade: [0.0, 1.0]}}";
+  ASSERT_NE(yaml.find(output), std::string::npos);
+  yaml.replace(yaml.find(output), output.size(), "");
+  yaml += "\noutput: {beam_stations: {blade: [0.0, 1.0]}, csv: " + testing::TempDir() + "hbeam_rigid.csv}\n";
+  test::RunnerOutput("test/data/urdf/hbeam.urdf", yaml, "hbeam_rigid");
+  const test::CsvTable csv = test::ReadCsv(testing::TempDir() + "hbeam_rigid.csv");
+  ASSERT_FALSE(csv.rows.empty());
+  const std::vector<double>& row = csv.rows.back();
+  const double w = 2.0 * kG, length = 1.0, ei = 1.0e3, ga = 1.0e7, radius = 0.1;
+  const double force = w * length * length / 2.0 / radius;
+  const double tip = w * std::pow(length, 4) / (8.0 * ei) + w * length * length / (2.0 * ga);
+  EXPECT_EQ(row[csv.Column("joint.hinge.position")], 0.0);
+  EXPECT_NEAR(row[csv.Column("stop.hinge.upper.force")], force, kGeometric * force);
+  EXPECT_NEAR(-row[csv.Column("beam.blade.s1.uz")], tip, kGeometric * tip);
+}
+
+// The static equilibrium of pend_rev.urdf started at 0.3 rad on a rigid stop on `side` (radius 0.1 m).
+std::vector<double> PendulumOnStop(const std::string& side, test::CsvTable* csv) {
+  const std::string yaml = "joints: {pivot: {initial: {position: 0.3}, backlash: {" + side + ": 0.3, radius_" + side +
+                           ": 0.1, stop: {type: rigid}}}}\nsolver: {analysis: static}";
+  return EquilibriumRow("test/data/urdf/pend_rev.urdf", yaml, "pend_" + side, csv);
+}
+
+TEST(StaticRigidStop, StopThatWouldPullOpensAndOneThatPushesHolds) {
+  // pend_rev.urdf hangs 1 kg 1 m below its pivot; started at 0.3 rad on a stop. A lower stop there holds it against
+  // gravity's m g l sin(0.3) over its radius 0.1 m; an upper one would pull it, opens, and the pendulum hangs at 0.
+  // Both to the static solve's round-off.
+  constexpr double kRoundOff = 1.0e-9;
+  test::CsvTable csv;
+  std::vector<double> row = PendulumOnStop("lower", &csv);
+  ASSERT_FALSE(row.empty());
+  EXPECT_NEAR(row[csv.Column("joint.pivot.position")], 0.3, kRoundOff);
+  const double holding = kG * std::sin(0.3) / 0.1;
+  EXPECT_NEAR(row[csv.Column("stop.pivot.lower.force")], holding, kRoundOff * holding);
+  row = PendulumOnStop("upper", &csv);
+  ASSERT_FALSE(row.empty());
+  EXPECT_NEAR(row[csv.Column("joint.pivot.position")], 0.0, kRoundOff);
+  EXPECT_EQ(row[csv.Column("stop.pivot.upper.in_contact")], 0.0);
+}
+
+}  // namespace static_rigid_stop_test
+}  // namespace flexmbd
