@@ -181,6 +181,13 @@ class UrdfWalker {
       Fail("link '" + link + "': <inertia> has principal moments " + FormatVector(moments) +
            "; expected a positive semi-definite inertia [kg m^2]");
     }
+    // A body's principal moments are integrals of y^2 + z^2 and the like, so none exceeds the sum of the other two;
+    // inertia beyond that is not a body's, and a dynamic run would take it without a word.
+    if (moments[2] > moments[0] + moments[1] + kInertiaTolerance * moments[2]) {
+      Fail("link '" + link + "': <inertia> has principal moments " + FormatVector(moments) +
+           "; expected each principal moment at most the sum of the other two (the triangle inequality of a body's "
+           "inertia) [kg m^2]");
+    }
   }
 
   JointSpec MakeJoint(const urdf::Joint& urdf_joint, const std::string& child, const LinkFrame& joint_frame) const {

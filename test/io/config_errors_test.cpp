@@ -53,6 +53,19 @@ TEST(ConfigErrors, IndefiniteInertiaIsRejected) {
       "test.urdf: link 'l1': <inertia> has principal moments [-1, 1, 1]; expected a positive semi-definite");
 }
 
+TEST(ConfigErrors, InertiaBeyondTheTriangleInequalityIsRejected) {
+  // Positive definite, but izz > ixx + iyy: no distribution of mass has it (izz = ixx + iyy is a flat plate's).
+  const std::string urdf = R"(<robot name="bad">
+    <link name="world"/>
+    <link name="l1"><inertial><mass value="1"/>
+      <inertia ixx="0.01" ixy="0" ixz="0" iyy="0.1" iyz="0" izz="0.5"/></inertial></link>
+    <joint name="j1" type="continuous"><parent link="world"/><child link="l1"/><axis xyz="0 0 1"/></joint>
+  </robot>)";
+  EXPECT_CONFIG_ERROR(LoadInline(urdf, ""),
+                      "test.urdf: link 'l1': <inertia> has principal moments [0.01, 0.1, 0.5]; expected each principal "
+                      "moment at most the sum of the other two");
+}
+
 TEST(ConfigErrors, NegativeUrdfDampingIsRejected) {
   const std::string urdf = test::WorldUrdf({"l1"}, R"(
     <joint name="j1" type="continuous"><parent link="world"/><child link="l1"/><axis xyz="0 0 1"/>
