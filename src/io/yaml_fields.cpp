@@ -1,7 +1,9 @@
 #include "flexmbd/io/yaml_fields.hpp"
 
 #include <algorithm>
+#include <cerrno>
 #include <cmath>
+#include <cstdlib>
 
 #include "flexmbd/common/error.hpp"
 #include "flexmbd/io/message_text.hpp"
@@ -58,6 +60,18 @@ std::string DegreeUnit(std::string unit) {
   if (at != std::string::npos) unit.replace(at, 3, "deg");
   return unit;
 }
+
+// True for a scalar that is a decimal number too large for a double (1e400; 1e-400 reads as 0), which yaml-cpp
+// refuses as it refuses text.
+bool OutOfDoubleRange(const Field& field) {
+  if (!field.node().IsScalar()) return false;
+  const std::string& text = field.node().Scalar();
+  char* end = nullptr;
+  errno = 0;
+  std::strtod(text.c_str(), &end);
+  return !text.empty() && end == text.c_str() + text.size() && errno == ERANGE;
+}
+
 }  // namespace
 
 Field::Field(const YAML::Node& node, std::string file) : Field(node, std::move(file), "", true) {}
@@ -144,6 +158,10 @@ double ReadNumber(const Field& field, const Quantity& quantity, double to_si) {
     } catch (const YAML::Exception&) {
       ok = false;
     }
+  }
+  if (!ok && OutOfDoubleRange(field)) {
+    field.Fail(field.Text() + " is a number beyond the range of a double (largest magnitude 1.8e308); expected " +
+               Expected(quantity));
   }
   if (!ok) field.Fail(field.Describe() + " is not a number; expected " + Expected(quantity));
   if (!std::isfinite(value)) field.Fail(field.Text() + " is not finite; expected " + Expected(quantity));

@@ -190,6 +190,11 @@ TEST(ConfigErrors, WrongTypeNamesFieldAndExpectedType) {
                       "pendulum.yaml: solver.t_end: 'long' is not a number; expected an end time > 0 [s]");
 }
 
+TEST(ConfigErrors, NumberBeyondTheRangeOfADoubleIsSaidToBeOne) {
+  EXPECT_CONFIG_ERROR(Pendulum("joints: {B1: {spring: {k: 1e400}}}"),
+                      "pendulum.yaml: joints.B1.spring.k: 1e400 is a number beyond the range of a double");
+}
+
 TEST(ConfigErrors, EmptyValueIsNotADefault) {
   EXPECT_CONFIG_ERROR(Pendulum("joints: {B1: {damper: {c: }}}"),
                       "pendulum.yaml: joints.B1.damper.c: an empty value is not a number");
