@@ -41,27 +41,25 @@ TEST(ConfigErrors, NegativeMassNamesLink) {
                       "negative_mass_invalid.urdf: link 'l1': mass -2 is not positive; expected a mass > 0 [kg]");
 }
 
-TEST(ConfigErrors, IndefiniteInertiaIsRejected) {
-  const std::string urdf = R"(<robot name="bad">
+// One link 'l1' of 1 kg on a hinge, with the given principal moments [kg m^2].
+std::string OneLinkWithMoments(const std::string& ixx, const std::string& iyy, const std::string& izz) {
+  return R"(<robot name="bad">
     <link name="world"/>
     <link name="l1"><inertial><mass value="1"/>
-      <inertia ixx="1" ixy="0" ixz="0" iyy="-1" iyz="0" izz="1"/></inertial></link>
+      <inertia ixx=")" + ixx + R"(" ixy="0" ixz="0" iyy=")" + iyy + R"(" iyz="0" izz=")" + izz + R"("/></inertial></link>
     <joint name="j1" type="continuous"><parent link="world"/><child link="l1"/><axis xyz="0 0 1"/></joint>
   </robot>)";
+}
+
+TEST(ConfigErrors, IndefiniteInertiaIsRejected) {
   EXPECT_CONFIG_ERROR(
-      LoadInline(urdf, ""),
+      LoadInline(OneLinkWithMoments("1", "-1", "1"), ""),
       "test.urdf: link 'l1': <inertia> has principal moments [-1, 1, 1]; expected a positive semi-definite");
 }
 
 TEST(ConfigErrors, InertiaBeyondTheTriangleInequalityIsRejected) {
   // Positive definite, but izz > ixx + iyy: no distribution of mass has it (izz = ixx + iyy is a flat plate's).
-  const std::string urdf = R"(<robot name="bad">
-    <link name="world"/>
-    <link name="l1"><inertial><mass value="1"/>
-      <inertia ixx="0.01" ixy="0" ixz="0" iyy="0.1" iyz="0" izz="0.5"/></inertial></link>
-    <joint name="j1" type="continuous"><parent link="world"/><child link="l1"/><axis xyz="0 0 1"/></joint>
-  </robot>)";
-  EXPECT_CONFIG_ERROR(LoadInline(urdf, ""),
+  EXPECT_CONFIG_ERROR(LoadInline(OneLinkWithMoments("0.01", "0.1", "0.5"), ""),
                       "test.urdf: link 'l1': <inertia> has principal moments [0.01, 0.1, 0.5]; expected each principal "
                       "moment at most the sum of the other two");
 }
