@@ -2,6 +2,7 @@
 
 #include <yaml-cpp/eventhandler.h>
 
+#include <limits>
 #include <sstream>
 #include <vector>
 
@@ -110,17 +111,33 @@ class DocumentStart : public YAML::EventHandler {
   YAML::Mark mark_;
 };
 
+std::string LineAt(const std::string& text, int line) {
+  std::istringstream lines(text);
+  for (int i = 0; i < line; ++i) lines.ignore(std::numeric_limits<std::streamsize>::max(), '\n');
+  std::string current;
+  std::getline(lines, current);
+  return current;
+}
+
+// A document marker ('---') or a directive ('%YAML') at the start of a line.
+bool StartsWithMarker(const std::string& line) { return line.rfind("---", 0) == 0 || line.rfind('%', 0) == 0; }
+
 void CheckOneUntaggedDocument(const std::string& text, const std::string& name) {
   std::istringstream stream(text);
   YAML::Parser parser(stream);
   TagCheck tags(name);
   parser.HandleNextDocument(tags);
   DocumentStart second;
-  if (parser.HandleNextDocument(second)) {
-    throw ConfigError(name + ": line " + std::to_string(second.mark().line + 1) +
-                      ": a second YAML document; expected one document (remove the '---' separator and what "
-                      "follows, or merge the documents)");
+  if (!parser.HandleNextDocument(second)) return;
+  const std::string where = name + ": line " + std::to_string(second.mark().line + 1);
+  // yaml-cpp also starts a document, without a marker, at a key less indented than the first key of the file.
+  if (!StartsWithMarker(LineAt(text, second.mark().line))) {
+    throw ConfigError(where + ": a key less indented than the first key of the file, which ends the document "
+                              "there; expected every top-level key to start in the same column (is the first "
+                              "key indented?)");
   }
+  throw ConfigError(where + ": a second YAML document; expected one document (remove the '---' separator and what "
+                            "follows, or merge the documents)");
 }
 
 }  // namespace

@@ -31,6 +31,13 @@ TEST(YamlDocument, EmptySecondDocumentIsRejected) {
                       "case.yaml: line 2: a second YAML document");
 }
 
+// yaml-cpp reads a key less indented than the first as the start of another document, without a marker.
+TEST(YamlDocument, IndentedFirstKeyIsSaidToBeOne) {
+  EXPECT_CONFIG_ERROR(io::ParseYamlDocument("  joints: {B1: {spring: {k: 1}}}\nsolver: {t_end: 2.0}\n", "case.yaml"),
+                      "case.yaml: line 2: a key less indented than the first key of the file, which ends the "
+                      "document there; expected every top-level key to start in the same column");
+}
+
 TEST(YamlDocument, DocumentEndMarkerAloneIsOneDocument) {
   const YAML::Node node = io::ParseYamlDocument("---\nsolver: {t_end: 2.0}\n...\n", "case.yaml");
   EXPECT_EQ(node["solver"]["t_end"].as<double>(), 2.0);
