@@ -32,7 +32,10 @@ void ValidateStop(const std::string& where, const StopSpec& stop) {
 void ValidateFriction(const std::string& where, const FrictionSpec& f, JointType type) {
   const std::string at = where + "friction: ";
   if (type != JointType::kRevolute && type != JointType::kPrismatic) {
-    throw ConfigError(at + "a " + JointTypeName(type) + " joint; expected friction on a revolute or prismatic joint");
+    // A constant bound comes only from the URDF's <dynamics friction>: say so, the YAML may have none.
+    const std::string source = f.law == FrictionSpec::Law::kConstantTorque ? "the URDF's <dynamics friction> on " : "";
+    throw ConfigError(at + source + "a " + JointTypeName(type) +
+                      " joint; expected friction on a revolute or prismatic joint");
   }
   if (f.law == FrictionSpec::Law::kConstantTorque) {
     if (!(f.torque >= 0)) Fail(at, "torque", f.torque, "a friction torque >= 0 [N m or N]");
