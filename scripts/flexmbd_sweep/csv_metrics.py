@@ -14,6 +14,7 @@ class _Kind:
     """A metric kind: the keys it takes (`column` or `columns`, plus numbers) and how it computes."""
     keys = ('kind', 'column')
     numbers = {}  # optional number key -> default
+    min_samples = 2  # a history; a static analysis writes one sample
 
     def check(self, entry):
         entry.check_keys(self.keys + tuple(self.numbers))
@@ -36,8 +37,9 @@ class _Kind:
 
 
 class PeakAbs(_Kind):
-    """Largest |x| over the run, times `scale` (e.g. 57.2958 for degrees)."""
+    """Largest |x| over the run, times `scale` (e.g. 57.2958 for degrees); of a static analysis, its one sample."""
     numbers = {'scale': 1.0}
+    min_samples = 1
 
     def compute(self, t, x, entry):
         return float(np.max(np.abs(x[0]))) * self.option(entry, 'scale')
@@ -138,9 +140,7 @@ def read_columns(csv_path, names):
         for name in wanted:
             if name not in index:
                 raise KeyError(f'{csv_path} has no column {name!r}')
-        rows = np.array([[float(row[index[n]]) for n in wanted] for row in reader])
-    if rows.shape[0] < 2:
-        raise ValueError(f'{csv_path} has fewer than two samples')
+        rows = np.array([[float(row[index[n]]) for n in wanted] for row in reader]).reshape(-1, len(wanted))
     return {name: rows[:, k] for k, name in enumerate(wanted)}
 
 
@@ -149,7 +149,11 @@ def compute_csv_metrics(csv_path, metric_entries):
     names = [c for entry in metric_entries.values() for c in METRIC_KINDS[entry['kind']].columns(entry)]
     table = read_columns(csv_path, names)
     values = {}
+    samples = len(table['t'])
     for name, entry in metric_entries.items():
         kind = METRIC_KINDS[entry['kind']]
+        if samples < kind.min_samples:
+            raise ValueError(f"{csv_path} has {samples} sample(s); metric {name!r} ({entry['kind']}) needs at least "
+                             f"{kind.min_samples} (a static analysis writes one: use peak_abs)")
         values[name] = kind.compute(table['t'], [table[c] for c in kind.columns(entry)], entry)
     return values

@@ -95,6 +95,13 @@ class SweepLocal(unittest.TestCase):
                    comments='')
         return compute_csv_metrics(path, metrics)
 
+    def test_static_analysis_has_a_peak_but_no_history(self):
+        one_sample = {'t': np.array([0.0]), 'x': np.array([-0.0526])}
+        peak = {'tip': {'kind': 'peak_abs', 'column': 'x', 'scale': 1000.0}}
+        self.assertAlmostEqual(self.metrics_of(one_sample, peak)['tip'], 52.6, places=9)
+        with self.assertRaisesRegex(ValueError, r"1 sample\(s\); metric 'decay' \(decay_time\) needs at least 2"):
+            self.metrics_of(one_sample, {'decay': {'kind': 'decay_time', 'columns': ['x']}})
+
     def test_decay_time_is_the_last_sample_above_the_fraction_of_the_peak(self):
         t = np.round(np.arange(0.0, 100.005, 0.01), 6)
         decays = {'t': t, 'a': np.where(t < 50.0, -2.0, 0.1), 'b': np.where(t < 30.0, 1.0, 0.0)}
