@@ -177,15 +177,17 @@ void SimulatorNode::ServeCommand() {
 std::optional<RunControl::Reply> SimulatorNode::Execute(RunControl::Command command) {
   switch (command) {
     case RunControl::Command::kPause:
+      if (RunEnded()) return RunEndedReply();
       paused_ = true;
       writer_->Flush();  // the reply names the last sample published
       return RunControl::Reply{true, "paused after " + LastSampleText()};
     case RunControl::Command::kResume:
+      if (RunEnded()) return RunEndedReply();
       paused_ = false;
       anchor_pace_ = true;
       return RunControl::Reply{true, "resumed after " + LastSampleText()};
     case RunControl::Command::kStep:
-      if (computed_to_end_ && pending_.empty()) return RunEndedReply();
+      if (RunEnded()) return RunEndedReply();
       paused_ = true;
       step_in_progress_ = true;
       return std::nullopt;  // answered when the sample is sent
@@ -284,6 +286,8 @@ void SimulatorNode::Wait(Clock::time_point until) {
   writer_->Wake();  // what was released is written while the loop waits
   control_.WaitUntil(std::min(until, Clock::now() + kPollPeriod));
 }
+
+bool SimulatorNode::RunEnded() const { return computed_to_end_ && pending_.empty(); }
 
 RunControl::Reply SimulatorNode::RunEndedReply() const {
   return RunControl::Reply{false, "the run has ended after " + LastSampleText() + "; call ~reset to start over"};

@@ -145,12 +145,14 @@ TEST_F(NodeServices, ResetStartsAgainFromTheInitialState) {
   EXPECT_EQ(samples.energy[before_reset], samples.energy.front());
 }
 
-TEST_F(NodeServices, StepAfterTheEndFailsAndResetRunsAgain) {
+TEST_F(NodeServices, StepPauseOrResumeAfterTheEndFailsAndResetRunsAgain) {
   StartNode(0.0);
   ASSERT_TRUE(recorder_->WaitForTime(kEndTime, kDeliveryTimeout));
-  const std_srvs::Trigger::Response stepped = Call("step");
-  EXPECT_FALSE(stepped.success);
-  EXPECT_NE(stepped.message.find("the run has ended"), std::string::npos) << stepped.message;
+  for (const char* service : {"step", "pause", "resume"}) {
+    const std_srvs::Trigger::Response answer = Call(service);
+    EXPECT_FALSE(answer.success) << service;
+    EXPECT_NE(answer.message.find("the run has ended"), std::string::npos) << service << ": " << answer.message;
+  }
   const size_t first_run = recorder_->Snapshot().joint_states.size();
   ASSERT_TRUE(Call("reset").success);
   ASSERT_TRUE(

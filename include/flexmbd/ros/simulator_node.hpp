@@ -63,6 +63,8 @@ class SimulatorNode {
   void ReportEnd();
   void LetSubscribersDrain();
   void Wait(Clock::time_point until);
+  /// The run has computed its end and sent every sample: ~step, ~pause and ~resume have nothing to act on.
+  bool RunEnded() const;
   RunControl::Reply RunEndedReply() const;
   std::string LastSampleText() const;
 
