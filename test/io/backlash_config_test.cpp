@@ -153,7 +153,7 @@ TEST(BacklashConfig, RetractionBelowNotUnderAboveIsRejected) {
 TEST(BacklashConfig, UnknownRetractionJointIsRejectedByBuildModel) {
   const ModelSpec spec = Load("joints: {hinge: {backlash: {upper: 0.1, retract: {joint: spinn, above: 2, below: 1}}}}");
   EXPECT_CONFIG_ERROR(BuildModel(spec), "joint 'hinge': stop 'upper': retract.joint 'spinn' is not a joint of the "
-                                        "model; expected a joint name");
+                                        "model; expected one of: hinge, slide, spin");
 }
 
 TEST(BacklashConfig, GeneralizedAlphaWithStopsIsRejectedByBuildModel) {

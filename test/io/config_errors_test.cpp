@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include "flexmbd/io/config_loader.hpp"
+#include "flexmbd/model/model.hpp"
 #include "io_test_util.hpp"
 
 namespace flexmbd {
@@ -71,6 +72,24 @@ TEST(ConfigErrors, NegativeUrdfDampingIsRejected) {
   EXPECT_CONFIG_ERROR(
       LoadInline(urdf, ""),
       "test.urdf: joint 'j1': <dynamics damping> -0.5 is negative; expected a damping >= 0 [N m s/rad]");
+}
+
+// The YAML makes the joint universal and gives no friction: the message says whose friction it is.
+TEST(ConfigErrors, UrdfFrictionOnAJointTheYamlRetypesNamesTheUrdf) {
+  const std::string urdf = test::WorldUrdf({"l1"}, R"(
+    <joint name="j1" type="continuous"><parent link="world"/><child link="l1"/><axis xyz="0 0 1"/>
+      <dynamics friction="0.5"/></joint>)");
+  EXPECT_CONFIG_ERROR(BuildModel(LoadInline(urdf, "joints: {j1: {type: universal}}")),
+                      "joint 'j1/0': friction: the URDF's <dynamics friction> on a universal joint; expected friction "
+                      "on a revolute or prismatic joint");
+}
+
+// Names the variable as joint_states does, and gives the angles in the degrees the YAML used as well.
+TEST(ConfigErrors, InitialPositionBeyondAStopNamesTheVariableAndTheUnits) {
+  EXPECT_CONFIG_ERROR(BuildModel(Pendulum("joints: {B1: {type: universal, variables: [{}, {initial: {position_deg: "
+                                          "30.0}, backlash: {lower_deg: -10.0, upper_deg: 10.0}}]}}")),
+                      "pendulum.yaml: joint 'B1/1': stop 'upper': the initial position 0.523599 rad (30 deg) is "
+                      "beyond the stop at 0.174533 rad (10 deg); expected an initial position inside the stops");
 }
 
 TEST(ConfigErrors, MissingFileCannotBeOpened) {

@@ -288,7 +288,9 @@ Model BuildModel(const ModelSpec& spec) {
       if (k < static_cast<int>(joint.initial_velocity.size())) state.qdot[v] = joint.initial_velocity[k];
       model.elements_.push_back(std::make_unique<VariableEffort>(v, model.variable_unknown(v)));
       if (k >= static_cast<int>(joint.effects.size())) continue;  // no effects on this variable
-      effect_builder.Add(Prefix(spec) + "joint '" + joint.name + "': ", joint, v, joint.effects[k], &multiplier);
+      // named by the variable (joint/k of a multi-variable joint), as joint_states names it
+      effect_builder.Add(Prefix(spec) + "joint '" + model.variable_names_.back() + "': ", joint, v, joint.effects[k],
+                         &multiplier);
     }
     variable += n_var;
   }

@@ -1,5 +1,6 @@
 #include "variable_effects_builder.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <memory>
 #include <sstream>
@@ -71,13 +72,30 @@ void VariableEffectsBuilder::AddHold(const std::string& where, int v, const Vari
   ++*multiplier;
 }
 
+std::string VariableEffectsBuilder::PositionText(int v, double q) const {
+  const Joint& joint = *model_.joints_.back();
+  const std::vector<RotationFactor>& rotations = joint.kinematics().rotations;
+  const bool angular = std::any_of(rotations.begin(), rotations.end(), [&](const RotationFactor& factor) {
+    return factor.variable == v - joint.first_variable();
+  });
+  std::ostringstream text;
+  if (angular) {
+    text << q << " rad (" << q * 180.0 / M_PI << " deg)";
+  } else {
+    text << q << " m";
+  }
+  return text.str();
+}
+
 void VariableEffectsBuilder::AddStop(const std::string& where, int v, StopSpec stop, int* multiplier) {
   ValidateStop(where, stop);
   if (!stop.retraction.joint.empty()) {
     const auto named = first_variable_of_.find(stop.retraction.joint);
     if (named == first_variable_of_.end()) {
+      std::string joints;
+      for (const auto& [name, first_variable] : first_variable_of_) joints += (joints.empty() ? "" : ", ") + name;
       throw ConfigError(where + "stop '" + stop.name + "': retract.joint '" + stop.retraction.joint +
-                        "' is not a joint of the model; expected a joint name");
+                        "' is not a joint of the model; expected one of: " + joints);
     }
     stop.retraction.variable = named->second;
   }
@@ -93,10 +111,9 @@ void VariableEffectsBuilder::AddStop(const std::string& where, int v, StopSpec s
   }
   const double q_initial = model_.initial_state_.q[v];
   if (element->Gap(q_initial) < -kInitialConstraintTolerance) {
-    std::ostringstream msg;
-    msg << where << "stop '" << stop.name << "': the initial position " << q_initial << " is beyond the stop at "
-        << stop.limit << "; expected an initial position inside the stops";
-    throw ConfigError(msg.str());
+    throw ConfigError(where + "stop '" + stop.name + "': the initial position " + PositionText(v, q_initial) +
+                      " is beyond the stop at " + PositionText(v, stop.limit) +
+                      "; expected an initial position inside the stops");
   }
   // Named by its variable, so that stops on two variables of one joint are told apart (joint/k).
   model_.stops_.push_back({model_.variable_names_[v], stop.name, v});

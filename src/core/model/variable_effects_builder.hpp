@@ -32,6 +32,8 @@ class VariableEffectsBuilder {
   void AddDrive(const std::string& where, int v, const TimeFunctionSpec& law, int* multiplier);
   void AddHold(const std::string& where, int v, const VariableEffectsSpec& effects, int* multiplier);
   void AddStop(const std::string& where, int v, StopSpec stop, int* multiplier);
+  /// A position of variable v of the last joint built, with its unit ("0.5236 rad (30 deg)", "0.2 m").
+  std::string PositionText(int v, double q) const;
   void AddFriction(const std::string& where, const JointSpec& joint, int v, const FrictionSpec& friction,
                    int* multiplier);
 
