@@ -1,7 +1,8 @@
 // The space antenna reference case (config/antenna/, docs/cases.md) run to t_end = 200 s with adaptive steps:
 // the time of a whole run and its steps, for the viscous-damper variant (target: <= 2,000 steps, <= 0.3 s) and
 // the friction variant (target: <= 20,000 steps, <= 2 s); and the flexible antenna (bench/antenna_flexible/),
-// its whole run and one Newton iteration. Loading is outside the timed loop; output samples go to a sink that
+// its whole run and one Newton iteration; one Newton iteration of the published antenna's case 1
+// (config/antenna_published/, issue 16). Loading is outside the timed loop; output samples go to a sink that
 // drops them.
 
 #include <benchmark/benchmark.h>
@@ -58,6 +59,14 @@ BENCHMARK(FlexibleAntennaRun)->Unit(benchmark::kMillisecond)->Iterations(1);
 // one KLU refactorisation and solve of the same matrix (target: at most 0.1 ms and 3x).
 void FlexibleAntennaIteration(benchmark::State& state) { bench::TimeIteration(state, FlexibleAntenna()); }
 BENCHMARK(FlexibleAntennaIteration)->Unit(benchmark::kMicrosecond);
+
+// The published antenna's case 1 (config/antenna_published/case1.yaml: beams, friction): a fresh tangent and its
+// factorisation, the cost every step of that case pays once, beside one KLU refactorisation and solve.
+void PublishedAntennaIteration(benchmark::State& state) {
+  const std::string dir = std::string(FLEXMBD_BENCH_SOURCE_DIR) + "/config/antenna_published/";
+  bench::TimeIteration(state, LoadModelSpec(dir + "antenna_published.urdf", dir + "case1.yaml"));
+}
+BENCHMARK(PublishedAntennaIteration)->Unit(benchmark::kMicrosecond);
 
 }  // namespace
 }  // namespace flexmbd

@@ -150,18 +150,49 @@ TEST_F(SparseSystemTest, RefactorisationAtNewPointsSolvesEachSystem) {
   }
 }
 
+ModelSpec FreeBodySpec() {
+  ModelSpec spec;
+  spec.bodies.push_back(test::Body("free", 1.0, Vec3::Zero()));
+  return spec;
+}
+
+// A free body under gravity at rest, and its system: in statics its tangent is zero.
+struct FreeBody {
+  Model model = BuildModel(FreeBodySpec());
+  StepContextBuilder builder{model};
+  SparseSystem system{model};
+  State state = model.initial_state();
+};
+
 TEST(SparseSystem, SolveReportsSingularMatrix) {
   // Reference: a free body in statics has a zero tangent (its only residual is the constant weight):
   // Solve must return false, not a non-finite dx.
-  ModelSpec spec;
-  spec.bodies.push_back(test::Body("free", 1.0, Vec3::Zero()));
-  const Model model = BuildModel(spec);
-  StepContextBuilder builder(model);
-  SparseSystem system(model);
-  const State state = model.initial_state();
-  system.Assemble(builder.AtState(state), true);
+  FreeBody body;
+  body.system.Assemble(body.builder.AtState(body.state), true);
   Eigen::VectorXd dx;
-  EXPECT_FALSE(system.Solve(&dx));
+  EXPECT_FALSE(body.system.Solve(&dx));
+}
+
+TEST(SparseSystem, NoFactorisationIsKeptForASingularMatrix) {
+  // Reference: a free body. Its dynamic tangent (inertia) factorises; its static tangent is zero, so the
+  // refactorisation in the dynamic pivot order meets a zero pivot and fresh pivoting fails too. The factors left
+  // are partial: they may not serve a later solve that reuses a factorisation, and the dynamic system solves
+  // again afterwards.
+  FreeBody body;
+  const Eigen::VectorXd at_rest = Eigen::VectorXd::Zero(body.model.num_unknowns());
+  const std::vector<NodeSchemeCoefficients> coefficients(body.model.num_nodes());
+  Eigen::VectorXd dx;
+  body.system.Assemble(body.builder.Dynamic(body.state, at_rest, kStepSize, coefficients), true);
+  ASSERT_TRUE(body.system.Solve(&dx));
+  body.system.Assemble(body.builder.AtState(body.state), true);
+  EXPECT_FALSE(body.system.Solve(&dx));
+  EXPECT_FALSE(body.system.has_factorisation());
+  EXPECT_FALSE(body.system.Solve(&dx, false));
+  const StepContext& ctx = body.builder.Dynamic(body.state, at_rest, kStepSize, coefficients);
+  const Dense dense = AssembleDense(body.model, ctx);
+  body.system.Assemble(ctx, true);
+  ASSERT_TRUE(body.system.Solve(&dx));
+  EXPECT_LT((dense.tangent * dx + dense.residual).norm(), kBackwardError * dense.residual.norm());
 }
 
 }  // namespace sparse_system_test

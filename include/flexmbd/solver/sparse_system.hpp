@@ -57,6 +57,11 @@ class SparseSystem {
   int n_;
   std::vector<int> column_start_, row_index_;
   std::vector<double> values_;
+  /// The rows scaled by their largest entry, as KLU's default scaling would (Factorise); KLU itself is told not to
+  /// scale, which spares its checking pass over the matrix.
+  std::vector<double> scaled_values_;
+  Eigen::VectorXd row_scale_;      ///< largest |entry| of each row of the last assembled tangent (1 if none)
+  Eigen::VectorXd factor_scale_;   ///< row_scale_ of the matrix the current factorisation was made from
   std::vector<std::vector<int>> scatter_;  ///< per element: position of local (i, j) at j * n_local + i (column order)
   Eigen::VectorXd residual_, magnitude_, row_abs_sum_;
   Eigen::VectorXd local_r_, local_m_;

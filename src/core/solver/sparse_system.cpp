@@ -47,6 +47,7 @@ SparseSystem::SparseSystem(const Model& model) : model_(model), n_(model.num_unk
     row_index_.insert(row_index_.end(), rows_of_column[c].begin(), rows_of_column[c].end());
   }
   values_.assign(row_index_.size(), 0.0);
+  scaled_values_.assign(row_index_.size(), 0.0);
   for (const auto& element : model.elements()) {
     const std::vector<int>& u = element->unknowns();
     const int m = element->num_local();
@@ -63,11 +64,14 @@ SparseSystem::SparseSystem(const Model& model) : model_(model), n_(model.num_unk
   residual_.resize(n_);
   magnitude_.resize(n_);
   row_abs_sum_ = Eigen::VectorXd::Zero(n_);
+  row_scale_ = Eigen::VectorXd::Ones(n_);
+  factor_scale_ = Eigen::VectorXd::Ones(n_);
   local_r_.resize(max_local);
   local_m_.resize(max_local);
   local_J_.resize(max_local, max_local);
   klu_ = std::make_unique<KluFactorisation>();
   klu_defaults(&klu_->common);
+  klu_->common.scale = -1;  // the values come scaled (scaled_values_): no scaling, no checks of the pattern
 }
 
 SparseSystem::~SparseSystem() {
@@ -107,29 +111,44 @@ void SparseSystem::Assemble(const StepContext& ctx, bool with_tangent) {
   }
   if (with_tangent) {
     row_abs_sum_.setZero();
-    for (size_t p = 0; p < values_.size(); ++p) row_abs_sum_[row_index_[p]] += std::abs(values_[p]);
+    row_scale_.setZero();
+    for (size_t p = 0; p < values_.size(); ++p) {
+      const int row = row_index_[p];
+      const double a = std::abs(values_[p]);
+      row_abs_sum_[row] += a;
+      // KLU's own row scaling (klu_scale with scale = 2) in its own form, so that the scaled values are its, bit
+      // for bit: the largest |entry| of the row, 1 for an empty row.
+      row_scale_[row] = row_scale_[row] > a ? row_scale_[row] : a;
+    }
+    for (int row = 0; row < n_; ++row) {
+      if (row_scale_[row] == 0.0) row_scale_[row] = 1.0;
+    }
   }
   timing_.assembly += SecondsSince(start);
 }
 
 bool SparseSystem::Factorise() {
   klu_common& common = klu_->common;
+  // Scaled here as KLU scales the entries it reads (each divided by its row's scale), and the scale kept for the
+  // right-hand sides this factorisation will solve: factors and solutions as with KLU's own scaling.
+  for (size_t p = 0; p < values_.size(); ++p) scaled_values_[p] = values_[p] / row_scale_[row_index_[p]];
+  factor_scale_ = row_scale_;
   if (!klu_->symbolic) {
     klu_->symbolic = klu_analyze(n_, column_start_.data(), row_index_.data(), &common);
     if (!klu_->symbolic) return false;
   }
   if (klu_->numeric) {
-    const bool refactored = klu_refactor(column_start_.data(), row_index_.data(), values_.data(), klu_->symbolic,
-                                         klu_->numeric, &common) &&
-                            klu_rgrowth(column_start_.data(), row_index_.data(), values_.data(), klu_->symbolic,
+    const bool refactored = klu_refactor(column_start_.data(), row_index_.data(), scaled_values_.data(),
+                                         klu_->symbolic, klu_->numeric, &common) &&
+                            klu_rgrowth(column_start_.data(), row_index_.data(), scaled_values_.data(), klu_->symbolic,
                                         klu_->numeric, &common) &&
                             common.rgrowth >= kRefactorGrowthRatio * klu_->pivoted_growth;
     if (refactored) return true;
     klu_free_numeric(&klu_->numeric, &common);
   }
-  klu_->numeric = klu_factor(column_start_.data(), row_index_.data(), values_.data(), klu_->symbolic, &common);
+  klu_->numeric = klu_factor(column_start_.data(), row_index_.data(), scaled_values_.data(), klu_->symbolic, &common);
   if (klu_->numeric == nullptr || common.status != KLU_OK) return false;
-  klu_rgrowth(column_start_.data(), row_index_.data(), values_.data(), klu_->symbolic, klu_->numeric, &common);
+  klu_rgrowth(column_start_.data(), row_index_.data(), scaled_values_.data(), klu_->symbolic, klu_->numeric, &common);
   klu_->pivoted_growth = common.rgrowth;
   return true;
 }
@@ -142,7 +161,7 @@ bool SparseSystem::Solve(Eigen::VectorXd* dx, bool refactorise) {
   timing_.factorisation += SecondsSince(start);
   if (!factorised) return false;
   start = std::chrono::steady_clock::now();
-  *dx = -residual_;
+  *dx = (-residual_).cwiseQuotient(factor_scale_);
   const bool solved = klu_solve(klu_->symbolic, klu_->numeric, n_, 1, dx->data(), &klu_->common) && dx->allFinite();
   timing_.solve += SecondsSince(start);
   return solved;
