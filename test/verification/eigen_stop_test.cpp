@@ -50,14 +50,17 @@ TEST(EigenStop, HertzStopAboutTheStaticEquilibriumHasTheSlopeOfItsForce) {
 TEST(EigenStop, LinearStopInContactDuringARunHasItsFullStiffness) {
   // stop_dyn2_at.yaml: released 1e-6 rad off the stop, the pendulum is in contact at t = 0.03 s (contact from
   // 1.4 ms for half a period of 31 ms), where the linear law's stiffness does not depend on the approach and the
-  // restitution of 1 adds no damping: 15.9155 Hz, undamped, to the printed digits.
-  constexpr double kPrinted = 1.0e-5;
+  // restitution of 1 adds no damping: 15.9155 Hz, undamped, to the printed digits. The damping ratio is zero to
+  // round-off: the state the analysis linearises about carries the round-off of the run's steps, and since the
+  // elastic stop's step rules changed (C6', 2026-12-07) it prints -1.2e-37 instead of 0 (a restitution of 0.99
+  // gives 0.099 here).
+  constexpr double kPrinted = 1.0e-5, kRoundOff = 1.0e-15;
   const std::string out = test::RunnerOutput(kPendulumUrdf, DataYaml("stop_dyn2_at.yaml"), "stop_dyn2_at");
   const std::string table = test::ModeTableAt(out, 0.03);
   const double expected = Hz(1.0e6 * kRadius * kRadius + kSpring, kInertia);
   const test::TableRow mode = test::ModeRow(table, 1);
   EXPECT_NEAR(mode.frequency_hz, expected, kPrinted * expected) << out;
-  EXPECT_EQ(mode.damping_ratio, 0.0) << table;
+  EXPECT_LT(std::abs(mode.damping_ratio), kRoundOff) << table;
 }
 
 TEST(EigenStop, StiffBladeOnALinearStopHasTheHingeFrequencyOfItsStop) {

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "case_builders.hpp"
+#include "closed_forms.hpp"
 #include "run_trace.hpp"
 #include "flexmbd/solver/simulation.hpp"
 
@@ -197,12 +198,7 @@ TEST(ElasticStop, HertzContactDurationMatchesAnalytic) {
   ASSERT_EQ(contacts.size(), 1u);
   const double begin = CrossingTime(samples[contacts[0].before], samples[contacts[0].before + 1], kSliderGap);
   const double end = CrossingTime(samples[contacts[0].after - 1], samples[contacts[0].after], kSliderGap);
-  // m a'' = -k a^n from speed v: a_max = ((n + 1) m v^2 / (2 k))^(1/(n+1)) and duration 2 (a_max / v) I with
-  // I = int_0^1 (1 - x^(n+1))^(-1/2) dx = B(1/(n+1), 1/2) / (n + 1) (Johnson, Contact Mechanics, sec. 11.4).
-  const double p = 1.0 / (kExponent + 1.0);
-  const double a_max = std::pow((kExponent + 1.0) * kSliderMass * kSliderSpeed * kSliderSpeed / (2 * kHertzStiffness), p);
-  const double integral = std::tgamma(p) * std::tgamma(0.5) / std::tgamma(p + 0.5) * p;
-  const double duration = 2.0 * a_max / kSliderSpeed * integral;
+  const double duration = test::ElasticContactDuration(kSliderMass, kHertzStiffness, kExponent, kSliderSpeed);
   // 20 steps per contact with a second-order scheme, and crossings interpolated linearly where the gap moves
   // at v: the duration is within 1%.
   constexpr double kDurationTolerance = 0.01;

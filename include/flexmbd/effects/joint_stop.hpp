@@ -68,9 +68,9 @@ class RigidStop : public JointStop {
 
 class ElasticStop : public JointStop {
  public:
-  /// @param error_controlled the run's steps follow the local error test, which then resolves a contact after its
-  /// first step; otherwise the contact rule (C6) bounds every contact step.
-  ElasticStop(const StopSpec& spec, int variable, int variable_unknown, int slot, bool error_controlled);
+  /// @param solver the run's settings: with adaptive steps the local error test, on the stop's own pace at the
+  /// onset of a contact, resolves it (C6); with fixed steps the contact rule (C6) bounds every contact step.
+  ElasticStop(const StopSpec& spec, int variable, int variable_unknown, int slot, const SolverSpec& solver);
   void AddResidual(const StepContext& ctx, Eigen::Ref<Eigen::VectorXd> r,
                    Eigen::Ref<Eigen::VectorXd> magnitude) const override;
   void AddTangent(const StepContext& ctx, Eigen::Ref<Eigen::MatrixXd> J) const override;
@@ -102,12 +102,21 @@ class ElasticStop : public JointStop {
   double Approach(double q) const { return std::max(0.0, -Gap(q)); }  ///< [m], 0 when open
   // v_in of a step: the memory when in contact at its start, else the approach speed at its start.
   double ReferenceSpeed(const StepContext& ctx) const;
+  // The joint's motion before the contact that is at most one step old in ctx, from mean rates (C6).
+  struct Onset {
+    int step = -1;            ///< the step in which the gap closed: 0 this one, 1 the one before; -1: none known
+    double rate = 0;          ///< the joint's rate at that step's start [rad/s or m/s]
+    double acceleration = 0;  ///< and its acceleration then [rad/s^2 or m/s^2]
+  };
+  Onset ContactOnset(const StepContext& ctx) const;
   // The change of the joint's rate over the step ctx, from mean rates (C6).
-  double MeanRateChange(const StepContext& ctx) const;
+  double MeanRateChange(const StepContext& ctx, const Onset& onset) const;
+  // The joint's local error over the step ctx at the onset of a contact, against its tolerance (C6).
+  double OnsetError(const StepContext& ctx, const Onset& onset) const;
 
   ContactLaw law_;
   int steps_per_contact_;
-  bool error_controlled_;
+  SolverSpec solver_;
 };
 
 }  // namespace flexmbd

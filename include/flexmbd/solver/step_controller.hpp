@@ -38,6 +38,8 @@ class StepController {
   static constexpr double kFailureShrink = 0.25;
   /// The change of step size an error estimate asks for, before the bounds on one change.
   static double SizeFactor(double error);
+  /// SizeFactor within the bounds on one change of step size.
+  static double BoundedSizeFactor(double error);
 
   explicit StepController(const SolverSpec& solver);
 

@@ -2,6 +2,7 @@
 /// @file
 /// What every time-stepping scheme offers the simulation loop: attempt one step, report its outcome.
 
+#include <array>
 #include <memory>
 
 #include "flexmbd/effects/modal_effect.hpp"
@@ -51,6 +52,15 @@ std::unique_ptr<TimeIntegrator> MakeTimeIntegrator(const Model& model, SparseSys
 /// The absolute floor of the local error test on joint variables [rad or m] (solver.error_floor.joint, or its
 /// default).
 double JointErrorFloor(const SolverSpec& solver);
+
+/// The third derivative of a motion from the mean rates of three consecutive steps of sizes h, newest first (the rates
+/// at the step midpoints to O(h^2)): their second divided difference over the three midpoints (docs/theory.md, (T12)).
+template <typename Rate>
+Rate MeanRateThirdDerivative(const Rate& newest, const Rate& middle, const Rate& oldest,
+                              const std::array<double, 3>& h) {
+  const double span_newer = 0.5 * (h[0] + h[1]), span_older = 0.5 * (h[1] + h[2]);
+  return ((newest - middle) / span_newer - (middle - oldest) / span_older) / (0.5 * (span_newer + span_older));
+}
 
 /// The largest step that begins with a jump of `acceleration_jump` in a joint variable's acceleration [rad/s^2 or
 /// m/s^2] and has no error history (docs/theory.md, (F3'')): where the estimate (T12), run across the jump with equal

@@ -30,6 +30,9 @@ const char* WhatToTry(StepStatus status, bool adaptive) {
     case StepStatus::kRejectedError:
       return "try a larger solver.error_tol or solver.error_floor, or a smaller solver.dt_min";
     case StepStatus::kRejectedEvent:
+      // With fixed steps the events ask for what the motion needs, an elastic stop's contact steps of about
+      // 1 / steps_per_contact of its impact (C6) for one, which a dt_min can forbid: the fixed-step hint below.
+      if (!adaptive) break;
       return "a stop or friction event could not be stepped across, which is a defect of flexmbd: please report "
              "the model; meanwhile try solver.adaptive: false with a smaller solver.dt, or an elastic stop";
     case StepStatus::kNewtonDiverged:
@@ -41,8 +44,9 @@ const char* WhatToTry(StepStatus status, bool adaptive) {
     case StepStatus::kAccepted:
       break;
   }
-  // An accepted step whose next step fell below dt_min was held back by a stop or friction event's step limit.
-  // Fixed steps far too large for the motion leave it unresolved, and the events after it shrink without end.
+  // An accepted step whose next step fell below dt_min was held back by a stop or friction event's step limit, or
+  // (fixed steps) an event asked for a step below it. Fixed steps far too large for the motion leave it
+  // unresolved, and the events after it shrink without end.
   if (!adaptive) return "try a smaller solver.dt (fixed steps may leave the motion unresolved), adaptive steps, "
                         "or a smaller solver.dt_min";
   return "try a smaller solver.dt_min";

@@ -47,6 +47,8 @@ std::string StepStatistics::Summary(const Model& model) const {
 
 double StepController::SizeFactor(double error) { return kSafety * std::pow(error, -1.0 / kErrorOrder); }
 
+double StepController::BoundedSizeFactor(double error) { return std::clamp(SizeFactor(error), kMinShrink, kMaxGrowth); }
+
 StepController::StepController(const SolverSpec& solver) : solver_(solver), estimated_next_(solver.dt) {}
 
 void StepController::BookTrial(const StepResult& result) {

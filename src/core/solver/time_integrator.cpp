@@ -117,10 +117,9 @@ ErrorEstimate EstimateLocalError(const Model& model, const State& end) {
   const std::array<double, 3>& h = end.recent_h;
   // Mean rates are the rates at the step midpoints (to O(h^2)); their second divided difference over the three
   // midpoints is the third derivative of the motion, and the local error of the trapezoidal family is h^3 x^(3) / 12.
-  const double span_newer = 0.5 * (h[0] + h[1]), span_older = 0.5 * (h[1] + h[2]);
-  const double span = 0.5 * (span_newer + span_older);
+  const double span_newer = 0.5 * (h[0] + h[1]);
   auto third_derivative = [&](const auto& newest, const auto& middle, const auto& oldest) {
-    return ((newest - middle) / span_newer - (middle - oldest) / span_older) / span;
+    return MeanRateThirdDerivative(newest, middle, oldest, h);
   };
   const double weight = h[0] * h[0] * h[0] / 12.0;
   // Each entry is compared with its floor plus rtol times the step's travel at the run's peak rate of its kind.
