@@ -145,6 +145,32 @@ TEST(StaticStart, ABentBladeOnADrivenHubStartsTurningRigidly) {
   }
 }
 
+// test/data/yaml/slider_crank.yaml's loop (a spherical crank pin, a universal wrist pin closing it) with its crank
+// on a sine of 1 rad at 1 Hz and gravity: one degree of freedom, which the drive takes, so the equilibrium is the
+// loader's assembly, and the static start's rates (K4) are those the loader gives the same drive rate (K3), the
+// least change of the undriven rates that keeps the loop closed: every joint rate and the kinetic energy agree to
+// round-off.
+TEST(StaticStart, ADrivenLoopStartsWithTheRatesOfTheLoadersAssembly) {
+  std::string yaml = test::SourceText("test/data/yaml/slider_crank.yaml");
+  yaml = test::Replaced(yaml, "{law: cosine_ramp, value: 12.566370614359172, duration: 2.0}",
+                        "{law: sine, amplitude: 1.0, frequency: 1.0}");
+  yaml = test::Replaced(yaml, "output: {rate_hz: 0}", "");
+  auto start = [&](const std::string& static_first, const std::string& name) {
+    return RunToCsv("test/data/urdf/slider_crank.urdf",
+                    test::Replaced(yaml, "solver: {t_end: 2.5, gravity: [0.0, 0.0, 0.0]}",
+                                   "solver: {t_end: 0.01, static_first: " + static_first + "}"),
+                    name);
+  };
+  const test::CsvTable statics = start("true", "static_start_loop"), assembled = start("false", "assembled_loop");
+  ASSERT_FALSE(statics.rows.empty() || assembled.rows.empty());
+  const double crank_rate = 2.0 * kPi;  // f'(0) [rad/s]; the slider's speed is of the crank's radius times it
+  for (const std::string& column : statics.header) {
+    if (column.find(".velocity") == std::string::npos && column != "energy.kinetic") continue;
+    EXPECT_NEAR(At(statics, 0, column), At(assembled, 0, column), kRoundOff * crank_rate) << column;
+  }
+  EXPECT_GT(At(statics, 0, "energy.kinetic"), 0.0);
+}
+
 // config/double_pendulum as it is (its shoulder on a cosine ramp, whose rate at t = 0 is zero) with a static start:
 // the run starts at rest, every rate and the kinetic energy exactly zero, as before (K4).
 TEST(StaticStart, ADriveAtRestAtTheStartLeavesEveryRateZero) {
