@@ -142,7 +142,7 @@ void SimulatorNode::StartRun() {
     computed_to_end_ = true;
     return;
   }
-  if (solver.static_first) simulation_->SolveStaticEquilibrium();
+  if (solver.static_first) simulation_->SolveStaticStart();
   simulation_->Begin(collect_);
 }
 

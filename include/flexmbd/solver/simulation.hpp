@@ -35,6 +35,11 @@ class Simulation {
   /// Static equilibrium from the current state. Throws SolverError if Newton fails.
   StaticResult SolveStaticEquilibrium();
 
+  /// The start of a dynamic run with solver.static_first: the static equilibrium, with the rates of a static start
+  /// (docs/theory.md (K4): every drive at its rate, the rest at rest relative to what carries it). Throws
+  /// SolverError if Newton fails.
+  void SolveStaticStart();
+
   /// Time stepping from the current state to t_end: Begin, then AdvanceTo(t_end, t_end).
   void Integrate(double t_end, const SampleSink& sink);
 

@@ -5,6 +5,7 @@
 #include <Eigen/SparseCore>
 #include <algorithm>
 
+#include "drive_rows.hpp"
 #include "eigen_internal.hpp"
 #include "flexmbd/common/error.hpp"
 #include "flexmbd/solver/step_context_builder.hpp"
@@ -129,7 +130,10 @@ Eigen::VectorXd Rates(const Model& model, const State& state) {
 }
 
 // Second time derivative of the constraint rows along the motion with constant rates u (body-frame angular
-// velocities, joint rates) and time: the terms of Phi'' that do not involve accelerations (theory (E2)).
+// velocities, joint rates) and time: the terms of Phi'' that do not involve accelerations (theory (E2)). The
+// motion's part is differenced; the time's, which only drives have (q - f(t)), is the law's -f''(t), one-sided at a
+// kink: a difference across the start of a law that starts moving (a sine or a ramp from t = 0) read its jump of
+// rate as an acceleration f'/e.
 Eigen::VectorXd ConstraintCurvature(const Model& model, const State& state) {
   const int n = model.num_unknowns(), m = model.num_multipliers(), nk = n - m;
   const Eigen::VectorXd u = Rates(model, state);
@@ -144,7 +148,7 @@ Eigen::VectorXd ConstraintCurvature(const Model& model, const State& state) {
     Eigen::VectorXd unknowns = Eigen::VectorXd::Zero(n);
     unknowns.head(nk) = e * u;
     unknowns.tail(m) = state.lambda;
-    const StepContext& ctx = builder.EndPoint(state, unknowns, state.t + e, 1.0);
+    const StepContext& ctx = builder.EndPoint(state, unknowns, state.t, 1.0);
     Eigen::VectorXd phi = Eigen::VectorXd::Zero(m);
     for (const auto& element : model.elements()) {
       const std::vector<int>& local = element->unknowns();
@@ -160,7 +164,8 @@ Eigen::VectorXd ConstraintCurvature(const Model& model, const State& state) {
   auto second_difference = [&](double e) -> Eigen::VectorXd {
     return (constraints(e) - 2.0 * at_rest + constraints(-e)) / (e * e);
   };
-  return (4.0 * second_difference(0.5 * step) - second_difference(step)) / 3.0;
+  return (4.0 * second_difference(0.5 * step) - second_difference(step)) / 3.0 -
+         DriveLawDerivatives(model, state, 2);
 }
 
 // Writes accelerations (node v', w' in the node frame, q'') into a state.

@@ -7,6 +7,7 @@
 #include "flexmbd/common/error.hpp"
 #include "flexmbd/solver/smoothed_rates.hpp"
 #include "flexmbd/solver/starting_step.hpp"
+#include "flexmbd/solver/static_start_rates.hpp"
 #include "flexmbd/solver/step_context_builder.hpp"
 
 namespace flexmbd {
@@ -91,6 +92,11 @@ StaticResult Simulation::SolveStaticEquilibrium() {
   return result;
 }
 
+void Simulation::SolveStaticStart() {
+  SolveStaticEquilibrium();
+  SetStaticStartRates(model_, &state_);
+}
+
 void Simulation::Run(const SampleSink& sink) { Run(sink, {}, nullptr); }
 
 void Simulation::Run(const SampleSink& sink, const std::vector<double>& instants, const StateSink& at_instant) {
@@ -100,7 +106,7 @@ void Simulation::Run(const SampleSink& sink, const std::vector<double>& instants
     sink(SampleAtState(0.0, result.iterations));
     return;
   }
-  if (solver.static_first) SolveStaticEquilibrium();
+  if (solver.static_first) SolveStaticStart();
   Begin(sink);
   // Generalized-alpha damps the alternating velocity mode that the energy-consistent schemes' end rates carry.
   const bool rates_alternate = solver.integrator != SolverSpec::Integrator::kGeneralizedAlpha;

@@ -55,7 +55,7 @@ void Run(const FuzzInput& input) {
       return;
     case SolverSpec::Analysis::kDynamic: {
       Simulation simulation(model);
-      if (model.solver().static_first) simulation.SolveStaticEquilibrium();
+      if (model.solver().static_first) simulation.SolveStaticStart();
       simulation.Integrate(std::min(model.solver().t_end, kStepsRun * model.solver().dt), no_output);
       return;
     }
