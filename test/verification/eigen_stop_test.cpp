@@ -63,6 +63,25 @@ TEST(EigenStop, LinearStopInContactDuringARunHasItsFullStiffness) {
   EXPECT_LT(std::abs(mode.damping_ratio), kRoundOff) << table;
 }
 
+TEST(EigenStop, OpenRigidStopsLeaveTheSteadyRotationModesOfAHingedBlade) {
+  // urotor_stops_eigen.yaml: a blade on a universal hinge of a hub at 10 rad/s, both hinge variables between open
+  // rigid stops. An open stop holds lambda = 0 and nothing else; the steady-rotation Newton matrix once left that
+  // row empty and failed as singular. Rotating-frame closed forms for a rigid blade on an offset hinge:
+  // flap w^2 = Omega^2 (Iz - Ix + e S) / Iy + k / Iy, lag w^2 = Omega^2 e S / Iz (held hub). Printed to 6 or more
+  // significant digits: relative 1e-5.
+  constexpr double kPrinted = 1.0e-5;
+  const std::string out =
+      test::RunnerOutput("test/data/urdf/urotor.urdf", DataYaml("urotor_stops_eigen.yaml"), "urotor_stops_eigen");
+  const double omega = 10.0, hinge_inertia = 5.0 / 3.0 + 5.0, axial_inertia = 0.001, offset = 0.5, first_moment = 5.0;
+  const double flap_spring = 200.0;
+  const double lag = Hz(omega * omega * offset * first_moment, hinge_inertia);
+  const double flap =
+      Hz(omega * omega * (hinge_inertia - axial_inertia + offset * first_moment) + flap_spring, hinge_inertia);
+  EXPECT_EQ(test::ModeRow(out, 1).remark, "rigid body") << out;
+  EXPECT_NEAR(test::TableFrequency(out, 2), lag, kPrinted * lag) << out;
+  EXPECT_NEAR(test::TableFrequency(out, 3), flap, kPrinted * flap) << out;
+}
+
 TEST(EigenStop, StiffBladeOnALinearStopHasTheHingeFrequencyOfItsStop) {
   // hbeam_eigen_stiff.yaml: a 1 m blade of 2 kg/m (m_ii about y 1e-5 kg m), hinged at its root and resting on its
   // droop stop (k rho^2 = 1e4 N m/rad): rigid, sqrt(1e4 / (m L^3/3 + m_ii L)) / 2 pi = 19.4923 Hz, mode 2 (mode 1 is

@@ -30,8 +30,9 @@ class JointStop : public ModalEffect {
   double GeneralisedForce(double force) const { return sign_ * radius_ * force; }
   int variable() const { return variable_; }
 
-  /// The output record of the stop at a state.
-  virtual StopSample Sample(const State& state) const = 0;
+  /// The output record of the stop at `state`, reached by `step` (or StepContextBuilder::AtState): contact and
+  /// approach at the state, force and torque those `step` applied, the stop's part of the joint's effort.
+  virtual StopSample Sample(const State& state, const StepContext& step) const = 0;
 
   /// Open if in contact (a contact may always separate); an open or retracted stop keeps its mode.
   int ReleasedMode(const State& state) const override;
@@ -60,7 +61,7 @@ class RigidStop : public JointStop {
   bool ComesToRest(const State& start, const State& end, double negligible_rate) const override;
   /// Remembers the fastest impact.
   void Commit(const StepContext& ctx, const State& end, EffectState* effect) const override;
-  StopSample Sample(const State& state) const override;
+  StopSample Sample(const State& state, const StepContext& step) const override;
 
  private:
   int multiplier_;
@@ -86,7 +87,7 @@ class ElasticStop : public JointStop {
   /// Contact begins and ends at zero force.
   bool ModeChangesAreSmooth() const override { return true; }
   void Commit(const StepContext& ctx, const State& end, EffectState* effect) const override;
-  StopSample Sample(const State& state) const override;
+  StopSample Sample(const State& state, const StepContext& step) const override;
 
  private:
   // The contact force over a step and its derivative with respect to q_f.

@@ -11,7 +11,8 @@ namespace flexmbd {
 class Model;
 struct State;
 
-/// One mode change in an accepted step.
+/// One mode change in an accepted step, or at the start of a dynamic run from the model's initial mode (a contact
+/// that a static analysis closed).
 struct EffectEvent {
   double t = 0;     ///< when the new mode began: the step's start if the step was solved in it, else its end [s]
   int effect = -1;  ///< index into Model::modal_effects()

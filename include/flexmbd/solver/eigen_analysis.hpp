@@ -84,6 +84,9 @@ struct LinearisedSystem {
   Eigen::SparseMatrix<double> D;  ///< damping and gyroscopic terms (num_kinematic x num_kinematic)
   Eigen::SparseMatrix<double> M;  ///< mass (num_kinematic x num_kinematic); zero on joint variables
   Eigen::SparseMatrix<double> B;  ///< constraint Jacobian (num_multipliers x num_kinematic)
+  Eigen::SparseMatrix<double> C;  ///< d(constraint rows)/d(multipliers) (num_multipliers x num_multipliers): 1 on
+                                  ///< the rows of inactive constraints (an open rigid stop's lambda = 0), whose B
+                                  ///< rows are empty; a Newton solve for the multipliers needs them
   Eigen::SparseMatrix<double> T;  ///< x = T y: node rotation matrices on translations, identity elsewhere
   Eigen::VectorXd residual;       ///< at the reference: force rows turned by T^T, then constraint rows
 };

@@ -130,7 +130,7 @@ int RigidStop::ReviseMode(const StepContext& ctx) const {
   return mode;
 }
 
-StopSample RigidStop::Sample(const State& state) const {
+StopSample RigidStop::Sample(const State& state, const StepContext&) const {
   StopSample s;
   s.in_contact = state.effects[slot()].mode == kContact;
   s.force = s.in_contact ? state.lambda[multiplier_] : 0.0;
@@ -324,15 +324,14 @@ void ElasticStop::Commit(const StepContext& ctx, const State& end, EffectState* 
   JointStop::Commit(ctx, end, effect);
 }
 
-StopSample ElasticStop::Sample(const State& state) const {
+StopSample ElasticStop::Sample(const State& state, const StepContext& step) const {
   StopSample s;
-  const EffectState& effect = state.effects[slot()];
-  if (effect.mode == kRetracted) return s;
+  if (state.effects[slot()].mode == kRetracted) return s;
   s.approach = Approach(state.q[variable()]);
   s.in_contact = s.approach > 0;
-  const double approach_speed = -GapRate(state.qdot[variable()]);
-  const double chi = law_.damping_number() / std::max(effect.reference, kMinReferenceSpeed);
-  s.force = s.in_contact ? law_.Force(s.approach) * std::max(0.0, 1.0 + chi * approach_speed) : 0.0;
+  // The step's force (C2b), which the effort holds; not V'(a_f) at the end, which the discrete gradient approaches
+  // as the steps shrink. The step that opens the contact still applies a force.
+  s.force = Evaluate(step).force;
   s.torque = GeneralisedForce(s.force);
   return s;
 }

@@ -76,12 +76,13 @@ struct Assembled {
   Eigen::SparseMatrix<double> K, D, M;  ///< force rows x kinematic columns, without the rotation-rate terms
   Eigen::SparseMatrix<double> B;        ///< constraint rows x kinematic columns
   Eigen::SparseMatrix<double> Gt;       ///< force rows x multiplier columns
+  Eigen::SparseMatrix<double> C;        ///< constraint rows x multiplier columns
 };
 
 Assembled Assemble(const Model& model, const State& state) {
   const int nk = model.num_unknowns() - model.num_multipliers(), m = model.num_multipliers();
   Probe probe(model, state);
-  Triplets k, d, mass, b, gt;
+  Triplets k, d, mass, b, gt, c;
   Assembled out;
   out.residual = Eigen::VectorXd::Zero(model.num_unknowns());
   Eigen::MatrixXd K, D, M;
@@ -103,6 +104,8 @@ Assembled Assemble(const Model& model, const State& state) {
           if (K(i, j) != 0.0) b.emplace_back(u[i] - nk, u[j], K(i, j));
         } else if (force_row) {
           if (K(i, j) != 0.0) gt.emplace_back(u[i], u[j] - nk, K(i, j));
+        } else if (K(i, j) != 0.0) {
+          c.emplace_back(u[i] - nk, u[j] - nk, K(i, j));
         }
       }
     }
@@ -117,6 +120,7 @@ Assembled Assemble(const Model& model, const State& state) {
   out.M = build(nk, nk, mass);
   out.B = build(m, nk, b);
   out.Gt = build(nk, m, gt);
+  out.C = build(m, m, c);
   return out;
 }
 
@@ -334,6 +338,7 @@ LinearisedSystem Linearise(const Model& model, const State& state, ReferenceMoti
   out.D = Pt * (DP + MP * c.A1);
   out.K = Pt * (KP + DP * c.X + MP * c.A0);
   out.B = a.B * c.P;
+  out.C = a.C;
   out.T = c.P;
   out.residual = a.residual;
   out.residual.head(Pt.rows()) = Pt * a.residual.head(Pt.rows());

@@ -63,7 +63,7 @@ OutputSample MakeSample(const Model& model, const State& state, const StepContex
     s.reaction_force_W.push_back(-lambda.head<3>());
     s.reaction_moment.push_back(joint->num_constraints() == 6 ? Vec3(-lambda.tail<3>()) : Vec3::Zero());
   }
-  for (const JointStop* stop : model.stop_effects()) s.stops.push_back(stop->Sample(state));
+  for (const JointStop* stop : model.stop_effects()) s.stops.push_back(stop->Sample(state, ctx));
   for (const FrictionEffect* friction : model.friction_effects()) s.friction.push_back(friction->Sample(state, ctx));
   const EnergyTally energy = StateEnergy(model, state);
   s.kinetic = energy.kinetic;

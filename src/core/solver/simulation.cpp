@@ -171,6 +171,13 @@ void Simulation::Integrate(double t_end, const SampleSink& sink) {
 }
 
 void Simulation::Begin(const SampleSink& sink) {
+  // A mode the run starts in other than the model's initial one (a contact a static analysis closed) is an interval
+  // that begins at the start: the intervals count from the initial modes.
+  const std::vector<EffectState>& initial = model_.initial_state().effects;
+  for (size_t k = 0; k < state_.effects.size(); ++k) {
+    const int from = initial[k].mode, to = state_.effects[k].mode;
+    if (from != to) effect_events_.push_back({state_.t, static_cast<int>(k), from, to});
+  }
   previous_ = SampleAtState(0.0, 0);
   sink(previous_);
   next_sample_ = 1;

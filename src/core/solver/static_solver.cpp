@@ -74,9 +74,11 @@ bool CloseTouchedRigidStops(const Model& model, double round_off, State* state) 
 // Returns whether any was opened.
 bool OpenPullingStops(const Model& model, const State& equilibrium, State* start) {
   bool opened = false;
+  StepContextBuilder builder(model);
+  const StepContext& at_equilibrium = builder.AtState(equilibrium);
   for (const JointStop* stop : model.stop_effects()) {
     EffectState& effect = start->effects[stop->slot()];
-    if (effect.mode != JointStop::kContact || stop->Sample(equilibrium).force >= 0.0) continue;
+    if (effect.mode != JointStop::kContact || stop->Sample(equilibrium, at_equilibrium).force >= 0.0) continue;
     effect.mode = JointStop::kOpen;
     opened = true;
   }

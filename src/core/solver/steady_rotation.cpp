@@ -120,8 +120,9 @@ struct Increment {
   int unknown = 0;
 };
 
-// One Newton iteration of (R2): solves [K G^T e_h; B 0 0; e_h^T 0 0] (y, dlambda, tau) = -(r, Phi, 0) with the
-// hold column e_h on the spinning variable (when held), and applies y and dlambda. `hub_effort` receives tau.
+// One Newton iteration of (R2): solves [K G^T e_h; B C 0; e_h^T 0 0] (y, dlambda, tau) = -(r, Phi, 0) with the
+// hold column e_h on the spinning variable (when held), and applies y and dlambda. `hub_effort` receives tau. C
+// holds lambda = 0 on the rows of inactive constraints (open rigid stops), as the static analysis's tangent does.
 Increment NewtonIteration(const Model& model, const SteadyRotation& rotation, State* state, double* hub_effort) {
   const LinearisedSystem s = Linearise(model, *state, ReferenceMotion::kFromState);
   const int nk = static_cast<int>(s.K.rows()), m = static_cast<int>(s.B.rows());
@@ -138,6 +139,7 @@ Increment NewtonIteration(const Model& model, const SteadyRotation& rotation, St
   add(s.K, 0, 0);
   add(Eigen::SparseMatrix<double>(s.B.transpose()), 0, nk);  // constraint forces: G = B at the end point (E1)
   add(s.B, nk, 0);
+  add(s.C, nk, nk);
   const int hub = model.variable_unknown(rotation.spinning_variable);
   if (held) {
     t.emplace_back(hub, nk + m, 1.0);
