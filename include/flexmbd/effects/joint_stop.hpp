@@ -76,9 +76,9 @@ class RigidStop : public JointStop {
   // True when a contact begun with the gap closing at `closing` [m/s] rebounds, not a plastic impact that comes to
   // rest (C2a'); `fastest` is the fastest impact the stop has seen [m/s].
   static bool Rebounds(double closing, double fastest);
-  // True when a contact begun from `start` is an impact whose step is centred on the stop (C5'): adaptive steps
-  // and a rebound.
-  bool CentresImpact(const State& start) const;
+  // True when a contact begun from the start of ctx is an impact whose step is centred on the stop (C5'): adaptive
+  // steps, a rebound, and a rebound flight longer than the step ctx.
+  bool CentresImpact(const StepContext& ctx) const;
   // True when `state` lies within kEventFraction of the larger gap change of its last two steps of the stop, where
   // (C5') lets a contact step begin.
   bool CloseAfterLastStep(const State& state) const;

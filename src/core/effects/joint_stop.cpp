@@ -113,8 +113,16 @@ bool RigidStop::ComesToRest(const State& start, const State& end, double negligi
   return std::abs(GapRate(end.qdot[variable()])) > rest_rate;
 }
 
-bool RigidStop::CentresImpact(const State& start) const {
-  return solver_.adaptive && Rebounds(-GapRate(start.qdot[variable()]), start.effects[slot()].reference);
+bool RigidStop::CentresImpact(const StepContext& ctx) const {
+  const State& start = *ctx.start;
+  const double closing = -GapRate(start.qdot[variable()]);
+  if (!solver_.adaptive || !Rebounds(closing, start.effects[slot()].reference)) return false;
+  // A load that presses the joint on the stop (the gap accelerating shut) turns its rebound back after a flight of
+  // 2 closing / |acceleration|. A flight shorter than the step is not resolved at the step's pace: its contact step
+  // (C5) lets the load turn it back and comes to rest (C2a'), where centring would resolve a Zeno sequence of ever
+  // lower bounces one by one (the frictionless forearm: 4,543 steps and 342 contacts instead of 282 and 24).
+  const double acceleration = GapRate(Acceleration(start));
+  return acceleration >= 0 || 2 * closing > -acceleration * ctx.h;
 }
 
 bool RigidStop::CloseAfterLastStep(const State& state) const {
@@ -170,7 +178,7 @@ double RigidStop::LongestImpactStep(const StepContext& ctx, const State& end) co
 
 StepLimit RigidStop::Limit(const StepContext& ctx, const State& end) const {
   const State& start = *ctx.start;
-  if (!CentresImpact(start)) return JointStop::Limit(ctx, end);
+  if (!CentresImpact(ctx)) return JointStop::Limit(ctx, end);
   StepLimit limit;
   const VariableStep& q = (*ctx.variables)[variable()];
   const double g_i = Gap(q.q_i), g_f = Gap(q.q_f), h = ctx.h;
@@ -225,7 +233,7 @@ int RigidStop::ReviseMode(const StepContext& ctx) const {
   // and has it at its midpoint (C5'), any other contact close to the stop (C5).
   if (mode == kOpen && g_f < 0 && g_f < g_i) {
     // (At dt_min the step cannot be redone shorter: it begins the contact where it is.)
-    const bool begins = CentresImpact(*ctx.start) ? g_i <= 0 || ctx.h <= solver_.dt_min ||
+    const bool begins = CentresImpact(ctx) ? g_i <= 0 || ctx.h <= solver_.dt_min ||
                                                         (CloseAfterLastStep(*ctx.start) && Centred(ctx))
                                                   : g_i <= kEventFraction * (g_i - g_f);
     if (begins) return kContact;
