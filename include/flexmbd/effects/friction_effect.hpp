@@ -69,6 +69,9 @@ class FrictionEffect : public ModalEffect {
   bool has_sticking_row() const { return stick_multiplier_ >= 0; }
   /// The joint's rigid stops (their slots in State::effects), which hold q while in contact.
   void set_rigid_stop_slots(std::vector<int> slots) { rigid_stop_slots_ = std::move(slots); }
+  /// The kinetic friction force mu_k rho N (or the constant torque) with the joint's reactions at `state`: what
+  /// friction applies against a slide either way, so it jumps by twice this where the slide reverses [N m or N].
+  double KineticForce(const State& state) const;
 
  private:
   // The friction force on q over a step and its derivatives.
@@ -93,6 +96,8 @@ class FrictionEffect : public ModalEffect {
   double Bound(double mu, double normal) const;
   // The static bound mu_s rho N with the joint multipliers of `lambda`, about the motion axis of `start`.
   double StaticBound(const Eigen::VectorXd& lambda, const State& start) const;
+  // The bound with coefficient mu, the joint multipliers of `lambda` and the motion axis of `start`.
+  double BoundAt(double mu, const Eigen::VectorXd& lambda, const State& start) const;
   int Direction(int mode) const { return mode == kSlidingPositive ? 1 : mode == kSlidingNegative ? -1 : 0; }
   // The regularised law's factor (1 - exp(-|v|/v0)) sign(v) at slip velocity v, and its derivative in *d_dv.
   double RegularisedFactor(double v, double* d_dv) const;

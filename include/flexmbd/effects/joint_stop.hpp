@@ -5,7 +5,9 @@
 /// contact force F >= 0 acts along dg/dq, a generalised force F s rho on q.
 ///   RigidStop    g >= 0. A step that ends with g_f < 0 is redone with g_f = g_i enforced by a multiplier,
 ///                the contact force, which does no work because the gap does not change over the step; a
-///                step in contact whose multiplier would pull is redone open.
+///                step in contact whose multiplier would pull is redone open. With adaptive steps the step that
+///                begins an impact has the stop at its midpoint and is no longer than its acceleration jump allows
+///                (C5').
 ///   ElasticStop  F = V'(a) [1 + chi a_dot] at approach a = -g > 0 (ContactLaw), with the exact discrete
 ///                gradient of V so the books of stored and dissipated energy close.
 /// A stop with a retraction rule stops acting at the first separation after a named variable's speed
@@ -19,6 +21,8 @@
 #include "flexmbd/solver/output_sample.hpp"
 
 namespace flexmbd {
+
+class FrictionEffect;
 
 class JointStop : public ModalEffect {
  public:
@@ -52,19 +56,47 @@ class JointStop : public ModalEffect {
 
 class RigidStop : public JointStop {
  public:
-  RigidStop(const StopSpec& spec, int variable, int variable_unknown, int multiplier, int multiplier_unknown, int slot);
+  RigidStop(const StopSpec& spec, int variable, int variable_unknown, int multiplier, int multiplier_unknown, int slot,
+            const SolverSpec& solver);
+  /// The joint's friction, whose force turns with the rebound (C5'); none by default.
+  void set_friction(const FrictionEffect* friction) { friction_ = friction; }
   void AddResidual(const StepContext& ctx, Eigen::Ref<Eigen::VectorXd> r,
                    Eigen::Ref<Eigen::VectorXd> magnitude) const override;
   void AddTangent(const StepContext& ctx, Eigen::Ref<Eigen::MatrixXd> J) const override;
   int ReviseMode(const StepContext& ctx) const override;
   /// A plastic impact, or a contact that goes on after its first step while the joint still moves (C2a').
   bool ComesToRest(const State& start, const State& end, double negligible_rate) const override;
+  /// The approach rule (C5); with adaptive steps an impact's contact step centred on the stop and bounded by its
+  /// acceleration jump (C5').
+  StepLimit Limit(const StepContext& ctx, const State& end) const override;
   /// Remembers the fastest impact.
   void Commit(const StepContext& ctx, const State& end, EffectState* effect) const override;
   StopSample Sample(const State& state, const StepContext& step) const override;
 
  private:
+  // True when a contact begun with the gap closing at `closing` [m/s] rebounds, not a plastic impact that comes to
+  // rest (C2a'); `fastest` is the fastest impact the stop has seen [m/s].
+  static bool Rebounds(double closing, double fastest);
+  // True when a contact begun from the start of ctx is an impact whose step is centred on the stop (C5'): adaptive
+  // steps, a rebound, and a rebound flight longer than the step ctx.
+  bool CentresImpact(const StepContext& ctx) const;
+  // True when `state` lies within kEventFraction of the larger gap change of its last two steps of the stop, where
+  // (C5') lets a contact step begin.
+  bool CloseAfterLastStep(const State& state) const;
+  // When [s] the gap of the step ctx, on the parabola through its ends at its start rate, reaches the stop.
+  double CrossingTime(const StepContext& ctx) const;
+  // True when the step ctx, which crosses the stop, lasts twice its crossing time to within the local error test's
+  // allowance: as a contact step it returns the motion the exact impact has at its end (C5').
+  bool Centred(const StepContext& ctx) const;
+  // The longest contact step from the start of ctx (in contact) that its acceleration jump allows (C5') [s]:
+  // infinity without friction or an estimate.
+  double LongestImpactStep(const StepContext& ctx, const State& end) const;
+  // The joint's acceleration at `state` from the mean rates of its last two steps [rad/s^2 or m/s^2].
+  double Acceleration(const State& state) const;
+
   int multiplier_;
+  SolverSpec solver_;
+  const FrictionEffect* friction_ = nullptr;
 };
 
 class ElasticStop : public JointStop {

@@ -240,9 +240,15 @@ int FrictionEffect::ReviseMode(const StepContext& ctx) const {
   return Direction(mode) * EndRate(ctx, variable_) < 0 && slow ? kSticking : mode;
 }
 
+double FrictionEffect::KineticForce(const State& state) const { return BoundAt(spec_.mu_k, state.lambda, state); }
+
 double FrictionEffect::StaticBound(const Eigen::VectorXd& lambda, const State& start) const {
+  return BoundAt(spec_.mu_s, lambda, start);
+}
+
+double FrictionEffect::BoundAt(double mu, const Eigen::VectorXd& lambda, const State& start) const {
   Vec3 unused;
-  return Bound(spec_.mu_s, NormalForce(lambda.segment<3>(joint_multiplier_), AxisW(start), &unused));
+  return Bound(mu, NormalForce(lambda.segment<3>(joint_multiplier_), AxisW(start), &unused));
 }
 
 double FrictionEffect::BreakawayFraction(const StepContext& ctx) const {

@@ -103,7 +103,7 @@ void VariableEffectsBuilder::AddStop(const std::string& where, int v, StopSpec s
   std::unique_ptr<JointStop> element;
   if (stop.kind == StopSpec::Kind::kRigid) {
     element = std::make_unique<RigidStop>(stop, v, model_.variable_unknown(v), *multiplier,
-                                          model_.multiplier_unknown(*multiplier), slot);
+                                          model_.multiplier_unknown(*multiplier), slot, model_.solver());
     model_.multiplier_names_.push_back("stop " + stop.name + " of " + model_.variable_names_[v]);
     ++*multiplier;
   } else {
@@ -137,6 +137,10 @@ void VariableEffectsBuilder::AddFriction(const std::string& where, const JointSp
     if (stop->variable() == v && dynamic_cast<const RigidStop*>(stop) != nullptr) rigid_stops.push_back(stop->slot());
   }
   element->set_rigid_stop_slots(std::move(rigid_stops));
+  for (const auto& other : model_.elements_) {
+    auto* stop = dynamic_cast<RigidStop*>(other.get());
+    if (stop != nullptr && stop->variable() == v) stop->set_friction(element.get());
+  }
   if (sticks) {
     model_.multiplier_names_.push_back("friction " + model_.variable_names_[v]);
     ++*multiplier;
