@@ -42,6 +42,15 @@ TEST(StaticRigidStop, BlockStartedOnItsStopRestsThereWithItsWeightAlongTheInclin
   EXPECT_NEAR(row[csv.Column("stop.slide.upper.force")], 2.0 * kG * 0.5, kRoundOff * 10.0);
 }
 
+TEST(StaticRigidStop, RunnerSummarySaysNewtonIterationsAndLoadIncrementsNotTimeSteps) {
+  // A static analysis has no time steps: "steps: 0 accepted ...; step size 0 to 0 s" was printed for it.
+  const std::string output =
+      test::RunnerOutput("test/data/urdf/incline.urdf", DataYaml("incline_stop_static_on.yaml"), "incline_on_summary");
+  EXPECT_NE(output.find("flexmbd_run: static analysis: "), std::string::npos) << output;
+  EXPECT_NE(output.find(" Newton iterations in 10 load increments\n"), std::string::npos) << output;
+  EXPECT_EQ(output.find("step size"), std::string::npos) << output;
+}
+
 TEST(StaticRigidStop, HingedBladeRestsOnItsDroopStopAsAClampedCantilever) {
   // hbeam_static_rigid.yaml: a 1 m blade of 2 kg/m hinged at its root on its rigid droop stop (radius 0.1 m): the
   // stop holds the hinge at 0 with the weight's moment m g L^2 / 2 over the radius, 98.1 N, and the tip deflects as

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <limits>
+#include <sstream>
 #include <vector>
 
 #include "flexmbd/common/error.hpp"
@@ -151,6 +152,31 @@ StaticResult SolveStatic(const Model& model, SparseSystem* system, State* state)
     result = SolveLoadSteps(model, system, state);
   } while (result.converged && OpenPullingStops(model, *state, &start));
   return result;
+}
+
+std::string DescribeStaticFailure(const Model& model, const StaticResult& result) {
+  const SolverSpec& solver = model.solver();
+  std::ostringstream text;
+  text << "static analysis failed in load increment " << result.load_steps << " of " << solver.load_steps
+       << " (load factor " << static_cast<double>(result.load_steps) / solver.load_steps << "): ";
+  if (result.last.singular) {
+    text << "singular iteration matrix after " << result.last.iterations << " Newton iteration(s)";
+  } else {
+    text << "Newton did not converge in " << result.last.iterations << " iterations (solver.max_iterations "
+         << solver.max_iterations << ")";
+  }
+  if (result.last.worst_unknown >= 0) {
+    text << "; worst residual at " << model.DescribeUnknown(result.last.worst_unknown) << " (force "
+         << result.last.force_residual << " relative, constraint " << result.last.constraint_residual << ")";
+  }
+  if (result.last.singular) {
+    text << "; check that every part is held in the equilibrium (a joint free to move with nothing to stop it, "
+            "no spring, stop or drive, has none) and for constraints that repeat each other";
+  } else {
+    text << "; try more load increments (solver.load_steps), a larger solver.max_iterations or solver.tol, or "
+            "check that an equilibrium exists (a load that nothing holds has none)";
+  }
+  return text.str();
 }
 
 }  // namespace flexmbd
