@@ -85,6 +85,13 @@ class CycleReport {
                     model_.variable_names()[v].c_str(), start_, end_, c.mean, c.amplitude, floor);
         continue;
       }
+      if (c.one_way) {
+        std::printf("flexmbd_run: cycle of %s over [%.6g, %.6g] s: none, it runs one way from %.6g to %.6g (mean rate "
+                    "%.6g per s) without turning back\n",
+                    model_.variable_names()[v].c_str(), start_, end_, samples_[v].front(), samples_[v].back(),
+                    c.mean_rate);
+        continue;
+      }
       std::printf("flexmbd_run: cycle of %s over [%.6g, %.6g] s: mean %.6g, amplitude %.6g (half the peak-to-peak), "
                   "RMS %.6g, frequency %.6g Hz\n",
                   model_.variable_names()[v].c_str(), start_, end_, c.mean, c.amplitude, c.rms, c.frequency_hz);
