@@ -29,6 +29,9 @@ class JointStop : public ModalEffect {
   /// Generalised force on q of a contact force F [N m or N].
   double GeneralisedForce(double force) const { return sign_ * radius_ * force; }
   int variable() const { return variable_; }
+  /// A unilateral constraint with a multiplier (RigidStop), or a force law of the approach (ElasticStop): what
+  /// the static solver and the friction builder need to tell apart.
+  virtual bool rigid() const = 0;
 
   /// The output record of the stop at a state.
   virtual StopSample Sample(const State& state) const = 0;
@@ -52,6 +55,7 @@ class JointStop : public ModalEffect {
 class RigidStop : public JointStop {
  public:
   RigidStop(const StopSpec& spec, int variable, int variable_unknown, int multiplier, int multiplier_unknown, int slot);
+  bool rigid() const override { return true; }
   void AddResidual(const StepContext& ctx, Eigen::Ref<Eigen::VectorXd> r,
                    Eigen::Ref<Eigen::VectorXd> magnitude) const override;
   void AddTangent(const StepContext& ctx, Eigen::Ref<Eigen::MatrixXd> J) const override;
@@ -71,6 +75,7 @@ class ElasticStop : public JointStop {
   /// @param error_controlled the run's steps follow the local error test, which then resolves a contact after its
   /// first step; otherwise the contact rule (C6) bounds every contact step.
   ElasticStop(const StopSpec& spec, int variable, int variable_unknown, int slot, bool error_controlled);
+  bool rigid() const override { return false; }
   void AddResidual(const StepContext& ctx, Eigen::Ref<Eigen::VectorXd> r,
                    Eigen::Ref<Eigen::VectorXd> magnitude) const override;
   void AddTangent(const StepContext& ctx, Eigen::Ref<Eigen::MatrixXd> J) const override;

@@ -36,10 +36,10 @@ void StartFromReleaseMultipliers(const Model& model, double load_factor, State* 
 constexpr double kStopLanding = 1.02;
 
 // The fraction of `increment` to take: 1, or less where it would close one of `stops` from `state`.
-double StopLandingFraction(const std::vector<const ElasticStop*>& stops, const Model& model, const State& state,
+double StopLandingFraction(const std::vector<const JointStop*>& stops, const Model& model, const State& state,
                            const Eigen::VectorXd& increment, double round_off) {
   double fraction = 1.0;
-  for (const ElasticStop* stop : stops) {
+  for (const JointStop* stop : stops) {
     const double q = state.q[stop->variable()];
     const double g_i = stop->Gap(q), g_f = stop->Gap(q + increment[model.variable_unknown(stop->variable())]);
     if (g_i > round_off && g_f < 0) fraction = std::min(fraction, kStopLanding * g_i / (g_i - g_f));
@@ -47,10 +47,10 @@ double StopLandingFraction(const std::vector<const ElasticStop*>& stops, const M
   return std::min(fraction, 1.0);
 }
 
-std::vector<const ElasticStop*> ElasticStops(const Model& model) {
-  std::vector<const ElasticStop*> stops;
+std::vector<const JointStop*> ElasticStops(const Model& model) {
+  std::vector<const JointStop*> stops;
   for (const JointStop* stop : model.stop_effects()) {
-    if (const auto* elastic = dynamic_cast<const ElasticStop*>(stop)) stops.push_back(elastic);
+    if (!stop->rigid()) stops.push_back(stop);
   }
   return stops;
 }
@@ -63,7 +63,7 @@ bool CloseTouchedRigidStops(const Model& model, double round_off, State* state) 
   bool closed = false;
   for (const JointStop* stop : model.stop_effects()) {
     EffectState& effect = state->effects[stop->slot()];
-    if (dynamic_cast<const RigidStop*>(stop) == nullptr || effect.mode != JointStop::kOpen) continue;
+    if (!stop->rigid() || effect.mode != JointStop::kOpen) continue;
     if (stop->Gap(state->q[stop->variable()]) > round_off) continue;
     effect.mode = JointStop::kContact;
     closed = true;
@@ -97,7 +97,7 @@ StaticResult SolveLoadSteps(const Model& model, SparseSystem* system, State* sta
   // a stale tangent's divergence in the motion (docs/theory.md, "Newton iteration").
   NewtonOptions options;
   options.fresh_tangent_every_iteration = true;
-  const std::vector<const ElasticStop*> stops = ElasticStops(model);
+  const std::vector<const JointStop*> stops = ElasticStops(model);
   const double round_off = RoundOffFloor(model.length_scale());
   for (int step = 1; step <= n_steps; ++step) {
     const double load_factor = static_cast<double>(step) / n_steps;
