@@ -14,12 +14,9 @@ namespace {
 // Times closer than this fraction of a step are the same instant (guards the end of the run and sample times
 // against round-off in sums of step sizes).
 constexpr double kTimeEpsilon = 1.0e-9;
-// Within two and a half steps of the end the time left is taken in one or two equal steps (whichever count is
-// nearer to the step size), so that the run ends with neither a sliver step dominated by round-off nor a short
-// one: a step's forces carry the alternating mode of its start velocities divided by its size (m (v_f - v_i) / h
-// with v_f = 2 dx / h - v_i), and a last step of a tenth of the others gave an end sample whose efforts and beam
-// loads stood off the rest. The last steps are then 2/3 to 3/2 of the step before them.
-constexpr double kLastTwoSteps = 2.5;
+// A step that would leave less than this fraction of itself before t_end is stretched to reach t_end, so the
+// run never ends with a sliver step dominated by round-off.
+constexpr double kSliverFraction = 0.01;
 
 std::string FormatCommand(double value) {
   std::ostringstream text;
@@ -174,8 +171,7 @@ void Simulation::AdvanceTo(double t_until, double t_end, const SampleSink& sink)
   const double sample_period = model_.output().rate_hz > 0 ? 1.0 / model_.output().rate_hz : 0.0;
   while (state_.t < std::min(t_until, t_end) - kTimeEpsilon * h_) {
     double h = std::min(h_, solver.dt_max);
-    const double left = t_end - state_.t;
-    if (left < kLastTwoSteps * h) h = left < 1.5 * h ? left : 0.5 * left;
+    if (t_end - state_.t - h < kSliverFraction * h) h = t_end - state_.t;
     const StepResult result = TryStep(h);
     const double h_next = controller_.Next(h, result);
     if (result.status == StepStatus::kAccepted) {
