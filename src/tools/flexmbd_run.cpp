@@ -85,6 +85,13 @@ class CycleReport {
                     model_.variable_names()[v].c_str(), start_, end_, c.mean, c.amplitude, floor);
         continue;
       }
+      if (c.one_way) {
+        std::printf("flexmbd_run: cycle of %s over [%.6g, %.6g] s: none, it runs one way from %.6g to %.6g (mean rate "
+                    "%.6g per s) without turning back\n",
+                    model_.variable_names()[v].c_str(), start_, end_, samples_[v].front(), samples_[v].back(),
+                    c.mean_rate);
+        continue;
+      }
       std::printf("flexmbd_run: cycle of %s over [%.6g, %.6g] s: mean %.6g, amplitude %.6g (half the peak-to-peak), "
                   "RMS %.6g, frequency %.6g Hz\n",
                   model_.variable_names()[v].c_str(), start_, end_, c.mean, c.amplitude, c.rms, c.frequency_hz);
@@ -97,13 +104,23 @@ class CycleReport {
   double start_ = 0, end_ = 0;
 };
 
+// A static analysis has load increments and Newton iterations, no time steps to count.
+bool IsStatic(const flexmbd::Model& model) {
+  return model.solver().analysis == flexmbd::SolverSpec::Analysis::kStatic;
+}
+
 // `samples` written in `wall_seconds`, from the first sample to the recordings closed: what the node reports
 // for its run, so that scripts/bench_node.sh compares the two without the runner's start-up and loading.
 void PrintSummary(const flexmbd::Simulation& simulation, const flexmbd::OutputSample& last, long samples,
                   double wall_seconds) {
   std::printf("flexmbd_run: finished at t = %.6g s; %ld samples written in %.6g s wall time\n", simulation.state().t,
               samples, wall_seconds);
-  std::printf("flexmbd_run: %s\n", simulation.statistics().Summary(simulation.model()).c_str());
+  if (IsStatic(simulation.model())) {
+    std::printf("flexmbd_run: static analysis: %d Newton iterations in %d load increments\n", last.iterations,
+                simulation.model().solver().load_steps);
+  } else {
+    std::printf("flexmbd_run: %s\n", simulation.statistics().Summary(simulation.model()).c_str());
+  }
   std::printf("flexmbd_run: energy kinetic %.6g J, potential %.6g J, external work %.6g J, dissipated %.6g J, "
               "numerical dissipation %.6g J\n",
               last.kinetic, last.potential, last.external_work, last.dissipated, last.numerical_dissipation);
@@ -187,12 +204,7 @@ flexmbd::State LinearisationState(const flexmbd::Model& model) {
   if (!model.solver().eigen.static_first) return state;
   flexmbd::SparseSystem system(model);
   const flexmbd::StaticResult result = flexmbd::SolveStatic(model, &system, &state);
-  if (!result.converged) {
-    std::string what = "static analysis failed in load step " + std::to_string(result.load_steps) + " of " +
-                       std::to_string(model.solver().load_steps);
-    if (result.last.worst_unknown >= 0) what += "; worst residual at " + model.DescribeUnknown(result.last.worst_unknown);
-    throw flexmbd::SolverError(what);
-  }
+  if (!result.converged) throw flexmbd::SolverError(flexmbd::DescribeStaticFailure(model, result));
   return state;
 }
 
@@ -317,7 +329,8 @@ int main(int argc, char** argv) {
           model.solver().eigen.at_times, [&](const flexmbd::State& state) { PrintModesOfRunState(model, state); });
     } catch (const flexmbd::SolverError& e) {
       std::fprintf(stderr, "flexmbd_run: run failed: %s\n", e.what());
-      std::printf("flexmbd_run: %s\n", simulation.statistics().Summary(simulation.model()).c_str());
+      // A static analysis's message says what it did.
+      if (!IsStatic(model)) std::printf("flexmbd_run: %s\n", simulation.statistics().Summary(simulation.model()).c_str());
       outputs.Close();  // may throw OutputError, reported below
       return flexmbd::kExitRunFailed;
     }

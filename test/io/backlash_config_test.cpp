@@ -6,6 +6,7 @@
 
 #include <cmath>
 
+#include "flexmbd/effects/joint_stop.hpp"
 #include "flexmbd/io/config_loader.hpp"
 #include "flexmbd/model/model.hpp"
 #include "io_test_util.hpp"
@@ -61,6 +62,19 @@ joints:
     EXPECT_EQ(stop.steps_per_contact, 30);
     EXPECT_TRUE(stop.retraction.joint.empty());
   }
+}
+
+TEST(BacklashConfig, BuiltStopsReportTheKindTheBlockAsked) {
+  // JointStop::rigid(), which the static solver and the friction builder read: a rigid block's stops are
+  // constraints, an elastic block's force laws.
+  const Model model = BuildModel(Load(R"(
+joints:
+  hinge:
+    backlash: [{lower: -0.4, upper: 0.6, stop: {type: rigid}},
+               {lower: -0.45, upper: 0.65, stop: {type: elastic, law: linear, stiffness: 1.0e4}}]
+)"));
+  ASSERT_EQ(model.stop_effects().size(), 4u);
+  for (size_t k = 0; k < 4; ++k) EXPECT_EQ(model.stop_effects()[k]->rigid(), k < 2) << model.stops()[k].stop;
 }
 
 TEST(BacklashConfig, UrdfLimitGivesThePositionsWhenTheBlockHasNone) {

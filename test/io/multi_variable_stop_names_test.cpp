@@ -33,6 +33,45 @@ TEST(MultiVariableStopNames, CsvColumnsAndContactLinesNameTheVariable) {
   }
 }
 
+// The CSV header of pend_rev.urdf with its pivot made `type` and `variables` given, for 0.01 s.
+std::vector<std::string> HeaderWithPivot(const std::string& type, const std::string& variables) {
+  const std::string csv_path = testing::TempDir() + "pivot_" + type + ".csv";
+  test::RunnerOutput("test/data/urdf/pend_rev.urdf",
+                     "joints: {pivot: {type: " + type + variables + "}}\nsolver: {t_end: 0.01}\noutput: {csv: " +
+                         csv_path + "}\n",
+                     "pivot_" + type);
+  return test::ReadCsv(csv_path).header;
+}
+
+// The columns docs/config.md lists per multi-variable joint type: joint/k per variable, in the order of
+// `variables`, stops named by their variable, none for a spherical joint (which has no variable).
+TEST(MultiVariableStopNames, CsvColumnsOfEachJointTypeAreThoseDocumented) {
+  const auto has = [](const std::vector<std::string>& header, const std::string& column) {
+    return std::count(header.begin(), header.end(), column) == 1;
+  };
+  const std::vector<std::string> cylindrical =
+      HeaderWithPivot("cylindrical", ", variables: [{}, {backlash: {lower: -0.1, upper: 0.1}}]");
+  for (const char* column : {"joint.pivot/0.position", "joint.pivot/1.velocity", "joint.pivot/1.effort",
+                             "stop.pivot/1.upper.force", "joint.pivot.reaction_force_x"}) {
+    EXPECT_TRUE(has(cylindrical, column)) << "cylindrical: " << column;
+  }
+  EXPECT_FALSE(has(cylindrical, "joint.pivot.position"));
+  const std::vector<std::string> planar = HeaderWithPivot("planar", "");
+  for (const char* column : {"joint.pivot/0.position", "joint.pivot/1.position", "joint.pivot/2.position"}) {
+    EXPECT_TRUE(has(planar, column)) << "planar: " << column;
+  }
+  const std::vector<std::string> universal = HeaderWithPivot("universal", "");
+  for (const char* column : {"joint.pivot/0.position", "joint.pivot/1.position"}) {
+    EXPECT_TRUE(has(universal, column)) << "universal: " << column;
+  }
+  EXPECT_FALSE(has(universal, "joint.pivot/2.position"));
+  const std::vector<std::string> spherical = HeaderWithPivot("spherical", "");
+  EXPECT_TRUE(has(spherical, "joint.pivot.reaction_force_x"));
+  EXPECT_EQ(std::count_if(spherical.begin(), spherical.end(),
+                          [](const std::string& c) { return c.find(".position") != std::string::npos; }),
+            0);
+}
+
 TEST(MultiVariableStopNames, SingleVariableJointKeepsItsName) {
   const ModelSpec spec = LoadModelSpec(test::DataPath("urdf/pend_rev.urdf"), test::DataPath("yaml/stop_eigen.yaml"));
   const Model model = BuildModel(spec);

@@ -172,6 +172,48 @@ TEST(RunnerExit, FixedStepsTooLongForAContactExitWithThreeAndSayWhatToTry) {
   EXPECT_EQ(RunRunner(FreeplayOnFixedSteps("freeplay_long_steps_hint_taken.yaml", "0.001")).exit_status, 0);
 }
 
+// A static analysis has load increments and Newton iterations, not time steps: its failure says what it did and
+// nothing of steps, dt or dt_min (which read as the dynamic run's).
+void ExpectStaticWords(const std::string& message) {
+  for (const char* dynamic_word : {"with step", "dt_min", "solver.dt", "step size"}) {
+    EXPECT_EQ(message.find(dynamic_word), std::string::npos) << dynamic_word << " in: " << message;
+  }
+}
+
+TEST(RunnerExit, StaticAnalysisThatDoesNotConvergeSaysItsIncrementAndIterations) {
+  // The simple pendulum held at 90 deg has its equilibrium 90 deg away: one Newton iteration cannot reach it.
+  const RunOutcome failed = RunRunner(
+      "--urdf " + Data("urdf/simple_pendulum.urdf") + " --config " +
+      WriteFile("static_one_iteration.yaml", "joints: {hinge: {initial: {position_deg: 90.0}}}\n"
+                                             "solver: {analysis: static, load_steps: 2, max_iterations: 1}\n"));
+  EXPECT_EQ(failed.exit_status, kRunFailedExit);
+  EXPECT_NE(failed.stderr_text.find("run failed: static analysis failed in load increment 1 of 2 (load factor "
+                                    "0.5): Newton did not converge in 1 iterations (solver.max_iterations 1); "
+                                    "worst residual at "),
+            std::string::npos)
+      << failed.stderr_text;
+  EXPECT_NE(failed.stderr_text.find("; try more load increments (solver.load_steps), a larger "
+                                    "solver.max_iterations or solver.tol"),
+            std::string::npos)
+      << failed.stderr_text;
+  ExpectStaticWords(failed.stderr_text);
+}
+
+TEST(RunnerExit, StaticAnalysisOfAnUnheldJointSaysItsMatrixIsSingular) {
+  // A block on a frictionless incline with nothing to hold it (test/data/urdf/incline.urdf): no equilibrium.
+  const RunOutcome failed =
+      RunRunner("--urdf " + Data("urdf/incline.urdf") + " --config " +
+                WriteFile("static_unheld.yaml", "solver: {analysis: static}\n"));
+  EXPECT_EQ(failed.exit_status, kRunFailedExit);
+  EXPECT_NE(failed.stderr_text.find("run failed: static analysis failed in load increment 1 of 10 (load factor "
+                                    "0.1): singular iteration matrix after "),
+            std::string::npos)
+      << failed.stderr_text;
+  EXPECT_NE(failed.stderr_text.find("check that every part is held in the equilibrium"), std::string::npos)
+      << failed.stderr_text;
+  ExpectStaticWords(failed.stderr_text);
+}
+
 TEST(RunnerExit, CsvOnAFullDeviceExitsWithThreeInOneLineNamingTheFile) {
   const RunOutcome out = RunRunner(DoublePendulumCase() + " --csv /dev/full");
   EXPECT_EQ(out.exit_status, kRunFailedExit);

@@ -49,5 +49,26 @@ TEST(CycleStatistics, TooFewSamplesGiveNoFrequency) {
   EXPECT_EQ(MeasureCycle({}, 0.1).rms, 0.0);
 }
 
+TEST(CycleStatistics, SpinningAngleRunsOneWayAtItsMeanRate) {
+  // A rotor's angle: 10 rad/s with a 1P ripple of 0.05 rad (its rate 10 + 0.5 cos never turns negative), 4 s at
+  // 100 Hz. It has a mean and a spectrum, but no cycle; its mean rate is (x_last - x_first) / 3.99 s, which the
+  // ripple moves by at most 0.1 rad / 3.99 s.
+  const double dt = 0.01;
+  std::vector<double> x = Sampled(0.0, 0.05, 10.0 / (2 * M_PI), dt, 400);
+  for (size_t k = 0; k < x.size(); ++k) x[k] += 10.0 * dt * k;
+  const CycleStatistics c = MeasureCycle(x, dt);
+  EXPECT_TRUE(c.one_way);
+  EXPECT_NEAR(c.mean_rate, 10.0, 0.1 / 3.99);
+}
+
+TEST(CycleStatistics, OscillationAndRestDoNotRunOneWay) {
+  EXPECT_FALSE(MeasureCycle(Sampled(0.25, 1.5, 4.21, 0.005, 6000), 0.005).one_way);
+  // A drift with an oscillation that turns it back now and then is a cycle about a moving mean.
+  std::vector<double> x = Sampled(0.0, 1.0, 2.0, 0.01, 400);
+  for (size_t k = 0; k < x.size(); ++k) x[k] += 0.05 * k;
+  EXPECT_FALSE(MeasureCycle(x, 0.01).one_way);
+  EXPECT_FALSE(MeasureCycle(std::vector<double>(10, 3.0), 0.01).one_way);
+}
+
 }  // namespace cycle_statistics_test
 }  // namespace flexmbd

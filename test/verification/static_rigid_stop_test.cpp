@@ -42,6 +42,36 @@ TEST(StaticRigidStop, BlockStartedOnItsStopRestsThereWithItsWeightAlongTheInclin
   EXPECT_NEAR(row[csv.Column("stop.slide.upper.force")], 2.0 * kG * 0.5, kRoundOff * 10.0);
 }
 
+TEST(StaticRigidStop, RunnerSummarySaysNewtonIterationsAndLoadIncrementsNotTimeSteps) {
+  // A static analysis has no time steps: "steps: 0 accepted ...; step size 0 to 0 s" was printed for it.
+  const std::string output =
+      test::RunnerOutput("test/data/urdf/incline.urdf", DataYaml("incline_stop_static_on.yaml"), "incline_on_summary");
+  EXPECT_NE(output.find("flexmbd_run: static analysis: "), std::string::npos) << output;
+  EXPECT_NE(output.find(" Newton iterations in 10 load increments\n"), std::string::npos) << output;
+  EXPECT_EQ(output.find("step size"), std::string::npos) << output;
+}
+
+TEST(StaticRigidStop, RunnerSaysTheStopIsClosedWithItsForceNotContactIntervals) {
+  // The block of the test above: a static analysis has no time and no contact intervals (it printed "0 contact
+  // interval(s)" for the stop that holds the block); the stop is closed with m g sin 30 = 9.81 N.
+  const std::string output =
+      test::RunnerOutput("test/data/urdf/incline.urdf", DataYaml("incline_stop_static_on.yaml"), "incline_on_report");
+  EXPECT_NE(output.find("flexmbd_run: stop slide upper: closed in the static equilibrium, contact force 9.81 N\n"),
+            std::string::npos)
+      << output;
+  EXPECT_EQ(output.find("interval"), std::string::npos) << output;
+  // pend_rev.urdf on an upper stop that would pull: it opens, and the pendulum hangs 0.3 rad from it, a gap of
+  // 0.1 m x 0.3.
+  const std::string open = test::RunnerOutput(
+      "test/data/urdf/pend_rev.urdf",
+      "joints: {pivot: {initial: {position: 0.3}, backlash: {upper: 0.3, radius_upper: 0.1, stop: {type: rigid}}}}\n"
+      "solver: {analysis: static}\n",
+      "pend_upper_report");
+  EXPECT_NE(open.find("flexmbd_run: stop pivot upper: open in the static equilibrium, gap 0.03 m\n"),
+            std::string::npos)
+      << open;
+}
+
 TEST(StaticRigidStop, HingedBladeRestsOnItsDroopStopAsAClampedCantilever) {
   // hbeam_static_rigid.yaml: a 1 m blade of 2 kg/m hinged at its root on its rigid droop stop (radius 0.1 m): the
   // stop holds the hinge at 0 with the weight's moment m g L^2 / 2 over the radius, 98.1 N, and the tip deflects as

@@ -33,6 +33,9 @@ class JointStop : public ModalEffect {
   /// Generalised force on q of a contact force F [N m or N].
   double GeneralisedForce(double force) const { return sign_ * radius_ * force; }
   int variable() const { return variable_; }
+  /// A unilateral constraint with a multiplier (RigidStop), or a force law of the approach (ElasticStop): what
+  /// the static solver and the friction builder need to tell apart.
+  virtual bool rigid() const = 0;
 
   /// The output record of the stop at `state`, reached by `step` (or StepContextBuilder::AtState): contact and
   /// approach at the state, force and torque those `step` applied, the stop's part of the joint's effort.
@@ -58,6 +61,7 @@ class RigidStop : public JointStop {
  public:
   RigidStop(const StopSpec& spec, int variable, int variable_unknown, int multiplier, int multiplier_unknown, int slot,
             const SolverSpec& solver);
+  bool rigid() const override { return true; }
   /// The joint's friction, whose force turns with the rebound (C5'); none by default.
   void set_friction(const FrictionEffect* friction) { friction_ = friction; }
   void AddResidual(const StepContext& ctx, Eigen::Ref<Eigen::VectorXd> r,
@@ -104,6 +108,7 @@ class ElasticStop : public JointStop {
   /// @param solver the run's settings: with adaptive steps the local error test, on the stop's own pace at the
   /// onset of a contact, resolves it (C6); with fixed steps the contact rule (C6) bounds every contact step.
   ElasticStop(const StopSpec& spec, int variable, int variable_unknown, int slot, const SolverSpec& solver);
+  bool rigid() const override { return false; }
   void AddResidual(const StepContext& ctx, Eigen::Ref<Eigen::VectorXd> r,
                    Eigen::Ref<Eigen::VectorXd> magnitude) const override;
   void AddTangent(const StepContext& ctx, Eigen::Ref<Eigen::MatrixXd> J) const override;

@@ -54,13 +54,17 @@ class BeamElement : public Element {
   /// One section of the element at a state, interpolated with the shape functions (B1)-(B2).
   struct Section {
     Eigen::Matrix<double, 6, 1> strain;  ///< [eps; kappa], section frame [-, 1/m]
-    Eigen::Matrix<double, 6, 1> load;    ///< [N; M] = C (strain + mu strain rate), section frame [N, N m]
+    Eigen::Matrix<double, 6, 1> load;    ///< [N; M] = C strain, the elastic part, section frame [N, N m]
     Vec3 x = Vec3::Zero();               ///< position of the beam axis [m]
     Mat3 R = Mat3::Identity();           ///< section frame in W
   };
-  /// The section at distance s from the element's first node, 0 <= s <= length [m]; the strain rate of the
-  /// damping part comes from the state's node velocities.
+  /// The section at distance s from the element's first node, 0 <= s <= length [m].
   Section SectionAt(const State& state, double s) const;
+  /// The structural damping part mu C eps_dot (B7) of the section forces at s that the step `step` applied,
+  /// section frame [N, N m]: in a dynamic step the rate of the strains over it, (eps_f - eps_i) / h, which a
+  /// rigid motion leaves at zero; at the end point B (v_f, w_f); none in statics (docs/theory.md, "Station
+  /// outputs").
+  Eigen::Matrix<double, 6, 1> DampingLoadAt(const StepContext& step, double s) const;
 
   const std::string& name() const { return name_; }
   const std::vector<int>& nodes() const { return nodes_; }
@@ -106,6 +110,8 @@ class BeamElement : public Element {
   Field::PointVectors StrainsAt(const Field::Nodes& nodes, KeptStrains* kept) const;
 
   Field::Nodes AtState(const State& state) const;
+  // The weights that carry values at the Gauss points to s by the polynomial through them ("Station outputs").
+  std::array<double, BeamShape::kMaxPoints> StationWeights(double s) const;
   // The element's nodes at the start and the end of the step of ctx.
   void StepEnds(const StepContext& ctx, Field::Nodes* start, Field::Nodes* end) const;
   double Energy(const Field& field) const;

@@ -3,6 +3,8 @@
 /// Static equilibrium by Newton's method with load stepping: gravity and applied loads are raised in
 /// `load_steps` equal increments, each solved to convergence from the previous one.
 
+#include <string>
+
 #include "flexmbd/model/state.hpp"
 #include "flexmbd/solver/newton.hpp"
 
@@ -20,5 +22,11 @@ struct StaticResult {
 
 /// Solves for equilibrium at time state->t starting from *state; velocities are set to zero.
 StaticResult SolveStatic(const Model& model, SparseSystem* system, State* state);
+
+/// What a static analysis that did not converge did, in its own terms (load increments, Newton iterations, the
+/// worst residual) and what to try, e.g. "static analysis failed in load increment 3 of 10 (load factor 0.3):
+/// Newton did not converge in 20 iterations (solver.max_iterations); worst residual at joint variable slide
+/// (force 0.5 relative, constraint 0); try ...".
+std::string DescribeStaticFailure(const Model& model, const StaticResult& result);
 
 }  // namespace flexmbd

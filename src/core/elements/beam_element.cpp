@@ -341,35 +341,55 @@ Vec6 BeamElement::LaggedStrainChange(const StepContext& ctx, int point) const {
   return ctx.h / ctx.start->h_prev * ctx.start->element_history[index()].segment<6>(6 * point);
 }
 
-BeamElement::Section BeamElement::SectionAt(const State& state, double s) const {
+std::array<double, BeamShape::kMaxPoints> BeamElement::StationWeights(double s) const {
   FLEXMBD_DEMAND(s >= -1.0e-12 * length_ && s <= length_ * (1.0 + 1.0e-12));
-  const Field::Nodes c = AtState(state);
   const double xi = 2.0 * s / length_ - 1.0;
-  const BeamShape point = PointShape(shape_.order, length_, xi);
+  std::array<double, BeamShape::kMaxPoints> weights{};
+  for (int g = 0; g < shape_.num_points; ++g) {
+    weights[g] = 1.0;
+    for (int m = 0; m < shape_.num_points; ++m) {
+      if (m != g) weights[g] *= (xi - shape_.xi[m]) / (shape_.xi[g] - shape_.xi[m]);
+    }
+  }
+  return weights;
+}
+
+BeamElement::Section BeamElement::SectionAt(const State& state, double s) const {
+  const Field::Nodes c = AtState(state);
+  const BeamShape point = PointShape(shape_.order, length_, 2.0 * s / length_ - 1.0);
   Section section;
   section.R = Field(point, c, Field::Order::kStrains).SectionRotation(0);
   for (int k = 0; k < shape_.num_nodes(); ++k) section.x += point.N[0][k] * c.x[k];
   // Strains are recovered at the Gauss points, where the reduced rule makes them accurate (the shear strains
   // between them carry the parasitic part that reduced integration removes from the energy), and carried to
   // s by the polynomial through them (docs/theory.md, "Station outputs").
-  const Field gauss(shape_, c, Field::Order::kFirst);
-  Field::Vector rates(6 * shape_.num_nodes());
-  for (int k = 0; k < shape_.num_nodes(); ++k) {
-    rates.segment<3>(6 * k) = state.nodes[nodes_[k]].v;
-    rates.segment<3>(6 * k + 3) = state.nodes[nodes_[k]].w;
-  }
+  const Field::PointVectors strains = StrainsAt(c, nullptr);
+  const std::array<double, BeamShape::kMaxPoints> weights = StationWeights(s);
   section.strain.setZero();
-  Vec6 strain_and_damping = Vec6::Zero();
-  for (int g = 0; g < shape_.num_points; ++g) {
-    double weight = 1.0;
-    for (int m = 0; m < shape_.num_points; ++m) {
-      if (m != g) weight *= (xi - shape_.xi[m]) / (shape_.xi[g] - shape_.xi[m]);
-    }
-    section.strain += weight * gauss.strain(g);
-    strain_and_damping += weight * (gauss.strain(g) + damping_ * (gauss.StrainJacobian(g) * rates));
-  }
-  section.load = stiffness_ * strain_and_damping;
+  for (int g = 0; g < shape_.num_points; ++g) section.strain += weights[g] * strains[g];
+  section.load = stiffness_ * section.strain;
   return section;
+}
+
+Vec6 BeamElement::DampingLoadAt(const StepContext& step, double s) const {
+  if (damping_ == 0.0 || step.mode == AnalysisMode::kStatic) return Vec6::Zero();
+  const std::array<double, BeamShape::kMaxPoints> weights = StationWeights(s);
+  Vec6 rate = Vec6::Zero();
+  if (step.mode == AnalysisMode::kDynamic) {
+    // The scheme's end velocities are no rigid field in a rigid rotation (the trapezoidal relation (T3) makes a
+    // node on a circle faster than its turn), so B (v_f, w_f) would strain a spinning beam. The strains are
+    // objective: their change over the step gives the rate the step's damping applied.
+    const Field::PointVectors de = StrainChanges(step);
+    for (int g = 0; g < shape_.num_points; ++g) rate += weights[g] * de[g];
+    rate /= step.h;
+  } else {
+    Field::Nodes end;
+    Field::Vector rates;
+    EndNodesAndRates(step, &end, &rates);
+    const Field field(shape_, end, Field::Order::kFirst);
+    for (int g = 0; g < shape_.num_points; ++g) rate += weights[g] * (field.StrainJacobian(g) * rates);
+  }
+  return damping_ * (stiffness_ * rate);
 }
 
 }  // namespace flexmbd

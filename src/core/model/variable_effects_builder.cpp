@@ -134,7 +134,7 @@ void VariableEffectsBuilder::AddFriction(const std::string& where, const JointSp
       model_.multiplier_unknown(element_joint.first_multiplier()), slot, model_.solver());
   std::vector<int> rigid_stops;
   for (const JointStop* stop : model_.stop_effects_) {
-    if (stop->variable() == v && dynamic_cast<const RigidStop*>(stop) != nullptr) rigid_stops.push_back(stop->slot());
+    if (stop->variable() == v && stop->rigid()) rigid_stops.push_back(stop->slot());
   }
   element->set_rigid_stop_slots(std::move(rigid_stops));
   for (const auto& other : model_.elements_) {

@@ -23,6 +23,8 @@ CycleStatistics MeasureCycle(const std::vector<double>& x, double dt) {
     square += centred[k] * centred[k];
   }
   out.rms = std::sqrt(square / static_cast<double>(n));
+  if (n > 1) out.mean_rate = (x.back() - x.front()) / (static_cast<double>(n - 1) * dt);
+  out.one_way = *high > *low && (std::is_sorted(x.begin(), x.end()) || std::is_sorted(x.rbegin(), x.rend()));
   if (n < 4) return out;
   Eigen::FFT<double> fft;
   std::vector<std::complex<double>> spectrum;

@@ -38,10 +38,30 @@ std::vector<std::pair<double, double>> Intervals(const std::vector<EffectEvent>&
   if (inside) intervals.emplace_back(begin, t_end);
   return intervals;
 }
+
+// A static analysis has no time and no events: each stop is closed or open in the equilibrium, and friction is
+// left out of it (docs/theory.md, "Friction").
+std::vector<std::string> DescribeStaticEffects(const Model& model, const State& state) {
+  std::vector<std::string> lines;
+  for (size_t k = 0; k < model.stops().size(); ++k) {
+    const JointStop& stop = *model.stop_effects()[k];
+    const StopSample sample = stop.Sample(state);
+    std::ostringstream line;
+    line << "stop " << model.stops()[k].joint << ' ' << model.stops()[k].stop << ": ";
+    if (sample.in_contact) line << "closed in the static equilibrium, contact force " << sample.force << " N";
+    else line << "open in the static equilibrium, gap " << stop.Gap(state.q[stop.variable()]) << " m";
+    lines.push_back(line.str());
+  }
+  for (const FrictionInfo& friction : model.frictions()) {
+    lines.push_back("friction " + friction.joint + ": left out of the static analysis");
+  }
+  return lines;
+}
 }  // namespace
 
 std::vector<std::string> DescribeEffectIntervals(const Model& model, const std::vector<EffectEvent>& events,
                                                  const State& state) {
+  if (model.solver().analysis == SolverSpec::Analysis::kStatic) return DescribeStaticEffects(model, state);
   const double t_end = state.t;
   std::vector<std::string> lines;
   for (size_t k = 0; k < model.stops().size(); ++k) {

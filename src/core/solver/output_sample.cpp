@@ -4,11 +4,13 @@
 
 namespace flexmbd {
 namespace {
-BeamStationSample SampleStation(const Model& model, const State& state, const BeamStationInfo& station) {
+// The station's section at a state that the step `ctx` led to, with the structural damping that step applied.
+BeamStationSample SampleStation(const Model& model, const State& state, const StepContext& ctx,
+                                const BeamStationInfo& station) {
   const BeamElement::Section now = station.element->SectionAt(state, station.s_element);
   const BeamElement::Section initial = station.element->SectionAt(model.initial_state(), station.s_element);
   BeamStationSample sample;
-  sample.load = now.load;
+  sample.load = now.load + station.element->DampingLoadAt(ctx, station.s_element);
   sample.strain = now.strain;
   sample.displacement = now.x - initial.x;
   sample.rotation = Log(now.R * initial.R.transpose());
@@ -71,7 +73,7 @@ OutputSample MakeSample(const Model& model, const State& state, const StepContex
   s.external_work = state.external_work;
   s.dissipated = state.dissipated_physical;
   s.numerical_dissipation = state.dissipated_numerical;
-  for (const BeamStationInfo& station : model.beam_stations()) s.beam_stations.push_back(SampleStation(model, state, station));
+  for (const BeamStationInfo& station : model.beam_stations()) s.beam_stations.push_back(SampleStation(model, state, ctx, station));
   for (const TypicalSectionAero* section : model.aero_sections()) s.aero_sections.push_back(SampleAero(*section, state, ctx));
   for (const StripStationInfo& station : model.strip_stations()) {
     // A station at a node (weight 0) takes that node's strip alone.

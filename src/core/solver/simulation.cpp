@@ -81,14 +81,7 @@ void Simulation::Fail(const char* what, double h, const StepResult& last) const 
 
 StaticResult Simulation::SolveStaticEquilibrium() {
   const StaticResult result = SolveStatic(model_, &system_, &state_);
-  if (!result.converged) {
-    StepResult last;
-    last.status = result.last.singular ? StepStatus::kSingularMatrix : StepStatus::kNewtonDiverged;
-    last.newton = result.last;
-    std::ostringstream what;
-    what << "static analysis failed in load step " << result.load_steps << " of " << model_.solver().load_steps;
-    Fail(what.str().c_str(), 0.0, last);
-  }
+  if (!result.converged) throw SolverError(DescribeStaticFailure(model_, result));
   return result;
 }
 

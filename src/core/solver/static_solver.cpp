@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <limits>
+#include <sstream>
 #include <vector>
 
 #include "flexmbd/common/error.hpp"
@@ -35,10 +36,10 @@ void StartFromReleaseMultipliers(const Model& model, double load_factor, State* 
 constexpr double kStopLanding = 1.02;
 
 // The fraction of `increment` to take: 1, or less where it would close one of `stops` from `state`.
-double StopLandingFraction(const std::vector<const ElasticStop*>& stops, const Model& model, const State& state,
+double StopLandingFraction(const std::vector<const JointStop*>& stops, const Model& model, const State& state,
                            const Eigen::VectorXd& increment, double round_off) {
   double fraction = 1.0;
-  for (const ElasticStop* stop : stops) {
+  for (const JointStop* stop : stops) {
     const double q = state.q[stop->variable()];
     const double g_i = stop->Gap(q), g_f = stop->Gap(q + increment[model.variable_unknown(stop->variable())]);
     if (g_i > round_off && g_f < 0) fraction = std::min(fraction, kStopLanding * g_i / (g_i - g_f));
@@ -46,10 +47,10 @@ double StopLandingFraction(const std::vector<const ElasticStop*>& stops, const M
   return std::min(fraction, 1.0);
 }
 
-std::vector<const ElasticStop*> ElasticStops(const Model& model) {
-  std::vector<const ElasticStop*> stops;
+std::vector<const JointStop*> ElasticStops(const Model& model) {
+  std::vector<const JointStop*> stops;
   for (const JointStop* stop : model.stop_effects()) {
-    if (const auto* elastic = dynamic_cast<const ElasticStop*>(stop)) stops.push_back(elastic);
+    if (!stop->rigid()) stops.push_back(stop);
   }
   return stops;
 }
@@ -62,7 +63,7 @@ bool CloseTouchedRigidStops(const Model& model, double round_off, State* state) 
   bool closed = false;
   for (const JointStop* stop : model.stop_effects()) {
     EffectState& effect = state->effects[stop->slot()];
-    if (dynamic_cast<const RigidStop*>(stop) == nullptr || effect.mode != JointStop::kOpen) continue;
+    if (!stop->rigid() || effect.mode != JointStop::kOpen) continue;
     if (stop->Gap(state->q[stop->variable()]) > round_off) continue;
     effect.mode = JointStop::kContact;
     closed = true;
@@ -98,7 +99,7 @@ StaticResult SolveLoadSteps(const Model& model, SparseSystem* system, State* sta
   // a stale tangent's divergence in the motion (docs/theory.md, "Newton iteration").
   NewtonOptions options;
   options.fresh_tangent_every_iteration = true;
-  const std::vector<const ElasticStop*> stops = ElasticStops(model);
+  const std::vector<const JointStop*> stops = ElasticStops(model);
   const double round_off = RoundOffFloor(model.length_scale());
   for (int step = 1; step <= n_steps; ++step) {
     const double load_factor = static_cast<double>(step) / n_steps;
@@ -153,6 +154,31 @@ StaticResult SolveStatic(const Model& model, SparseSystem* system, State* state)
     result = SolveLoadSteps(model, system, state);
   } while (result.converged && OpenPullingStops(model, *state, &start));
   return result;
+}
+
+std::string DescribeStaticFailure(const Model& model, const StaticResult& result) {
+  const SolverSpec& solver = model.solver();
+  std::ostringstream text;
+  text << "static analysis failed in load increment " << result.load_steps << " of " << solver.load_steps
+       << " (load factor " << static_cast<double>(result.load_steps) / solver.load_steps << "): ";
+  if (result.last.singular) {
+    text << "singular iteration matrix after " << result.last.iterations << " Newton iteration(s)";
+  } else {
+    text << "Newton did not converge in " << result.last.iterations << " iterations (solver.max_iterations "
+         << solver.max_iterations << ")";
+  }
+  if (result.last.worst_unknown >= 0) {
+    text << "; worst residual at " << model.DescribeUnknown(result.last.worst_unknown) << " (force "
+         << result.last.force_residual << " relative, constraint " << result.last.constraint_residual << ")";
+  }
+  if (result.last.singular) {
+    text << "; check that every part is held in the equilibrium (a joint free to move with nothing to stop it, "
+            "no spring, stop or drive, has none) and for constraints that repeat each other";
+  } else {
+    text << "; try more load increments (solver.load_steps), a larger solver.max_iterations or solver.tol, or "
+            "check that an equilibrium exists (a load that nothing holds has none)";
+  }
+  return text.str();
 }
 
 }  // namespace flexmbd
