@@ -145,6 +145,29 @@ TEST(StaticStart, ABentBladeOnADrivenHubStartsTurningRigidly) {
   }
 }
 
+// The same blade in 120 elements (n = 2,173): beyond the dense solve's limit the start is refused, in a message that
+// says how to start such a model, not left to run for minutes or to exhaust the memory.
+TEST(StaticStart, ALargeModelWithAMovingDriveIsRefusedWithTheWayOut) {
+  std::string yaml = test::SourceText("test/data/yaml/rotating_cantilever.yaml");
+  yaml = test::Replaced(yaml, "initial: {velocity: 6.0}", std::string("drive: ") + kSine);
+  yaml = test::Replaced(yaml, "elements: 10", "elements: 120");
+  yaml = test::Replaced(yaml, "  analysis: eigen\n  eigen: {about: steady_state, modes: 4}\n", "  static_first: true\n");
+  const std::string file = testing::TempDir() + "static_start_long_blade.yaml";
+  std::ofstream(file) << yaml;
+  const Model model =
+      BuildModel(LoadModelSpec(std::string(FLEXMBD_SOURCE_DIR) + "/test/data/urdf/rotating_cantilever.urdf", file));
+  Simulation simulation(model);
+  try {
+    simulation.SolveStaticStart();
+    FAIL() << "a static start of 2,173 unknowns with a moving drive was solved densely";
+  } catch (const SolverError& error) {
+    EXPECT_NE(std::string(error.what()).find("up to 2000 kinematic unknowns; this model has 2173. Expected a drive at "
+                                             "rest at the start (a cosine_ramp), or solver.static_first: false"),
+              std::string::npos)
+        << error.what();
+  }
+}
+
 // test/data/yaml/slider_crank.yaml's loop (a spherical crank pin, a universal wrist pin closing it) with its crank
 // on a sine of 1 rad at 1 Hz and gravity: one degree of freedom, which the drive takes, so the equilibrium is the
 // loader's assembly, and the static start's rates (K4) are those the loader gives the same drive rate (K3), the

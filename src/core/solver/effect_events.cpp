@@ -3,6 +3,7 @@
 #include <sstream>
 
 #include "flexmbd/model/model.hpp"
+#include "flexmbd/solver/step_context_builder.hpp"
 
 namespace flexmbd {
 namespace {
@@ -43,9 +44,11 @@ std::vector<std::pair<double, double>> Intervals(const std::vector<EffectEvent>&
 // left out of it (docs/theory.md, "Friction").
 std::vector<std::string> DescribeStaticEffects(const Model& model, const State& state) {
   std::vector<std::string> lines;
+  StepContextBuilder builder(model);
+  const StepContext& at_equilibrium = builder.AtState(state);
   for (size_t k = 0; k < model.stops().size(); ++k) {
     const JointStop& stop = *model.stop_effects()[k];
-    const StopSample sample = stop.Sample(state);
+    const StopSample sample = stop.Sample(state, at_equilibrium);
     std::ostringstream line;
     line << "stop " << model.stops()[k].joint << ' ' << model.stops()[k].stop << ": ";
     if (sample.in_contact) line << "closed in the static equilibrium, contact force " << sample.force << " N";

@@ -4,8 +4,11 @@
 
 #include <Eigen/QR>
 
+#include <string>
+
 #include "constraint_null_space.hpp"
 #include "drive_rows.hpp"
+#include "flexmbd/common/error.hpp"
 #include "flexmbd/model/model.hpp"
 #include "flexmbd/solver/eigen_analysis.hpp"
 
@@ -14,6 +17,8 @@ namespace {
 // Rest rows that the constraints leave independent of each other down to this fraction of the largest singular
 // value count; below it a direction is taken as one they do not reach, and left at rest (minimum norm).
 constexpr double kRankTolerance = 1.0e-10;
+// Largest n solved (dense, O(n^3)): about half a minute on two cores (theory (K4): 21 s at n = 1813).
+constexpr int kDenseStartLimit = 2000;
 
 // The conditions of rest over u = (v in W, w in the node frame, per node; qdot): an undriven variable's rate, a
 // spherical joint's relative angular velocity (in W), and each beam node's departure from the rigid motion of its
@@ -63,6 +68,12 @@ void SetStaticStartRates(const Model& model, State* state) {
   const Eigen::VectorXd row_rates = DriveLawDerivatives(model, *state, 1);
   if (row_rates.isZero(0.0)) return;
   const int nq = model.element_state_unknown(0), nv = model.num_variables();
+  if (nq > kDenseStartLimit) {
+    throw SolverError("static start: a drive moves at the start, and the rates that follow it are solved densely, "
+                      "up to " + std::to_string(kDenseStartLimit) + " kinematic unknowns; this model has " +
+                      std::to_string(nq) + ". Expected a drive at rest at the start (a cosine_ramp), or "
+                      "solver.static_first: false");
+  }
   // The constraint rows' Jacobian over the unknowns' own rates (v in W): B of the linearisation, whose node
   // translations are in the node frame (theory (E3)), turned back.
   const LinearisedSystem linearised = Linearise(model, *state, ReferenceMotion::kZeroAcceleration);
