@@ -53,6 +53,17 @@ std::unique_ptr<TimeIntegrator> MakeTimeIntegrator(const Model& model, SparseSys
 /// default).
 double JointErrorFloor(const SolverSpec& solver);
 
+/// What the local error test (T12) accepts in a joint variable over a step of size h [rad or m]: its floor plus
+/// error_tol times the step's travel at the run's peak joint rate.
+double JointErrorScale(const SolverSpec& solver, double h, double peak_joint_rate);
+
+/// The derivative of a motion from the mean rates of two consecutive steps of sizes h_newer and h_older (the rates
+/// at the step midpoints): their divided difference over the span between the midpoints.
+template <typename Rate>
+Rate MeanRateDerivative(const Rate& newer, const Rate& older, double h_newer, double h_older) {
+  return (newer - older) / (0.5 * (h_newer + h_older));
+}
+
 /// The third derivative of a motion from the mean rates of three consecutive steps of sizes h, newest first (the rates
 /// at the step midpoints to O(h^2)): their second divided difference over the three midpoints (docs/theory.md, (T12)).
 template <typename Rate>

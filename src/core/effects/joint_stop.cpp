@@ -6,8 +6,6 @@
 #include <limits>
 
 #include "flexmbd/effects/friction_effect.hpp"
-#include "flexmbd/solver/time_integrator.hpp"
-
 #include "flexmbd/solver/step_controller.hpp"
 #include "flexmbd/solver/time_integrator.hpp"
 
@@ -147,7 +145,7 @@ double RigidStop::Acceleration(const State& state) const {
   const int v = variable();
   const auto& rates = state.mean_qdot;
   if (state.recent_h[1] > 0 && rates[1].size() > v) {
-    return (rates[0][v] - rates[1][v]) / (0.5 * (state.recent_h[0] + state.recent_h[1]));
+    return MeanRateDerivative(rates[0][v], rates[1][v], state.recent_h[0], state.recent_h[1]);
   }
   return state.qddot_prev.size() > v ? state.qddot_prev[v] : 0.0;
 }
@@ -162,7 +160,7 @@ double RigidStop::CrossingTime(const StepContext& ctx) const {
 bool RigidStop::Centred(const StepContext& ctx) const {
   // A contact step of h instead of twice the crossing time shifts the motion after it by their difference: at the
   // start rate, a shift in the joint that the local error test (T12) must accept.
-  const double allowance = JointErrorFloor(solver_) + solver_.error_tol * ctx.h * ctx.start->peak_joint_rate;
+  const double allowance = JointErrorScale(solver_, ctx.h, ctx.start->peak_joint_rate);
   const double shift = std::abs((*ctx.variables)[variable()].qdot_i) * std::abs(ctx.h - 2 * CrossingTime(ctx));
   return shift <= allowance;
 }
@@ -346,7 +344,7 @@ ElasticStop::Onset ElasticStop::ContactOnset(const StepContext& ctx) const {
   const double near = start.mean_qdot[step][variable()], far = start.mean_qdot[step + 1][variable()];
   const double h_near = start.recent_h[step];
   onset.step = step;
-  onset.acceleration = (near - far) / (0.5 * (h_near + start.recent_h[step + 1]));
+  onset.acceleration = MeanRateDerivative(near, far, h_near, start.recent_h[step + 1]);
   onset.rate = near + 0.5 * h_near * onset.acceleration;
   return onset;
 }
@@ -390,7 +388,7 @@ double ElasticStop::OnsetError(const StepContext& ctx, const Onset& onset) const
     rates[2] = onset.rate - 0.5 * h_closing * onset.acceleration;
   }
   const double error = ctx.h * ctx.h * ctx.h * std::abs(MeanRateThirdDerivative(rates[0], rates[1], rates[2], h)) / 12;
-  return error / (JointErrorFloor(solver_) + solver_.error_tol * ctx.h * start.peak_joint_rate);
+  return error / JointErrorScale(solver_, ctx.h, start.peak_joint_rate);
 }
 
 StepLimit ElasticStop::Limit(const StepContext& ctx, const State& end) const {

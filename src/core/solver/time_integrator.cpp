@@ -80,6 +80,10 @@ double JointErrorFloor(const SolverSpec& solver) {
   return FloorOrDefault(solver.error_floor.joint, solver.error_tol, 1.0);
 }
 
+double JointErrorScale(const SolverSpec& solver, double h, double peak_joint_rate) {
+  return JointErrorFloor(solver) + solver.error_tol * h * peak_joint_rate;
+}
+
 double StepAfterJump(const SolverSpec& solver, double acceleration_jump, double peak_joint_rate) {
   const double jump = std::abs(acceleration_jump);
   if (!solver.adaptive || jump == 0) return std::numeric_limits<double>::infinity();
@@ -126,7 +130,7 @@ ErrorEstimate EstimateLocalError(const Model& model, const State& end) {
   const double position_scale = FloorOrDefault(solver.error_floor.position, rtol, model.length_scale()) +
                                 rtol * h[0] * end.peak_speed;
   const double rotation_scale = FloorOrDefault(solver.error_floor.rotation, rtol, 1.0) + rtol * h[0] * end.peak_spin;
-  const double joint_scale = JointErrorFloor(solver) + rtol * h[0] * end.peak_joint_rate;
+  const double joint_scale = JointErrorScale(solver, h[0], end.peak_joint_rate);
   double sum = 0, worst = -1;
   int count = 0;
   auto add = [&](double local_error, double scale, int unknown) {
