@@ -121,9 +121,16 @@ void PrintSummary(const flexmbd::Simulation& simulation, const flexmbd::OutputSa
   } else {
     std::printf("flexmbd_run: %s\n", simulation.statistics().Summary(simulation.model()).c_str());
   }
-  std::printf("flexmbd_run: energy kinetic %.6g J, potential %.6g J, external work %.6g J, dissipated %.6g J, "
-              "numerical dissipation %.6g J\n",
-              last.kinetic, last.potential, last.external_work, last.dissipated, last.numerical_dissipation);
+  if (IsStatic(simulation.model())) {
+    // The work books (external work, dissipation) belong to a motion; "external work 0 J" beside the strain
+    // energy its loads put in read as a fault.
+    std::printf("flexmbd_run: energy at the equilibrium: potential %.6g J (no work books in a static analysis)\n",
+                last.potential);
+  } else {
+    std::printf("flexmbd_run: energy kinetic %.6g J, potential %.6g J, external work %.6g J, dissipated %.6g J, "
+                "numerical dissipation %.6g J\n",
+                last.kinetic, last.potential, last.external_work, last.dissipated, last.numerical_dissipation);
+  }
   for (const std::string& line :
        flexmbd::DescribeEffectIntervals(simulation.model(), simulation.effect_events(), simulation.state())) {
     std::printf("flexmbd_run: %s\n", line.c_str());

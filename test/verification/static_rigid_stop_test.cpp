@@ -49,6 +49,10 @@ TEST(StaticRigidStop, RunnerSummarySaysNewtonIterationsAndLoadIncrementsNotTimeS
   EXPECT_NE(output.find("flexmbd_run: static analysis: "), std::string::npos) << output;
   EXPECT_NE(output.find(" Newton iterations in 10 load increments\n"), std::string::npos) << output;
   EXPECT_EQ(output.find("step size"), std::string::npos) << output;
+  // Nor work books: "external work 0 J" stood beside the strain energy the loads put in. The block resting on its
+  // stop 0.5 m down a 30 deg incline from its joint 1 m up has the potential m g (1 - 0.5 sin 30) = 14.715 J.
+  EXPECT_EQ(output.find("external work"), std::string::npos) << output;
+  EXPECT_NE(output.find("flexmbd_run: energy at the equilibrium: potential 14.715 J"), std::string::npos) << output;
 }
 
 TEST(StaticRigidStop, RunnerSaysTheStopIsClosedWithItsForceNotContactIntervals) {
