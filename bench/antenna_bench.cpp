@@ -57,16 +57,19 @@ BENCHMARK(FlexibleAntennaRun)->Unit(benchmark::kMillisecond)->Iterations(1);
 
 // The flexible antenna (bench/antenna_flexible/, panels of cubic beams): the cost of one Newton iteration beside
 // one KLU refactorisation and solve of the same matrix (target: at most 0.1 ms and 3x).
-void FlexibleAntennaIteration(benchmark::State& state) { bench::TimeIteration(state, FlexibleAntenna()); }
-BENCHMARK(FlexibleAntennaIteration)->Unit(benchmark::kMicrosecond);
+void FlexibleAntennaIteration(benchmark::State& state) {
+  bench::TimeIteration(state, FlexibleAntenna(), static_cast<int>(state.range(0)));
+}
+BENCHMARK(FlexibleAntennaIteration)->ArgName("threads")->Arg(1)->Arg(2)->Unit(benchmark::kMicrosecond)->UseRealTime();
 
 // The published antenna's case 1 (config/antenna_published/case1.yaml: beams, friction): a fresh tangent and its
 // factorisation, the cost every step of that case pays once, beside one KLU refactorisation and solve.
 void PublishedAntennaIteration(benchmark::State& state) {
   const std::string dir = std::string(FLEXMBD_BENCH_SOURCE_DIR) + "/config/antenna_published/";
-  bench::TimeIteration(state, LoadModelSpec(dir + "antenna_published.urdf", dir + "case1.yaml"));
+  bench::TimeIteration(state, LoadModelSpec(dir + "antenna_published.urdf", dir + "case1.yaml"),
+                       static_cast<int>(state.range(0)));
 }
-BENCHMARK(PublishedAntennaIteration)->Unit(benchmark::kMicrosecond);
+BENCHMARK(PublishedAntennaIteration)->ArgName("threads")->Arg(1)->Arg(2)->Unit(benchmark::kMicrosecond)->UseRealTime();
 
 }  // namespace
 }  // namespace flexmbd

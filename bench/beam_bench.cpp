@@ -43,9 +43,13 @@ void BM_CantileverStep(benchmark::State& state) {
 BENCHMARK(BM_CantileverStep)->Arg(10)->Arg(100)->Arg(1000)->Unit(benchmark::kMillisecond)->Iterations(5);
 
 void BM_CantileverIteration(benchmark::State& state) {
-  flexmbd::bench::TimeIteration(state, Cantilever(static_cast<int>(state.range(0))));
+  flexmbd::bench::TimeIteration(state, Cantilever(static_cast<int>(state.range(0))), static_cast<int>(state.range(1)));
 }
-BENCHMARK(BM_CantileverIteration)->Arg(10)->Arg(100)->Arg(1000)->Arg(10000)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_CantileverIteration)
+    ->ArgNames({"elements", "threads"})
+    ->ArgsProduct({{1, 2, 4, 8, 10, 16, 100, 1000, 10000}, {1, 2}})
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
 
 // One cubic element of a cantilever bent by a tip load, evaluated alone in a dynamic step (increments of a
 // swinging motion): the element's own cost, residual alone and with its tangent.

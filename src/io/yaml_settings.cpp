@@ -9,12 +9,14 @@ namespace {
 const std::vector<std::string> kSolverKeys = {"analysis",       "integrator", "rho_inf",      "t_end",  "dt",
                                               "dt_min",         "dt_max",     "adaptive",     "tol",    "error_tol",
                                               "error_floor",    "max_iterations", "load_steps", "static_first", "gravity",
-                                              "eigen"};
+                                              "eigen",          "threads"};
 // Counts beyond these are typing errors that would run for hours (a fuzzed load_steps of 2e9): each load step is a
 // whole Newton solve, and 10,000 already follow a load path in steps of 1e-4 of the load; a Newton solve that
 // refreshes its tangent whenever it stops contracting fast converges in tens of iterations or not at all.
 constexpr int kMaxLoadSteps = 10000;
 constexpr int kMaxNewtonIterations = 1000;
+// More threads than this is a typing error: each is started and kept for the run.
+constexpr int kMaxThreads = 256;
 const std::vector<std::string> kEigenKeys = {"modes", "static_first", "method", "shift_hz", "about", "sweep",
                                              "at_times"};
 const std::vector<std::string> kSweepKeys = {"velocity_scale", "airspeed"};
@@ -184,6 +186,8 @@ void ReadSolver(const Field& solver, SolverSpec* spec) {
                kMaxNewtonIterations, "Newton iterations per step", &spec->max_iterations);
   OverlayCount(solver, "load_steps", Quantity{"a number of load steps", Bound::kAtLeastOne, ""}, kMaxLoadSteps,
                "load steps", &spec->load_steps);
+  OverlayCount(solver, "threads", Quantity{"a thread count", Bound::kAtLeastOne, ""}, kMaxThreads, "threads",
+               &spec->threads);
   OverlayBool(solver, "static_first", &spec->static_first);
   OverlayVec3(solver, "gravity", Quantity{"a gravity acceleration", Bound::kAny, "m/s^2"}, &spec->gravity);
   if (solver.Child("eigen").present()) ReadEigen(solver.Child("eigen"), &spec->eigen);

@@ -233,6 +233,14 @@ TEST(ConfigErrors, CountsThatWouldRunForHoursAreRejected) {
   EXPECT_NO_THROW(Pendulum("solver: {load_steps: 10000, max_iterations: 1000}"));
 }
 
+TEST(ConfigErrors, ThreadCountIsAtLeastOneAndAtMost256) {
+  EXPECT_CONFIG_ERROR(Pendulum("solver: {threads: 0}"),
+                      "pendulum.yaml: solver.threads: 0 is less than 1; expected a thread count >= 1");
+  EXPECT_CONFIG_ERROR(Pendulum("solver: {threads: 257}"),
+                      "pendulum.yaml: solver.threads: 257 is above 256; expected at most 256 threads");
+  EXPECT_NO_THROW(Pendulum("solver: {threads: 256}"));
+}
+
 TEST(ConfigErrors, RhoInfOutsideUnitIntervalIsRejected) {
   EXPECT_CONFIG_ERROR(Pendulum("solver: {rho_inf: 1.5}"), "pendulum.yaml: solver.rho_inf: 1.5 is outside [0, 1]");
 }

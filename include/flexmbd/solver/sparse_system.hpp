@@ -2,7 +2,9 @@
 /// @file
 /// The iteration matrix in compressed-column form with a pattern fixed at construction, a map from each
 /// element's local entries to their positions (assembly does not allocate), and its KLU factorisation:
-/// one symbolic analysis, then a numeric refactorisation per Newton iteration.
+/// one symbolic analysis, then a numeric refactorisation per Newton iteration. The elements are evaluated on
+/// solver.threads threads where that pays, with the results of one thread bit for bit (docs/theory.md, "Assembly
+/// on several threads").
 
 #include <limits>
 #include <memory>
@@ -15,6 +17,8 @@
 namespace flexmbd {
 
 class Model;
+class ParallelAssembly;
+struct ElementBlocks;
 
 class SparseSystem {
  public:
@@ -37,6 +41,9 @@ class SparseSystem {
   bool Solve(Eigen::VectorXd* dx, bool refactorise = true);
 
   int num_nonzeros() const { return static_cast<int>(values_.size()); }
+  /// Threads that evaluated the elements in the last assembly: 1, or solver.threads once assemblies of that kind
+  /// take long enough to pay for the hand-over.
+  int assembly_threads() const { return assembly_threads_; }
 
   /// What the current factorisation was made for (a dynamic step size), so a caller can reuse it for the
   /// next solve of the same kind; NaN when it should not be reused. Set by the factorisation's user.
@@ -52,9 +59,13 @@ class SparseSystem {
 
  private:
   bool Factorise();
+  /// Adds one element's evaluated blocks to the residual, magnitudes and (with_tangent) the matrix values.
+  void AddElement(int e, const ElementBlocks& blocks, bool with_tangent);
 
   const Model& model_;
   int n_;
+  int threads_;  ///< solver.threads, 0 resolved to the cores available
+  int assembly_threads_ = 1;
   std::vector<int> column_start_, row_index_;
   std::vector<double> values_;
   /// The rows scaled by their largest entry, as KLU's default scaling would (Factorise); KLU itself is told not to
@@ -68,6 +79,7 @@ class SparseSystem {
   Eigen::MatrixXd local_J_;
   struct KluFactorisation;
   std::unique_ptr<KluFactorisation> klu_;
+  std::unique_ptr<ParallelAssembly> parallel_;  ///< null with one thread
   Timing timing_;
   double factorisation_key_ = std::numeric_limits<double>::quiet_NaN();
 };

@@ -4,12 +4,14 @@
 #include <chrono>
 #include <cmath>
 #include <set>
+#include <thread>
 #include <utility>
 
 #include <klu.h>
 
 #include "flexmbd/common/error.hpp"
 #include "flexmbd/model/model.hpp"
+#include "parallel_assembly.hpp"
 
 namespace flexmbd {
 
@@ -28,12 +30,18 @@ namespace {
 // pivots near 1/stiffness, so even freshly pivoted factors of well-posed models show 1e-10 to 1e-23.)
 constexpr double kRefactorGrowthRatio = 1.0e-2;
 
+// solver.threads: 0 asks for the cores available.
+int ThreadsFor(const SolverSpec& solver) {
+  return solver.threads > 0 ? solver.threads : std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
+}
+
 double SecondsSince(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 }  // namespace
 
-SparseSystem::SparseSystem(const Model& model) : model_(model), n_(model.num_unknowns()) {
+SparseSystem::SparseSystem(const Model& model)
+    : model_(model), n_(model.num_unknowns()), threads_(ThreadsFor(model.solver())) {
   std::vector<std::set<int>> rows_of_column(n_);
   int max_local = 0;
   for (const auto& element : model.elements()) {
@@ -72,6 +80,9 @@ SparseSystem::SparseSystem(const Model& model) : model_(model), n_(model.num_unk
   klu_ = std::make_unique<KluFactorisation>();
   klu_defaults(&klu_->common);
   klu_->common.scale = -1;  // the values come scaled (scaled_values_): no scaling, no checks of the pattern
+  if (threads_ > 1 && model.elements().size() > 1) {
+    parallel_ = std::make_unique<ParallelAssembly>(model.elements(), threads_);
+  }
 }
 
 SparseSystem::~SparseSystem() {
@@ -84,31 +95,22 @@ void SparseSystem::Assemble(const StepContext& ctx, bool with_tangent) {
   residual_.setZero();
   magnitude_.setZero();
   if (with_tangent) std::fill(values_.begin(), values_.end(), 0.0);
-  const auto& elements = model_.elements();
-  for (size_t e = 0; e < elements.size(); ++e) {
-    const Element& element = *elements[e];
-    const int m = element.num_local();
-    auto r = local_r_.head(m);
-    auto mag = local_m_.head(m);
-    r.setZero();
-    mag.setZero();
-    Eigen::Ref<Eigen::MatrixXd> J = local_J_.topLeftCorner(m, m);
-    if (with_tangent) J.setZero();
-    element.AddResidualAndTangent(ctx, r, mag, with_tangent ? &J : nullptr);
-    if (with_tangent) AddSchemeRateTerms(element, ctx, J);
-    const std::vector<int>& u = element.unknowns();
-    for (int i = 0; i < m; ++i) {
-      residual_[u[i]] += r[i];
-      magnitude_[u[i]] += mag[i];
-    }
-    if (!with_tangent) continue;
-    // Column by column, as the local block is stored.
-    const int* position = scatter_[e].data();
-    for (int j = 0; j < m; ++j) {
-      const double* column = J.col(j).data();
-      for (int i = 0; i < m; ++i) values_[*position++] += column[i];
+  const ElementBlocks scratch{local_r_.data(), local_m_.data(), local_J_.data(), static_cast<int>(local_J_.rows())};
+  const auto add = [&](int e, const ElementBlocks& blocks) { AddElement(e, blocks, with_tangent); };
+  const bool parallel = parallel_ && parallel_->Pays(with_tangent);
+  const bool calibrating = parallel_ && parallel_->Calibrating(with_tangent);
+  const double cpu_start = calibrating ? ThreadCpuSeconds() : 0.0;
+  if (parallel) {
+    parallel_->Evaluate(ctx, with_tangent, scratch, add);
+  } else {
+    const auto& elements = model_.elements();
+    for (size_t e = 0; e < elements.size(); ++e) {
+      EvaluateElement(*elements[e], ctx, with_tangent, scratch);
+      add(static_cast<int>(e), scratch);
     }
   }
+  if (calibrating) parallel_->RecordSerial(with_tangent, ThreadCpuSeconds() - cpu_start);
+  assembly_threads_ = parallel ? threads_ : 1;
   if (with_tangent) {
     row_abs_sum_.setZero();
     row_scale_.setZero();
@@ -125,6 +127,22 @@ void SparseSystem::Assemble(const StepContext& ctx, bool with_tangent) {
     }
   }
   timing_.assembly += SecondsSince(start);
+}
+
+void SparseSystem::AddElement(int e, const ElementBlocks& blocks, bool with_tangent) {
+  const std::vector<int>& u = model_.elements()[e]->unknowns();
+  const int m = static_cast<int>(u.size());
+  for (int i = 0; i < m; ++i) {
+    residual_[u[i]] += blocks.r[i];
+    magnitude_[u[i]] += blocks.magnitude[i];
+  }
+  if (!with_tangent) return;
+  // Column by column, as the local block is stored.
+  const int* position = scatter_[e].data();
+  for (int j = 0; j < m; ++j) {
+    const double* column = blocks.J + static_cast<size_t>(j) * blocks.ld;
+    for (int i = 0; i < m; ++i) values_[*position++] += column[i];
+  }
 }
 
 bool SparseSystem::Factorise() {
