@@ -126,8 +126,9 @@ TEST(DriveRateJump, ATableKinkStopsTheDriveAndBooksTheKineticEnergyItTakesBack) 
   constexpr double kExact = 1.0e-8;
   EXPECT_LT(worst_rate, kExact);
   EXPECT_LT(worst_effort, kExact * kMass * kGravity * kArm);
-  // The drive's true work: raising the arm to 0.5 rad, m g arm sin 0.5 = 2.352 J, less the kinetic energy of the
-  // initial rate, 1/2 J 1^2 = 0.135 J, which it takes back at the kink (before: booked as numerical dissipation).
+  // The drive's true work: holding the arm back as it turns 0.5 rad down, -m g arm sin 0.5 = -2.352 J, and
+  // taking back the kinetic energy of the initial rate, 1/2 J 1^2 = 0.135 J, at the kink (before: booked as
+  // numerical dissipation).
   // The scheme dissipates only the alternating mode of the arm's centre on its circle, e ~ h |v|^2 / r
   // (docs/theory.md, "Velocity projection after jumps"): 3.6e-7 J of 1.2 J on the explore pendulum before the kink.
   constexpr double kChordMode = 1.0e-5;
