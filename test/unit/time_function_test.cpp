@@ -214,5 +214,54 @@ TEST(TimeFunction, TableRatesAtKnotsAreRightDerivatives) {
   EXPECT_NEAR(EvaluateRate(f, 0.0), 2.0, kHandValue);
 }
 
+// Instants of a rate jump are found to this tolerance [s] in the tests below: far below any step.
+constexpr double kSameInstant = 1.0e-12;
+
+void ExpectJump(const std::optional<RateJump>& jump, double t, double before, double after) {
+  ASSERT_TRUE(jump.has_value()) << "no jump at t " << t;
+  EXPECT_EQ(jump->t, t);
+  EXPECT_NEAR(jump->before, before, kHandValue) << "t " << t;
+  EXPECT_NEAR(jump->after, after, kHandValue) << "t " << t;
+}
+
+TEST(TimeFunction, TableRateJumpsAtItsKinksAndItsHeldEnds) {
+  // Reference: slopes 2, -0.5, 0 between the knots 0, 1, 3, 4 and 0 outside: jumps 0 -> 2 at 0, 2 -> -0.5 at 1,
+  // -0.5 -> 0 at 3; none at 4, where the last piece is flat like the hold after it.
+  const TimeFunctionSpec f = Table();
+  ExpectJump(RateJumpNear(f, 0.0, kSameInstant), 0.0, 0.0, 2.0);
+  ExpectJump(RateJumpNear(f, 1.0 + 0.1 * kSameInstant, kSameInstant), 1.0, 2.0, -0.5);
+  ExpectJump(RateJumpNear(f, 3.0 - 0.1 * kSameInstant, kSameInstant), 3.0, -0.5, 0.0);
+  EXPECT_FALSE(RateJumpNear(f, 4.0, kSameInstant).has_value());
+  EXPECT_FALSE(RateJumpNear(f, 2.0, kSameInstant).has_value());
+  ExpectJump(NextRateJump(f, -1.0, kSameInstant), 0.0, 0.0, 2.0);
+  ExpectJump(NextRateJump(f, 0.0, kSameInstant), 1.0, 2.0, -0.5);
+  ExpectJump(NextRateJump(f, 1.0 - 0.1 * kSameInstant, kSameInstant), 3.0, -0.5, 0.0);
+  EXPECT_FALSE(NextRateJump(f, 3.0, kSameInstant).has_value());
+}
+
+TEST(TimeFunction, LinearRampAndSineRateJumpWhereTheyStartAndStop) {
+  // Reference: the linear ramp turns its rate (2.5 - 0.5) / 2 = 1 on at start = 1 and off at start + duration = 3;
+  // the sine starts at 0.5 at its rate amplitude 2 pi frequency cos(phase).
+  const TimeFunctionSpec ramp = Ramp(Kind::kLinearRamp);
+  ExpectJump(NextRateJump(ramp, 0.0, kSameInstant), 1.0, 0.0, 1.0);
+  ExpectJump(NextRateJump(ramp, 1.0, kSameInstant), 3.0, 1.0, 0.0);
+  ExpectJump(RateJumpNear(ramp, 3.0, kSameInstant), 3.0, 1.0, 0.0);
+  EXPECT_FALSE(NextRateJump(ramp, 3.0, kSameInstant).has_value());
+  const TimeFunctionSpec sine = Sine();
+  ExpectJump(NextRateJump(sine, 0.0, kSameInstant), 0.5, 0.0, 1.5 * 2.0 * M_PI * 0.75 * std::cos(0.4));
+  EXPECT_FALSE(NextRateJump(sine, 0.5, kSameInstant).has_value());
+}
+
+TEST(TimeFunction, SmoothLawsHaveNoRateJump) {
+  // Reference: the cosine ramp's rate rises from 0 and falls back to 0, the rate ramp's rises from 0 to its value
+  // and stays (both continuous): a drive on them never starts a step with a jump of its rate, and its runs are
+  // stepped as before rate jumps were handled.
+  for (Kind kind : {Kind::kCosineRamp, Kind::kRateRamp, Kind::kConstant}) {
+    const TimeFunctionSpec f = Ramp(kind);
+    EXPECT_FALSE(NextRateJump(f, -1.0, kSameInstant).has_value());
+    for (double t : {1.0, 3.0}) EXPECT_FALSE(RateJumpNear(f, t, kSameInstant).has_value()) << "t " << t;
+  }
+}
+
 }  // namespace time_function_test
 }  // namespace flexmbd

@@ -67,6 +67,45 @@ TEST(VelocityProjection, IsTheMassWeightedProjectionOntoThePivotsMotion) {
   EXPECT_NEAR((state.nodes[0].w - projected.nodes[0].w).norm(), 0.0, kTolerance);
 }
 
+// At a jump of a drive's rate (docs/theory.md, "Jumps of a drive's rate") the driven arm's velocities, which carry
+// a part the pivot does not allow, are carried from the drive's rate before to its rate after: the result is the
+// one motion at the rate after; the books split into the scheme's removal of what the pivot does not allow and the
+// drive's work, the change of the kinetic energy of the allowed motion.
+TEST(VelocityProjection, CarriesADrivenArmAcrossAJumpOfItsRateAndBooksTheDrivesWork) {
+  ModelSpec spec = Pendulum();
+  spec.joints[0].effects[0].drives.push_back(TimeFunctionSpec());  // held at 0: the rates below replace it
+  const Model model = BuildModel(spec);
+  SparseSystem system(model);
+  VelocityProjection projection(model, &system);
+  State state = model.initial_state();
+  constexpr double kBefore = 1.0, kAfter = -2.5;  // [rad/s]
+  const Vec3 d_v = Vec3::UnitY().cross(state.nodes[0].x), d_w = state.nodes[0].R.transpose() * Vec3::UnitY();
+  // The motion at the rate before, plus what the pivot does not allow (along the arm, across the plane; spins
+  // about x and z) and some more of the allowed motion, which the drive does not allow either.
+  const Vec3 junk_v = Vec3(0.3, 0.0, 1.1) + 0.2 * d_v, junk_w = Vec3(0.4, 0.0, -0.7) + 0.2 * d_w;
+  state.nodes[0].v = kBefore * d_v + junk_v;
+  state.nodes[0].w = kBefore * d_w + junk_w;
+  const double kinetic_before = Kinetic(model, state, state.nodes[0].v, state.nodes[0].w);
+  const Eigen::VectorXd before = Eigen::VectorXd::Constant(1, kBefore), after = Eigen::VectorXd::Constant(1, kAfter);
+  ASSERT_TRUE(projection.ApplyAtDriveJump(&state, before, after, 0.01));
+  // Limiting steps of 1e-6 and 2e-6 s, Newton at 1e-12: as in the projection above.
+  constexpr double kTolerance = 1.0e-9;
+  EXPECT_NEAR((state.nodes[0].v - kAfter * d_v).norm(), 0.0, kTolerance);
+  EXPECT_NEAR((state.nodes[0].w - kAfter * d_w).norm(), 0.0, kTolerance);
+  EXPECT_NEAR(state.qdot[0], kAfter, kTolerance);
+  // Closed forms: the scheme removes the kinetic energy of the junk; the drive then takes the arm from the rate
+  // before to the rate after, (kAfter^2 - kBefore^2) K(d).
+  const double junk = Kinetic(model, state, junk_v, junk_w), unit = Kinetic(model, state, d_v, d_w);
+  ASSERT_GT(junk, 0.1);
+  EXPECT_NEAR(state.dissipated_numerical, junk, kTolerance);
+  // The books close: what the kinetic energy gained is the external work less the numerical dissipation; of the
+  // external work, the jump's share is the drive's (the rest is its impulse on the junk, at the rate before).
+  EXPECT_NEAR(state.external_work - state.dissipated_numerical, kAfter * kAfter * unit - kinetic_before, kTolerance);
+  const double on_the_junk = kBefore * kBefore * unit + junk - Kinetic(model, state, kBefore * d_v + junk_v,
+                                                                        kBefore * d_w + junk_w);
+  EXPECT_NEAR(state.external_work - on_the_junk, (kAfter * kAfter - kBefore * kBefore) * unit, kTolerance);
+}
+
 // A contact brought to rest (docs/theory.md, (C2a')): the arm swings into a rigid stop at its current angle. Held,
 // the stop's constraint forbids the arm's one motion, so the projection stops it and books all its kinetic energy;
 // released, the stop allows the motion and the projection keeps it.

@@ -56,7 +56,7 @@ class VariableDrive : public Element {
   int variable() const { return variable_; }
 
  private:
-  /// q_f the drive enforces: f(t_f), or the lagged set-point.
+  /// q_f the drive enforces: f(t_f), the lagged set-point, or q_i + h times the rate the context gives.
   double Target(const StepContext& ctx) const;
 
   int variable_, multiplier_;

@@ -107,6 +107,9 @@ struct StepContext {
   const std::vector<double>* element_alpha = nullptr;
   /// The elements' workspaces for their caches (null: elements compute everything afresh).
   ElementWorkspaces* workspaces = nullptr;
+  /// Per joint variable, the rate a drive follows from the step's start instead of its law or set-point, q_f = q_i + h
+  /// rate (null: its law or set-point): the short steps of a velocity projection at a jump of a drive's rate.
+  const Eigen::VectorXd* drive_rates = nullptr;
   /// True when forces are evaluated at the end configuration (start moved to the end, theta = 0).
   bool at_end() const { return mode != AnalysisMode::kDynamic; }
   /// d(mid-step value)/d(increment): 1/2 with mid-step forces, 1 at the end configuration.

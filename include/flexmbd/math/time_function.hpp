@@ -2,6 +2,8 @@
 /// @file
 /// Scalar time functions for drives and loads (docs/config.md, "time functions").
 
+#include <optional>
+
 #include "flexmbd/model/model_spec.hpp"
 
 namespace flexmbd {
@@ -17,5 +19,19 @@ double EvaluateRate(const TimeFunctionSpec& f, double t);
 
 /// Second derivative d2f/dt2 (zero on linear pieces).
 double EvaluateSecondRate(const TimeFunctionSpec& f, double t);
+
+/// An instant at which the rate df/dt jumps, with the rates just before and just after it.
+struct RateJump {
+  double t = 0.0;       ///< [s]
+  double before = 0.0;  ///< df/dt just before t
+  double after = 0.0;   ///< df/dt just after t
+};
+
+/// The jump of df/dt within `tolerance` [s] of t, if f has one there: the kinks of linear ramps and tables (a table's
+/// ends too, where it is held), a sine's start at a nonzero rate. Cosine and rate ramps have none.
+std::optional<RateJump> RateJumpNear(const TimeFunctionSpec& f, double t, double tolerance);
+
+/// The first jump of df/dt later than t + tolerance, if there is one.
+std::optional<RateJump> NextRateJump(const TimeFunctionSpec& f, double t, double tolerance);
 
 }  // namespace flexmbd

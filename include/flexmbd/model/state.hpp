@@ -78,6 +78,11 @@ struct State {
   Eigen::VectorXd element_state_rates_alg;  ///< generalized-alpha algorithmic rates of the element states
   std::vector<EffectState> effects; ///< per effect with modes (Model::modal_effects())
   std::vector<VariableCommand> commands;  ///< per joint variable (num_variables)
+  /// Per joint variable, the rate its drive imposed at the end of the last accepted step (at the start of a run, its
+  /// law's rate there, which the initial rates follow); a step that starts where the drive imposes another rate (a
+  /// kink of its law, a new set-point) starts with a jump of that rate (docs/theory.md, "Jumps of a drive's rate")
+  /// [rad/s or m/s]. Zero on variables without a drive.
+  Eigen::VectorXd drive_rates;
   /// Per element (Model::elements()), what it keeps of past steps (Element::history_size(); mostly empty).
   std::vector<Eigen::VectorXd> element_history;
   int history_steps = 0;            ///< accepted steps since the start or the last jump in the motion (T12)

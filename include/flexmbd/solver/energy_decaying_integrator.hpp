@@ -55,9 +55,10 @@ class EnergyDecayingIntegrator : public TimeIntegrator {
   Eigen::VectorXd Predict(const State& start, double h) const;
   // The step from `start` (Step's work, from the start StartOf chose).
   StepResult SolveStep(const State& start, double h, State* end);
-  // The state a step starts from: `given`, or, once a step from it much shorter than the one before was redone for
-  // a friction event, `given` with its velocities projected onto the constraints (kept in projected_start_).
-  const State& StartOf(const State& given);
+  // The state a step of size h starts from: `given`; where a drive's rate jumps at `given`, `given` with its
+  // velocities carried across the jump; or, once a step from it much shorter than the one before was redone for a
+  // friction event, `given` with its velocities projected onto the constraints (both kept in projected_start_).
+  const State& StartOf(const State& given, double h);
   // Asks every effect with modes whether the converged step contradicts its trial mode; true if any did.
   bool ReviseModes();
   // The effects' step-size requests and their state at the end of the accepted step; true when a friction asked to
@@ -82,7 +83,7 @@ class EnergyDecayingIntegrator : public TimeIntegrator {
   bool end_rate_event_ = false;  ///< the last step solved was redone for a friction event (CommitEffects)
   /// Time of the start from which a step much shorter than the one before was redone for a friction event (StartOf).
   double short_event_start_ = std::numeric_limits<double>::quiet_NaN();
-  State projected_start_;  ///< that start with its velocities projected, for the steps redone from it
+  State projected_start_;  ///< a start with its velocities projected (StartOf)
   TangentReuse tangent_reuse_;     ///< whether a step starts from the previous one's factorisation, learnt
   DissipationJudging judging_;      ///< when a step judges its dissipation terms, learnt from the steps taken
   std::vector<double> elements_all_on_;  ///< by Element::index(): alpha_inf for elements with a stretch of their own

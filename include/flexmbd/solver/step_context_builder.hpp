@@ -58,6 +58,10 @@ class StepContextBuilder {
   /// Whether the contexts built next ask for the geometric stiffness of constraint forces.
   void set_geometric_stiffness(bool on) { ctx_.geometric_stiffness = on; }
 
+  /// The rates the drives follow in the contexts built next, instead of their laws or set-points (null: those).
+  /// @pre the vector outlives the contexts built from it.
+  void set_drive_rates(const Eigen::VectorXd* rates) { ctx_.drive_rates = rates; }
+
  private:
   void Fill(const State& start, const Eigen::VectorXd& unknowns, AnalysisMode mode);
 

@@ -8,7 +8,9 @@
 /// follow), so an event could never be located by shortening the step. The consistent velocities are the mean
 /// velocities (v_i + v_f)/2 of the scheme's own step in the limit h -> 0: that step has no forces but the
 /// constraint impulses, and its mean is the mass-weighted projection of the start velocities onto the active
-/// constraints. The limit is extrapolated from two short steps.
+/// constraints. The limit is extrapolated from two short steps. At a jump of a drive's rate the projection onto the
+/// drives' new rates carries the motion across the jump, and what that changes of the kinetic energy is the drives'
+/// work (docs/theory.md, "Jumps of a drive's rate").
 
 #include <vector>
 
@@ -31,6 +33,13 @@ class VelocityProjection {
   /// not converge.
   bool Apply(State* state, const std::vector<bool>& held);
 
+  /// Carries the velocities of `state` across a jump of the drives' rates from `before` to `after` (per joint
+  /// variable, DriveRates), effects released: first projects them onto the constraints with the drives at `before`,
+  /// booked as Apply books it, then onto those with the drives at `after`, whose change of the kinetic energy is
+  /// the drives' work, booked as external work. `h` is the step that follows, which scales the limiting steps.
+  /// False (state unchanged) if a limiting step did not converge.
+  bool ApplyAtDriveJump(State* state, const Eigen::VectorXd& before, const Eigen::VectorXd& after, double h);
+
  private:
   // Mean velocities of one short step from `state` and the work done over it.
   struct MeanMotion {
@@ -39,6 +48,13 @@ class VelocityProjection {
     std::vector<double> effect_dissipation;  ///< by effect slot: each one's share of work.dissipated
   };
   bool SolveLimitingStep(const State& state, double h, MeanMotion* mean);
+  // What a projection's removal of kinetic energy is booked as: the scheme's (numerical dissipation), or the drives'
+  // work (external) when the projection only carries consistent velocities across a jump of the drives' rates.
+  enum class Removed { kNumerical, kDrivesWork };
+  // The projection of the velocities of `state` with limiting steps of h and 2 h; the drives follow `drive_rates`
+  // (null: their laws or set-points).
+  bool Project(State* state, const std::vector<bool>& held, double h, const Eigen::VectorXd* drive_rates,
+               Removed removed);
 
   const Model& model_;
   SparseSystem* system_;

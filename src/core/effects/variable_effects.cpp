@@ -81,6 +81,7 @@ void VariableDrive::AddResidual(const StepContext& ctx, Eigen::Ref<Eigen::Vector
 }
 
 double VariableDrive::Target(const StepContext& ctx) const {
+  if (ctx.drive_rates != nullptr) return ctx.start->q[variable_] + ctx.h * (*ctx.drive_rates)[variable_];
   const VariableCommand& command = ctx.start->commands[variable_];
   if (!command.has_setpoint) return Evaluate(law_, ctx.t_f);
   if (ctx.mode == AnalysisMode::kStatic) return command.setpoint;

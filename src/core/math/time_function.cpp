@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <vector>
 
 #include "flexmbd/common/error.hpp"
 
@@ -54,10 +55,62 @@ double Derivative(const TimeFunctionSpec& f, double t, int order) {
   }
   return 0.0;
 }
+
+// The rate jump at a table's abscissa j (the table is held outside its span), if the slopes either side differ.
+std::optional<RateJump> TableKink(const TimeFunctionSpec& f, size_t j) {
+  auto slope = [&f](size_t k) { return (f.values[k + 1] - f.values[k]) / (f.times[k + 1] - f.times[k]); };
+  const double before = j == 0 ? 0.0 : slope(j - 1);
+  const double after = j + 1 == f.times.size() ? 0.0 : slope(j);
+  if (before == after) return std::nullopt;
+  return RateJump{f.times[j], before, after};
+}
+
+// The rate jumps of the kinds with at most two, in time order (tables are searched instead).
+std::vector<RateJump> FewRateJumps(const TimeFunctionSpec& f) {
+  using Kind = TimeFunctionSpec::Kind;
+  std::vector<RateJump> jumps;
+  if (f.kind == Kind::kLinearRamp && f.value != f.offset) {
+    const double rate = (f.value - f.offset) / f.duration;
+    jumps.push_back({f.start, 0.0, rate});
+    jumps.push_back({f.start + f.duration, rate, 0.0});
+  } else if (f.kind == Kind::kSine) {
+    const double rate = Derivative(f, f.start, 1);
+    if (rate != 0.0) jumps.push_back({f.start, 0.0, rate});
+  }
+  return jumps;
+}
 }  // namespace
 
 double Evaluate(const TimeFunctionSpec& f, double t) { return Derivative(f, t, 0); }
 double EvaluateRate(const TimeFunctionSpec& f, double t) { return Derivative(f, t, 1); }
 double EvaluateSecondRate(const TimeFunctionSpec& f, double t) { return Derivative(f, t, 2); }
+
+std::optional<RateJump> RateJumpNear(const TimeFunctionSpec& f, double t, double tolerance) {
+  if (f.kind == TimeFunctionSpec::Kind::kTable) {
+    FLEXMBD_DEMAND(!f.times.empty() && f.times.size() == f.values.size());
+    const auto near = std::lower_bound(f.times.begin(), f.times.end(), t - tolerance);
+    if (near == f.times.end() || *near > t + tolerance) return std::nullopt;
+    return TableKink(f, static_cast<size_t>(near - f.times.begin()));
+  }
+  for (const RateJump& jump : FewRateJumps(f)) {
+    if (std::abs(jump.t - t) <= tolerance) return jump;
+  }
+  return std::nullopt;
+}
+
+std::optional<RateJump> NextRateJump(const TimeFunctionSpec& f, double t, double tolerance) {
+  if (f.kind == TimeFunctionSpec::Kind::kTable) {
+    FLEXMBD_DEMAND(!f.times.empty() && f.times.size() == f.values.size());
+    for (auto later = std::upper_bound(f.times.begin(), f.times.end(), t + tolerance); later != f.times.end();
+         ++later) {
+      if (std::optional<RateJump> kink = TableKink(f, static_cast<size_t>(later - f.times.begin()))) return kink;
+    }
+    return std::nullopt;
+  }
+  for (const RateJump& jump : FewRateJumps(f)) {
+    if (jump.t > t + tolerance) return jump;
+  }
+  return std::nullopt;
+}
 
 }  // namespace flexmbd

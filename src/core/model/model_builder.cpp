@@ -262,6 +262,7 @@ Model BuildModel(const ModelSpec& spec) {
   state.lambda = Eigen::VectorXd::Zero(model.num_multipliers_);
   state.effects.resize(num_effect_slots);
   state.commands.resize(model.num_variables_);
+  state.drive_rates = Eigen::VectorXd::Zero(model.num_variables_);
   model.driven_.assign(model.num_variables_, false);
 
   int variable = 0, multiplier = 0;

@@ -50,6 +50,7 @@ void VariableEffectsBuilder::AddDrive(const std::string& where, int v, const Tim
                                                              model_.multiplier_unknown(*multiplier), law));
   model_.multiplier_names_.push_back("drive " + model_.variable_names_[v]);
   model_.driven_[v] = true;
+  model_.initial_state_.drive_rates[v] = EvaluateRate(law, 0.0);  // the initial rate (config: initial.velocity)
   ++*multiplier;
 }
 

@@ -1,6 +1,10 @@
-// The explicit time dependence of the constraint rows: the drives' laws.
+// The explicit time dependence of the constraint rows: the drives' laws, and the rates they impose.
 
 #include "drive_rows.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
 
 #include "flexmbd/common/error.hpp"
 #include "flexmbd/effects/variable_effects.hpp"
@@ -20,6 +24,40 @@ Eigen::VectorXd DriveLawDerivatives(const Model& model, const State& state, int 
     derivatives[row] = order == 1 ? EvaluateRate(drive->law(), state.t) : EvaluateSecondRate(drive->law(), state.t);
   }
   return derivatives;
+}
+
+namespace {
+double SameInstantTolerance(double t) { return kSameInstant * std::max(1.0, std::abs(t)); }
+}  // namespace
+
+Eigen::VectorXd DriveRates(const Model& model, const State& state, RateSide side) {
+  Eigen::VectorXd rates = Eigen::VectorXd::Zero(model.num_variables());
+  for (const auto& element : model.elements()) {
+    const auto* drive = dynamic_cast<const VariableDrive*>(element.get());
+    if (drive == nullptr) continue;
+    const int k = drive->variable();
+    const VariableCommand& command = state.commands[k];
+    if (command.has_setpoint) {
+      rates[k] = (command.setpoint - state.q[k]) / command.time_constant;
+    } else if (const std::optional<RateJump> jump =
+                   RateJumpNear(drive->law(), state.t, SameInstantTolerance(state.t))) {
+      rates[k] = side == RateSide::kBefore ? jump->before : jump->after;
+    } else {
+      rates[k] = EvaluateRate(drive->law(), state.t);
+    }
+  }
+  return rates;
+}
+
+double NextDriveRateJump(const Model& model, const State& state) {
+  double next = std::numeric_limits<double>::infinity();
+  for (const auto& element : model.elements()) {
+    const auto* drive = dynamic_cast<const VariableDrive*>(element.get());
+    if (drive == nullptr || state.commands[drive->variable()].has_setpoint) continue;
+    const std::optional<RateJump> jump = NextRateJump(drive->law(), state.t, SameInstantTolerance(state.t));
+    if (jump) next = std::min(next, jump->t);
+  }
+  return next;
 }
 
 }  // namespace flexmbd

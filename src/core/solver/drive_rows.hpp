@@ -1,5 +1,7 @@
 #pragma once
-// The explicit time dependence of the constraint rows: only a drive's row, q - f(t), has one.
+// The explicit time dependence of the constraint rows: only a drive's row, q - f(t), has one. Also the rates the
+// drives impose either side of an instant, and the instants at which their laws' rates jump (docs/theory.md,
+// "Jumps of a drive's rate").
 
 #include <Eigen/Core>
 
@@ -12,5 +14,21 @@ struct State;
 /// q - f(t) follows, at state.t and one-sided where the law has a kink (the right derivative, as a driven variable's
 /// initial rate f'(0)); zero on every other row, and on a drive that follows a commanded set-point instead.
 Eigen::VectorXd DriveLawDerivatives(const Model& model, const State& state, int order);
+
+/// Instants closer than this [s] (relative to 1 s or to the time, whichever is larger) are one instant of a drive law:
+/// far below any step, far above the round-off of a time reached by a step cut to land on it.
+constexpr double kSameInstant = 1.0e-12;
+
+/// Which side of an instant a rate is taken on.
+enum class RateSide { kBefore, kAfter };
+
+/// Per joint variable, the rate its drive imposes just before or just after state.t: that of the commanded set-point's
+/// lag, (s - q) / tau, or of the drive's law (at a kink of the law, the rate on that side of it); zero on variables
+/// without a drive [rad/s or m/s].
+Eigen::VectorXd DriveRates(const Model& model, const State& state, RateSide side);
+
+/// The first instant after state.t at which the law of a drive that follows its law (not a set-point) jumps in rate:
+/// steps end there rather than step across it. Infinity if there is none.
+double NextDriveRateJump(const Model& model, const State& state);
 
 }  // namespace flexmbd

@@ -8,6 +8,8 @@
 #include "flexmbd/solver/joint_rates.hpp"
 #include "flexmbd/solver/sparse_system.hpp"
 
+#include "drive_rows.hpp"
+
 namespace flexmbd {
 namespace {
 // The dissipation of one node's translation or rotation over a step is alpha (dv - h a_prev) . M dv (M the
@@ -180,14 +182,23 @@ double EnergyDecayingIntegrator::ExpectedJudgingContraction() const {
 }
 
 StepResult EnergyDecayingIntegrator::Step(const State& given, double h, State* end) {
-  const StepResult result = SolveStep(StartOf(given), h, end);
+  const StepResult result = SolveStep(StartOf(given, h), h, end);
   if (result.status == StepStatus::kRejectedEvent && end_rate_event_ && h < kShortStepFraction * given.h_prev) {
     short_event_start_ = given.t;
   }
   return result;
 }
 
-const State& EnergyDecayingIntegrator::StartOf(const State& given) {
+const State& EnergyDecayingIntegrator::StartOf(const State& given, double h) {
+  const Eigen::VectorXd rates = DriveRates(model_, given, RateSide::kAfter);
+  if (rates != given.drive_rates) {
+    // A drive's rate jumps here: the step starts from the velocities carried across the jump, and the accelerations
+    // before it say nothing about the motion after (docs/theory.md, "Jumps of a drive's rate").
+    projected_start_ = given;
+    if (!projection_.ApplyAtDriveJump(&projected_start_, given.drive_rates, rates, h)) return given;
+    projected_start_.history_steps = 0;
+    return projected_start_;
+  }
   if (given.t != short_event_start_) return given;
   projected_start_ = given;
   const std::vector<bool> nothing_held(held_.size(), false);
@@ -362,6 +373,7 @@ void EnergyDecayingIntegrator::Commit(const State& start, const Eigen::VectorXd&
   end->qddot_prev = (end->qdot - start.qdot) / h;
   end->dq_prev = end->q - start.q;
   RecordStepHistory(start, h, end);
+  end->drive_rates = DriveRates(model_, *end, RateSide::kBefore);
 
   StepWork work;
   for (const auto& element : model_.elements()) element->AddStepWork(ctx, &work);

@@ -7,6 +7,8 @@
 #include "flexmbd/solver/joint_rates.hpp"
 #include "flexmbd/solver/sparse_system.hpp"
 
+#include "drive_rows.hpp"
+
 namespace flexmbd {
 
 GeneralizedAlphaCoefficients::GeneralizedAlphaCoefficients(double rho_inf)
@@ -175,6 +177,7 @@ void GeneralizedAlphaIntegrator::Commit(const State& start, const State& iterate
     end->element_state_rates[k] = (*builder_.context().element_states)[k].rate;
   }
   RecordStepHistory(start, h, end);
+  end->drive_rates = DriveRates(model_, *end, RateSide::kBefore);
 }
 
 }  // namespace flexmbd

@@ -10,6 +10,8 @@
 #include "flexmbd/solver/static_start_rates.hpp"
 #include "flexmbd/solver/step_context_builder.hpp"
 
+#include "drive_rows.hpp"
+
 namespace flexmbd {
 namespace {
 // Times closer than this fraction of a step are the same instant (guards the end of the run and sample times
@@ -188,7 +190,10 @@ void Simulation::AdvanceTo(double t_until, double t_end, const SampleSink& sink)
   const double sample_period = model_.output().rate_hz > 0 ? 1.0 / model_.output().rate_hz : 0.0;
   while (state_.t < std::min(t_until, t_end) - kTimeEpsilon * h_) {
     double h = std::min(h_, solver.dt_max);
-    if (t_end - state_.t - h < kSliverFraction * h) h = t_end - state_.t;
+    // Steps end where a drive's law jumps in rate rather than step across it (docs/theory.md, "Jumps of a drive's
+    // rate"), as they end at t_end.
+    const double landing = std::min(t_end, NextDriveRateJump(model_, state_));
+    if (landing - state_.t - h < kSliverFraction * h) h = landing - state_.t;
     const StepResult result = TryStep(h);
     const double h_next = controller_.Next(h, result);
     if (result.status == StepStatus::kAccepted) {

@@ -56,15 +56,38 @@ bool VelocityProjection::SolveLimitingStep(const State& state, double h, MeanMot
 }
 
 bool VelocityProjection::Apply(State* state, const std::vector<bool>& held) {
+  return Project(state, held, kLimitingStepFraction * state->h_prev, nullptr, Removed::kNumerical);
+}
+
+bool VelocityProjection::ApplyAtDriveJump(State* state, const Eigen::VectorXd& before, const Eigen::VectorXd& after,
+                                          double h) {
+  // The projection is linear in the drives' rates, so projecting onto `before` first changes nothing of the result;
+  // it splits the books: what it removes is the alternating mode e the velocities carried, the scheme's; the second
+  // projection then starts from velocities that meet every constraint, whose reactions do no work across it but the
+  // drives', which do the jump's work (docs/theory.md, "Jumps of a drive's rate").
+  const std::vector<bool> nothing_held(model_.modal_effects().size(), false);
+  State projected = *state;
+  if (!Project(&projected, nothing_held, kLimitingStepFraction * h, &before, Removed::kNumerical) ||
+      !Project(&projected, nothing_held, kLimitingStepFraction * h, &after, Removed::kDrivesWork)) {
+    return false;
+  }
+  *state = std::move(projected);
+  return true;
+}
+
+bool VelocityProjection::Project(State* state, const std::vector<bool>& held, double h,
+                                 const Eigen::VectorXd* drive_rates, Removed removed) {
   std::vector<EffectState> modes = state->effects;
   for (const ModalEffect* effect : model_.modal_effects()) {
     if (!held[effect->slot()]) modes[effect->slot()].mode = effect->ReleasedMode(*state);
   }
   redundancy_.Mark(*state, &modes);
   builder_.set_effect_modes(&modes);
-  const double h = kLimitingStepFraction * state->h_prev;
+  builder_.set_drive_rates(drive_rates);
   MeanMotion single, twice;
-  if (!SolveLimitingStep(*state, h, &single) || !SolveLimitingStep(*state, 2.0 * h, &twice)) return false;
+  const bool converged = SolveLimitingStep(*state, h, &single) && SolveLimitingStep(*state, 2.0 * h, &twice);
+  builder_.set_drive_rates(nullptr);
+  if (!converged) return false;
   // Richardson extrapolation to h = 0 of the mean velocities and of the constraint impulses' work.
   const double kinetic_before = StateEnergy(model_, *state).kinetic;
   for (int k = 0; k < model_.num_nodes(); ++k) {
@@ -81,9 +104,14 @@ bool VelocityProjection::Apply(State* state, const std::vector<bool>& held) {
   for (size_t k = 0; k < state->effects.size(); ++k) {
     state->effects[k].work += kept(single.effect_dissipation[k], twice.effect_dissipation[k]);
   }
-  state->external_work += external;
+  const double kinetic_removed = kinetic_before - StateEnergy(model_, *state).kinetic;
   state->dissipated_physical += dissipated;
-  state->dissipated_numerical += kinetic_before - StateEnergy(model_, *state).kinetic + external - dissipated;
+  if (removed == Removed::kDrivesWork) {
+    state->external_work += dissipated - kinetic_removed;
+  } else {
+    state->external_work += external;
+    state->dissipated_numerical += kinetic_removed + external - dissipated;
+  }
   return true;
 }
 
