@@ -58,6 +58,8 @@ struct Mode {
   double damped_frequency_hz = 0.0;  ///< |Im s| / 2 pi [Hz]
   double damping_ratio = 0.0;        ///< -Re s / |s|: 0 undamped, 1 for a real (overdamped) root, < 0 unstable
   bool rigid_body = false;           ///< a zero-frequency motion (free joint, free body)
+  double growth_round_off = 0.0;     ///< the eigen-solver's round-off in Re s of this root [1/s]: growth up to it is
+                                     ///< no instability (theory (E5))
   Eigen::VectorXcd shape;            ///< over the node and variable unknowns (6 num_nodes + num_variables) [m, rad],
                                      ///< scaled so that its largest component is 1
 };
@@ -140,7 +142,7 @@ std::vector<SweepPoint> EigenSweep(const std::vector<double>& parameters,
 /// have another size are left as they are.
 void TrackModes(std::vector<SweepPoint>* points);
 
-/// True for a mode growing in time: a damping ratio below the round-off of an undamped root (rigid-body modes are
+/// True for a mode growing in time: Re s above the solver's round-off in it, growth_round_off (rigid-body modes are
 /// not unstable).
 bool Unstable(const Mode& mode);
 
