@@ -47,8 +47,9 @@ struct EigenOptions {
   EigenMethod method = EigenMethod::kAuto;
   int dense_limit = 2000;           ///< kAuto: largest number of kinematic unknowns solved densely
   double shift_hz = 0.0;            ///< sparse: frequency near which modes are sought [Hz]; 0 = the lowest
-  double rigid_tolerance = 1.0e-8;  ///< |s| below this times the model's frequency scale (about its highest
-                                    ///< frequency) is a rigid-body mode (and see theory (E5))
+  double rigid_tolerance = 1.0e-8;  ///< dense: |s| below this times the model's frequency scale (about its highest
+                                    ///< frequency) is a rigid-body mode (and see theory (E5)); the sparse method
+                                    ///< judges zero roots against its shift (E6)
 };
 
 /// One mode of the linearised system: motion x(t) = Re(shape e^{s t}).

@@ -175,7 +175,7 @@ EigenResult SolveDense(const Model& model, const LinearisedSystem& system, const
   } else {
     raw = FirstOrderRootsWithoutRigidMotions(Kt, Dt, T, scale, crossover);
   }
-  ClassifyModes(model, system, raw, symmetric, 0, scale, 0.0, options, &result);
+  ClassifyModes(model, system, raw, symmetric, 0, scale, options.rigid_tolerance * scale, options, &result);
   return result;
 }
 

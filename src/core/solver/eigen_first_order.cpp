@@ -62,7 +62,7 @@ EigenResult SolveDenseWithStates(const Model& model, const LinearisedSystem& sys
   // Frequency scale: the largest root, against which rigid-body roots are judged (theory (E5)).
   double scale = eig.values.cwiseAbs().maxCoeff();
   if (!(scale > 0)) scale = 1.0;
-  ClassifyModes(model, system, raw, false, ns, scale, 0.0, options, &result);
+  ClassifyModes(model, system, raw, false, ns, scale, options.rigid_tolerance * scale, options, &result);
   return result;
 }
 

@@ -12,7 +12,9 @@ namespace flexmbd {
 namespace eigen_internal {
 namespace {
 // Rigid-body roots come out of the arithmetic at four kinds of round-off level (theory (E5)):
-// - the eigensolver's, ~1e-12 of the frequency scale with the shifted inverse: caught by rigid_tolerance;
+// - the eigensolver's, ~1e-12 of the frequency scale with the shifted inverse, up to ~sqrt(eps) of it from the
+//   round-off of the reduced matrices (the dense solvers: rigid_tolerance), a fraction of its shift (the sparse
+//   method): the solver's limit;
 // - the round-off of the stiffness terms the shape engages, x^H K x ~ 1e-17 |x|^T |K| |x| (a free beam, whose
 //   rigid motions cancel large element terms): below kCancellation. Elastic modes of stiff finite-element
 //   models cancel too, but far less (1e-10 for a 40-element Timoshenko beam with GA L^2 / EI = 1e6);
@@ -39,9 +41,7 @@ constexpr double kRoundOffMargin = 10.0;
 
 }  // namespace
 
-bool IsRigidRoot(const LinearisedSystem& system, const RawMode& mode, int num_states, double scale, double floor,
-                 const EigenOptions& options) {
-  const double limit = std::max(options.rigid_tolerance * scale, floor);
+bool IsRigidRoot(const LinearisedSystem& system, const RawMode& mode, int num_states, double scale, double limit) {
   const double s = std::abs(mode.s);
   if (s <= limit) return true;
   if (s > kResolved * scale) return false;
@@ -70,12 +70,12 @@ Eigen::VectorXcd Normalised(const LinearisedSystem& system, const Eigen::VectorX
 }  // namespace
 
 void ClassifyModes(const Model& model, const LinearisedSystem& system, const std::vector<RawMode>& all, bool symmetric,
-                   int num_states, double scale, double floor, const EigenOptions& options, EigenResult* result) {
-  const double resolved = std::max(floor, kReferenceResolution * ReferenceRate(model, system.reference));
+                   int num_states, double scale, double limit, const EigenOptions& options, EigenResult* result) {
+  const double resolved = std::max(limit, kReferenceResolution * ReferenceRate(model, system.reference));
   std::vector<const RawMode*> rigid;
   std::vector<Mode> modes;
   for (const RawMode& raw : all) {
-    if (IsRigidRoot(system, raw, num_states, scale, resolved, options)) {
+    if (IsRigidRoot(system, raw, num_states, scale, resolved)) {
       rigid.push_back(&raw);
       continue;
     }
