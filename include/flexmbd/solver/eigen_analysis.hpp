@@ -47,8 +47,9 @@ struct EigenOptions {
   EigenMethod method = EigenMethod::kAuto;
   int dense_limit = 2000;           ///< kAuto: largest number of kinematic unknowns solved densely
   double shift_hz = 0.0;            ///< sparse: frequency near which modes are sought [Hz]; 0 = the lowest
-  double rigid_tolerance = 1.0e-8;  ///< |s| below this times the model's frequency scale (about its highest
-                                    ///< frequency) is a rigid-body mode (and see theory (E5))
+  double rigid_tolerance = 1.0e-8;  ///< dense: |s| below this times the model's frequency scale (about its highest
+                                    ///< frequency) is a rigid-body mode (and see theory (E5)); the sparse method
+                                    ///< judges zero roots against its shift (E6)
 };
 
 /// One mode of the linearised system: motion x(t) = Re(shape e^{s t}).
@@ -58,6 +59,8 @@ struct Mode {
   double damped_frequency_hz = 0.0;  ///< |Im s| / 2 pi [Hz]
   double damping_ratio = 0.0;        ///< -Re s / |s|: 0 undamped, 1 for a real (overdamped) root, < 0 unstable
   bool rigid_body = false;           ///< a zero-frequency motion (free joint, free body)
+  double growth_round_off = 0.0;     ///< the eigen-solver's round-off in Re s of this root [1/s]: growth up to it is
+                                     ///< no instability (theory (E5))
   Eigen::VectorXcd shape;            ///< over the node and variable unknowns (6 num_nodes + num_variables) [m, rad],
                                      ///< scaled so that its largest component is 1
 };
@@ -140,7 +143,7 @@ std::vector<SweepPoint> EigenSweep(const std::vector<double>& parameters,
 /// have another size are left as they are.
 void TrackModes(std::vector<SweepPoint>* points);
 
-/// True for a mode growing in time: a damping ratio below the round-off of an undamped root (rigid-body modes are
+/// True for a mode growing in time: Re s above the solver's round-off in it, growth_round_off (rigid-body modes are
 /// not unstable).
 bool Unstable(const Mode& mode);
 

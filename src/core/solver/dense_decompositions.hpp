@@ -22,6 +22,13 @@ struct Eigenpairs {
 };
 Eigenpairs GeneralEigen(const Eigen::MatrixXd& matrix);
 
+/// The round-off of each eigenvalue of `matrix` (its eigenpairs `eig`): eps |A|_F times its condition number
+/// |x| |y| / |y^H x| (y its left eigenvector), the first-order change of the eigenvalue under the solver's backward
+/// error; infinite where the eigenvectors are dependent. A double root split by round-off into a pair ~sqrt(eps |A|)
+/// apart has a condition number ~1 / its split, so its round-off covers the split. Meant for matrices scaled to
+/// entries of order one: with entries of very different sizes the normwise error overstates the round-off.
+Eigen::VectorXd EigenvalueRoundOff(const Eigen::MatrixXd& matrix, const Eigenpairs& eig);
+
 /// Singular values in descending order and the thin left (U) or right (V) singular vectors.
 struct SingularBasis {
   Eigen::VectorXd values;

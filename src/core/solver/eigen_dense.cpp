@@ -77,11 +77,14 @@ std::vector<RawMode> FirstOrderRoots(const Eigen::MatrixXd& Kt, const Eigen::Mat
     A = Eigen::PartialPivLU<Eigen::MatrixXd>(A).inverse();
   }
   const dense::Eigenpairs eig = dense::GeneralEigen(A);
+  const Eigen::VectorXd round_off = dense::EigenvalueRoundOff(A, eig);
   std::vector<RawMode> out;
   for (int i = 0; i < 2 * r; ++i) {
     RawMode mode;
     mode.s = k > 0 ? w * (1.0 / eig.values[i] - k) : w * eig.values[i];
     mode.x = eig.vectors.col(i).head(r);
+    // A change d of the inverted eigenvalue mu moves s by w d / |mu|^2.
+    mode.round_off = k > 0 ? w * round_off[i] / std::norm(eig.values[i]) : w * round_off[i];
     out.push_back(std::move(mode));
   }
   return out;
@@ -172,7 +175,7 @@ EigenResult SolveDense(const Model& model, const LinearisedSystem& system, const
   } else {
     raw = FirstOrderRootsWithoutRigidMotions(Kt, Dt, T, scale, crossover);
   }
-  ClassifyModes(system, raw, symmetric, 0, scale, 0.0, options, &result);
+  ClassifyModes(model, system, raw, symmetric, 0, scale, options.rigid_tolerance * scale, options, &result);
   return result;
 }
 

@@ -46,22 +46,28 @@ class KluLu {
 struct RawMode {
   std::complex<double> s;
   Eigen::VectorXcd x;
+  double round_off = 0.0;  ///< the solver's round-off in s [1/s] (theory (E5)): growth up to it is not resolved
 };
 
+/// The largest rate of a state's motion [1/s]: node angular rates, node speeds over the model's length scale, joint
+/// rates. The time scale of the second differences of (E2), and the scale of the stiffness its accelerations feed.
+double ReferenceRate(const Model& model, const State& state);
+
 /// Turns the eigenvalues of an analysis into modes (theory (E5)): one mode per conjugate pair (the root with
-/// Im s > 0) and per real root. A root is rigid-body when |s| <= max(options.rigid_tolerance * scale, floor)
-/// [1/s], `scale` the model's frequency scale, or when both |s| and the stiffness and velocity terms its shape
-/// engages (|x|^T |K| |x| and |x|^T |D| |x| over x^H M x) are at round-off level against scale. Rigid roots
+/// Im s > 0) and per real root. A root is rigid-body when |s| <= `limit` [1/s], the solver's round-off of a zero
+/// root (the dense solvers': options.rigid_tolerance times `scale`, the model's frequency scale); when |s| is within
+/// the resolution of the reference motion (a fraction of its largest rate, ReferenceRate); or when both |s| and the
+/// stiffness and velocity terms its shape engages (|x|^T |K| |x| and |x|^T |D| |x| over x^H M x) are at round-off
+/// level against scale. Each mode's growth_round_off is a margin times its root's round_off. Rigid roots
 /// give one mode each in a symmetric problem (`symmetric`: one root omega^2 per degree of freedom), else half
 /// as many, rounded up (a rigid motion is a double root of the first-order problem), with shapes spanning the
 /// roots' vectors. Sorted rigid first, then by frequency, and cut to options.num_modes. The last `num_states`
 /// components of each shape are element states: a root that moves them alone is never rigid.
-void ClassifyModes(const LinearisedSystem& system, const std::vector<RawMode>& all, bool symmetric, int num_states,
-                   double scale, double floor, const EigenOptions& options, EigenResult* result);
+void ClassifyModes(const Model& model, const LinearisedSystem& system, const std::vector<RawMode>& all, bool symmetric,
+                   int num_states, double scale, double limit, const EigenOptions& options, EigenResult* result);
 
 /// The rigid-body test of ClassifyModes for one root.
-bool IsRigidRoot(const LinearisedSystem& system, const RawMode& mode, int num_states, double scale, double floor,
-                 const EigenOptions& options);
+bool IsRigidRoot(const LinearisedSystem& system, const RawMode& mode, int num_states, double scale, double limit);
 
 /// Every mode by null-space elimination and a dense eigensolver.
 EigenResult SolveDense(const Model& model, const LinearisedSystem& system, const EigenOptions& options);

@@ -141,11 +141,7 @@ Eigen::VectorXd Rates(const Model& model, const State& state) {
 Eigen::VectorXd ConstraintCurvature(const Model& model, const State& state) {
   const int n = model.num_unknowns(), m = model.num_multipliers(), nk = n - m;
   const Eigen::VectorXd u = Rates(model, state);
-  double rate = 0;
-  for (int k = 0; k < model.num_nodes(); ++k) {
-    rate = std::max({rate, state.nodes[k].w.norm(), state.nodes[k].v.norm() / model.length_scale()});
-  }
-  if (model.num_variables() > 0) rate = std::max(rate, state.qdot.cwiseAbs().maxCoeff());
+  const double rate = eigen_internal::ReferenceRate(model, state);
   const double step = kMotionStep / (rate > 0 ? rate : 1.0);
   StepContextBuilder builder(model);
   auto constraints = [&](double e) {
@@ -308,6 +304,15 @@ State Sized(const Model& model, const State& state) {
 }
 
 }  // namespace
+
+double eigen_internal::ReferenceRate(const Model& model, const State& state) {
+  double rate = 0;
+  for (int k = 0; k < model.num_nodes(); ++k) {
+    rate = std::max({rate, state.nodes[k].w.norm(), state.nodes[k].v.norm() / model.length_scale()});
+  }
+  if (model.num_variables() > 0) rate = std::max(rate, state.qdot.cwiseAbs().maxCoeff());
+  return rate;
+}
 
 State WithConsistentMotion(const Model& model, const State& state) {
   State out = Sized(model, state);

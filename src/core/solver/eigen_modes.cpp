@@ -11,8 +11,10 @@
 namespace flexmbd {
 namespace eigen_internal {
 namespace {
-// Rigid-body roots come out of the arithmetic at three kinds of round-off level (theory (E5)):
-// - the eigensolver's, ~1e-12 of the frequency scale with the shifted inverse: caught by rigid_tolerance;
+// Rigid-body roots come out of the arithmetic at four kinds of round-off level (theory (E5)):
+// - the eigensolver's, ~1e-12 of the frequency scale with the shifted inverse, up to ~sqrt(eps) of it from the
+//   round-off of the reduced matrices (the dense solvers: rigid_tolerance), a fraction of its shift (the sparse
+//   method): the solver's limit;
 // - the round-off of the stiffness terms the shape engages, x^H K x ~ 1e-17 |x|^T |K| |x| (a free beam, whose
 //   rigid motions cancel large element terms): below kCancellation. Elastic modes of stiff finite-element
 //   models cancel too, but far less (1e-10 for a 40-element Timoshenko beam with GA L^2 / EI = 1e6);
@@ -23,12 +25,23 @@ namespace {
 // states' own equations (an inflow nothing drives), whose inertia is round-off against their stiffness (the
 // Goland wing's clamped root strip: 1.6e-10 and 2.4e-10; the lowest of the strips its motion drives: 1.1e-6).
 constexpr double kCancellation = 1.0e-14, kIdle = 1.0e-14, kResolved = 1.0e-4, kStatesOnly = 1.0e-8;
+// - the reference's: a moving reference is known only to the round-off of (E2)'s second differences, ~1e-9 of its
+//   curvature terms (a free hub at 10 rad/s, EigenRoundOff.RotationOfAFreeHubIsARigidBodyModeNotADivergence: its
+//   accelerations and multipliers 4.5e-10 off). The stiffness they feed is ~(mass) rate^2, so a root's s^2 is
+//   uncertain by ~1e-9 rate^2 per unit mass, and |s| below sqrt(1e-9) = 3e-5 of the rate is not told from zero
+//   (measured there: the hub's rotation at 1.9e-5 of the rate, a real pair of roots). Below kReferenceResolution
+//   of the rate (ReferenceRate) a root is rigid.
+constexpr double kReferenceResolution = 1.0e-4;
+// A mode's growth_round_off is this many times its root's round-off: the solvers' estimates are first-order ones
+// (a condition number times a backward error). An undamped root comes out with Re s of either sign: ~eps w for a
+// well-conditioned root (w the frequency scale; 2e-11 of |s| for the lowest modes of the rotating cantilever,
+// w ~ 5e4 rad/s, |s| ~ 4 rad/s), ~sqrt(eps) w for a double root split by round-off (the free translations of a body
+// spinning at 2 rad/s, seen from it: growth 2.7e-8 1/s, estimated round-off 1.3e-7 1/s).
+constexpr double kRoundOffMargin = 10.0;
 
 }  // namespace
 
-bool IsRigidRoot(const LinearisedSystem& system, const RawMode& mode, int num_states, double scale, double floor,
-                 const EigenOptions& options) {
-  const double limit = std::max(options.rigid_tolerance * scale, floor);
+bool IsRigidRoot(const LinearisedSystem& system, const RawMode& mode, int num_states, double scale, double limit) {
   const double s = std::abs(mode.s);
   if (s <= limit) return true;
   if (s > kResolved * scale) return false;
@@ -56,12 +69,13 @@ Eigen::VectorXcd Normalised(const LinearisedSystem& system, const Eigen::VectorX
 
 }  // namespace
 
-void ClassifyModes(const LinearisedSystem& system, const std::vector<RawMode>& all, bool symmetric, int num_states,
-                   double scale, double floor, const EigenOptions& options, EigenResult* result) {
+void ClassifyModes(const Model& model, const LinearisedSystem& system, const std::vector<RawMode>& all, bool symmetric,
+                   int num_states, double scale, double limit, const EigenOptions& options, EigenResult* result) {
+  const double resolved = std::max(limit, kReferenceResolution * ReferenceRate(model, system.reference));
   std::vector<const RawMode*> rigid;
   std::vector<Mode> modes;
   for (const RawMode& raw : all) {
-    if (IsRigidRoot(system, raw, num_states, scale, floor, options)) {
+    if (IsRigidRoot(system, raw, num_states, scale, resolved)) {
       rigid.push_back(&raw);
       continue;
     }
@@ -72,6 +86,7 @@ void ClassifyModes(const LinearisedSystem& system, const std::vector<RawMode>& a
     mode.frequency_hz = magnitude / (2 * M_PI);
     mode.damped_frequency_hz = std::abs(raw.s.imag()) / (2 * M_PI);
     mode.damping_ratio = -raw.s.real() / magnitude + 0.0;  // + 0.0: no negative zero in tables
+    mode.growth_round_off = kRoundOffMargin * raw.round_off;
     mode.shape = Normalised(system, raw.x);
     modes.push_back(std::move(mode));
   }

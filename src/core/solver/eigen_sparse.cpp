@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cmath>
 #include <complex>
+#include <limits>
 #include <sstream>
 
 #include "eigen_internal.hpp"
@@ -248,6 +249,10 @@ std::vector<RawMode> NearestRoots(const LinearisedSystem& system, Complex sigma,
         << " roots near s = " << sigma << " 1/s";
     throw SolverError(msg.str());
   }
+  // Round-off of each Ritz value mu: its condition number in H (from H's left eigenvectors, the rows of the
+  // inverse of its eigenvectors) times its residual and the round-off of H (theory (E6)).
+  const Eigen::MatrixXcd left = Eigen::PartialPivLU<Eigen::MatrixXcd>(vectors).inverse();
+  const double backward_error = Eigen::NumTraits<double>::epsilon() * H.topLeftCorner(k, k).norm();
   std::vector<RawMode> raw;
   for (int i = 0; i < std::min(wanted, k); ++i) {
     const int j = order[i];
@@ -255,6 +260,12 @@ std::vector<RawMode> NearestRoots(const LinearisedSystem& system, Complex sigma,
     RawMode mode;
     mode.s = sigma + 1.0 / ritz[j];
     mode.x = (V.leftCols(k) * vectors.col(j)).head(nk);
+    const double residual = std::abs(H(k, k - 1)) * std::abs(vectors(k - 1, j)) / vectors.col(j).norm();
+    const double condition = vectors.col(j).norm() * left.row(j).norm();
+    // A change d of mu = 1 / (s - sigma) moves s by d / |mu|^2; a condition number that is not finite (an exactly
+    // defective H) leaves the root unresolved.
+    mode.round_off = std::isfinite(condition) ? condition * (residual + backward_error) / std::norm(ritz[j])
+                                              : std::numeric_limits<double>::infinity();
     raw.push_back(std::move(mode));
   }
   return raw;
@@ -307,7 +318,7 @@ EigenResult SolveSparse(const Model& model, const LinearisedSystem& system, cons
   const double target = 2 * M_PI * options.shift_hz;
   const double offset = kShiftOffset * scale;
   // A rigid-body root comes out within a small fraction of this offset from 0 (below: with the second shift).
-  ClassifyModes(system, NearestRoots(system, Complex(-offset, target), wanted, max_krylov), false, 0, scale,
+  ClassifyModes(model, system, NearestRoots(system, Complex(-offset, target), wanted, max_krylov), false, 0, scale,
                 kRigidFractionOfOffset * offset, all, &result);
   if (result.num_rigid_body > 0) {
     // A rigid-body motion is a defective double root at 0: with the shift that close, its Jordan block
@@ -318,7 +329,7 @@ EigenResult SolveSparse(const Model& model, const LinearisedSystem& system, cons
       if (!mode.rigid_body) lowest = std::min(lowest, 2 * M_PI * mode.frequency_hz);
     }
     const double second = kRigidShiftFraction * lowest;
-    ClassifyModes(system, NearestRoots(system, Complex(-second, target), wanted, max_krylov), false, 0, scale,
+    ClassifyModes(model, system, NearestRoots(system, Complex(-second, target), wanted, max_krylov), false, 0, scale,
                   kRigidFractionOfSecondOffset * second, all, &result);
   }
   KeepNearest(options.shift_hz, num_modes, &result);
