@@ -214,5 +214,18 @@ TEST(TimeFunction, TableRatesAtKnotsAreRightDerivatives) {
   EXPECT_NEAR(EvaluateRate(f, 0.0), 2.0, kHandValue);
 }
 
+TEST(TimeFunction, BreakpointsAreWhereTheValueOrItsFirstTwoRatesJump) {
+  // Reference: the formulas of the header: a linear ramp kinks at its start and end, a cosine ramp's f'' jumps there
+  // (by +-(value - offset) (pi/duration)^2 / 2), a sine's rate jumps at its start, a table kinks at every abscissa; a
+  // rate ramp's f'' = value (pi/duration) sin(pi s)/2 is continuous, and a constant has none (exact).
+  using Times = std::vector<double>;
+  EXPECT_EQ(Breakpoints(Ramp(Kind::kLinearRamp)), (Times{1.0, 3.0}));
+  EXPECT_EQ(Breakpoints(Ramp(Kind::kCosineRamp)), (Times{1.0, 3.0}));
+  EXPECT_EQ(Breakpoints(Sine()), (Times{0.5}));
+  EXPECT_EQ(Breakpoints(Table()), (Times{0.0, 1.0, 3.0, 4.0}));
+  EXPECT_TRUE(Breakpoints(Ramp(Kind::kRateRamp)).empty());
+  EXPECT_TRUE(Breakpoints(TimeFunctionSpec()).empty());
+}
+
 }  // namespace time_function_test
 }  // namespace flexmbd

@@ -2,6 +2,8 @@
 /// @file
 /// Scalar time functions for drives and loads (docs/config.md, "time functions").
 
+#include <vector>
+
 #include "flexmbd/model/model_spec.hpp"
 
 namespace flexmbd {
@@ -17,5 +19,9 @@ double EvaluateRate(const TimeFunctionSpec& f, double t);
 
 /// Second derivative d2f/dt2 (zero on linear pieces).
 double EvaluateSecondRate(const TimeFunctionSpec& f, double t);
+
+/// The instants where f, f' or f'' jumps [s], increasing: a ramp's start and end (a rate ramp's f'' is continuous:
+/// none), a sine's start, a table's abscissae. The steps of a run land on them (docs/theory.md, "Breakpoints").
+std::vector<double> Breakpoints(const TimeFunctionSpec& f);
 
 }  // namespace flexmbd

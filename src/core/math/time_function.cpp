@@ -60,4 +60,21 @@ double Evaluate(const TimeFunctionSpec& f, double t) { return Derivative(f, t, 0
 double EvaluateRate(const TimeFunctionSpec& f, double t) { return Derivative(f, t, 1); }
 double EvaluateSecondRate(const TimeFunctionSpec& f, double t) { return Derivative(f, t, 2); }
 
+std::vector<double> Breakpoints(const TimeFunctionSpec& f) {
+  using Kind = TimeFunctionSpec::Kind;
+  switch (f.kind) {
+    case Kind::kConstant:
+    case Kind::kRateRamp:
+      return {};
+    case Kind::kLinearRamp:
+    case Kind::kCosineRamp:
+      return {f.start, f.start + f.duration};
+    case Kind::kSine:
+      return {f.start};
+    case Kind::kTable:
+      return f.times;
+  }
+  return {};
+}
+
 }  // namespace flexmbd

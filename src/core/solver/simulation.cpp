@@ -187,10 +187,20 @@ void Simulation::AdvanceTo(double t_until, double t_end, const SampleSink& sink)
   const SolverSpec& solver = model_.solver();
   const double sample_period = model_.output().rate_hz > 0 ? 1.0 / model_.output().rate_hz : 0.0;
   while (state_.t < std::min(t_until, t_end) - kTimeEpsilon * h_) {
+    // Steps land on t_end and on every breakpoint of the time functions before it, never across one.
+    const std::vector<double>& breakpoints = model_.breakpoints();
+    const auto next_breakpoint = std::upper_bound(breakpoints.begin(), breakpoints.end(), state_.t + kTimeEpsilon * h_);
+    const bool to_breakpoint = next_breakpoint != breakpoints.end() && *next_breakpoint < t_end;
+    const double t_land = to_breakpoint ? *next_breakpoint : t_end;
     double h = std::min(h_, solver.dt_max);
-    if (t_end - state_.t - h < kSliverFraction * h) h = t_end - state_.t;
+    if (t_land - state_.t - h < kSliverFraction * h) h = t_land - state_.t;
     const StepResult result = TryStep(h);
     const double h_next = controller_.Next(h, result);
+    // Past a breakpoint the motion's derivatives jump: the error estimate and the scheme's dissipation restart their
+    // history there, as after an impact.
+    if (result.status == StepStatus::kAccepted && to_breakpoint && state_.t >= t_land - kTimeEpsilon * h) {
+      state_.history_steps = 0;
+    }
     if (result.status == StepStatus::kAccepted) {
       const OutputSample current = MakeSample(model_, state_, integrator_->last_context(), h, result.newton.iterations);
       if (sample_period == 0) {
