@@ -1,7 +1,9 @@
 // Command-line runner: runs a case without roscore.
 //   flexmbd_run --urdf F --config F [--csv F] [--bag F] [--check]
 // --csv and --bag override output.csv and output.bag; the bag is the one the node writes (docs/ros.md).
-// --check loads and builds the model and exits without running it (scripts/sweep.py checks every case first).
+// --check loads and builds the model and exits without running it (scripts/sweep.py checks every case first); with
+// --csv it also writes the CSV's header row, the columns a run would write (not for an eigen-analysis), so that a
+// sweep's metrics can be checked against them before any case runs.
 // Exit status (flexmbd/common/exit_status.hpp): 0 success, 1 usage error, 2 bad input (ConfigError), 3 the run
 // failed (SolverError, or an output file that cannot be written), 4 an unexpected error (a bug); every failure
 // prints one line on stderr.
@@ -16,6 +18,7 @@
 #include "flexmbd/common/error.hpp"
 #include "flexmbd/common/exit_status.hpp"
 #include "flexmbd/io/config_loader.hpp"
+#include "flexmbd/io/csv_sink.hpp"
 #include "flexmbd/ros/sample_fan_out.hpp"
 #include "flexmbd/io/text_file.hpp"
 #include "flexmbd/ros/transform_frames.hpp"
@@ -288,6 +291,9 @@ int main(int argc, char** argv) {
     if (!args.bag.empty()) spec.output.bag = args.bag;
     const flexmbd::Model model = flexmbd::BuildModel(spec);
     if (args.check_only) {
+      if (!args.csv.empty() && model.solver().analysis != flexmbd::SolverSpec::Analysis::kEigen) {
+        flexmbd::CsvSink(model, args.csv).Close();
+      }
       std::printf("flexmbd_run: %s and %s are valid\n", args.urdf.c_str(), args.config.c_str());
       return flexmbd::kExitSuccess;
     }
