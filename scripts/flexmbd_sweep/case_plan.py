@@ -53,7 +53,7 @@ def check_case(runner, urdf, config_path, where, columns_path):
     """Has flexmbd_run load and build the case without running it, writing its CSV header to `columns_path`; its
     refusal becomes a SweepError. Returns the CSV's columns, or None when the case writes no such CSV (eigen)."""
     try:
-        done = subprocess.run([runner, '--urdf', urdf, '--config', config_path, '--check', '--csv', columns_path],
+        done = subprocess.run([runner, '--urdf', urdf, '--config', config_path, '--check', '--columns', columns_path],
                               stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, check=False)
     except OSError as error:
         raise SweepError(f'cannot run the runner {runner}: {error.strerror}') from None

@@ -1,9 +1,9 @@
 // Command-line runner: runs a case without roscore.
-//   flexmbd_run --urdf F --config F [--csv F] [--bag F] [--check]
+//   flexmbd_run --urdf F --config F [--csv F] [--bag F] [--check [--columns F]]
 // --csv and --bag override output.csv and output.bag; the bag is the one the node writes (docs/ros.md).
 // --check loads and builds the model and exits without running it (scripts/sweep.py checks every case first); with
-// --csv it also writes the CSV's header row, the columns a run would write (not for an eigen-analysis), so that a
-// sweep's metrics can be checked against them before any case runs.
+// --columns F it writes to F the CSV's header row, the columns a run would write (not for an eigen-analysis), so that
+// a sweep's metrics can be checked against them before any case runs.
 // Exit status (flexmbd/common/exit_status.hpp): 0 success, 1 usage error, 2 bad input (ConfigError), 3 the run
 // failed (SolverError, or an output file that cannot be written), 4 an unexpected error (a bug); every failure
 // prints one line on stderr.
@@ -35,11 +35,13 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-constexpr char kUsage[] = "usage: flexmbd_run --urdf FILE --config FILE [--csv FILE] [--bag FILE] [--check]\n";
+constexpr char kUsage[] =
+    "usage: flexmbd_run --urdf FILE --config FILE [--csv FILE] [--bag FILE] [--check [--columns FILE]]\n";
 
 struct Arguments {
   std::string urdf, config, csv, bag;
   bool check_only = false;
+  std::string columns;  ///< with --check: where to write the CSV's header row
 };
 
 bool Parse(int argc, char** argv, Arguments* args) {
@@ -55,9 +57,10 @@ bool Parse(int argc, char** argv, Arguments* args) {
     else if (flag == "--config") args->config = value;
     else if (flag == "--csv") args->csv = value;
     else if (flag == "--bag") args->bag = value;
+    else if (flag == "--columns") args->columns = value;
     else return false;
   }
-  return !args->urdf.empty();
+  return !args->urdf.empty() && (args->columns.empty() || args->check_only);
 }
 
 // output.cycle_from: keeps every joint variable's samples from that time on and reports the settled motion (a
@@ -291,8 +294,8 @@ int main(int argc, char** argv) {
     if (!args.bag.empty()) spec.output.bag = args.bag;
     const flexmbd::Model model = flexmbd::BuildModel(spec);
     if (args.check_only) {
-      if (!args.csv.empty() && model.solver().analysis != flexmbd::SolverSpec::Analysis::kEigen) {
-        flexmbd::CsvSink(model, args.csv).Close();
+      if (!args.columns.empty() && model.solver().analysis != flexmbd::SolverSpec::Analysis::kEigen) {
+        flexmbd::CsvSink(model, args.columns).Close();
       }
       std::printf("flexmbd_run: %s and %s are valid\n", args.urdf.c_str(), args.config.c_str());
       return flexmbd::kExitSuccess;
