@@ -187,9 +187,12 @@ void Simulation::AdvanceTo(double t_until, double t_end, const SampleSink& sink)
   const SolverSpec& solver = model_.solver();
   const double sample_period = model_.output().rate_hz > 0 ? 1.0 / model_.output().rate_hz : 0.0;
   while (state_.t < std::min(t_until, t_end) - kTimeEpsilon * h_) {
-    // Steps land on t_end and on every breakpoint of the time functions before it, never across one.
+    // Steps land on t_end and on every breakpoint of the time functions before it, never across one, except one
+    // closer than dt_min: the step after a landing grows from the landing's size, and a table's 1e-9 s edge landed on
+    // left the run below dt_min.
     const std::vector<double>& breakpoints = model_.breakpoints();
-    const auto next_breakpoint = std::upper_bound(breakpoints.begin(), breakpoints.end(), state_.t + kTimeEpsilon * h_);
+    const auto next_breakpoint = std::upper_bound(breakpoints.begin(), breakpoints.end(),
+                                                  state_.t + std::max(kTimeEpsilon * h_, solver.dt_min));
     const bool to_breakpoint = next_breakpoint != breakpoints.end() && *next_breakpoint < t_end;
     const double t_land = to_breakpoint ? *next_breakpoint : t_end;
     double h = std::min(h_, solver.dt_max);
