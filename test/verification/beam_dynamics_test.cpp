@@ -268,7 +268,8 @@ TEST(BeamDynamics, EnergyDecayingSchemeDampsUnresolvedStrainModes) {
     const std::vector<double> e = UnresolvedAxialEnergies(rho_inf);
     ASSERT_EQ(e.size(), 42u);
     EXPECT_NEAR(std::pow(e[41] / e[21], 1.0 / 40.0), rho_inf, kRateTolerance) << "rho_inf " << rho_inf;
-    for (size_t k = 2; k < e.size(); ++k) EXPECT_LE(e[k], e[k - 1] * (1.0 + 1.0e-9)) << "step " << k;
+    // After the kick: its 1e-9 s fall lies in the second step, whose load still works.
+    for (size_t k = 3; k < e.size(); ++k) EXPECT_LE(e[k], e[k - 1] * (1.0 + 1.0e-9)) << "step " << k;
   }
 }
 
