@@ -56,8 +56,7 @@ class EnergyDecayingIntegrator : public TimeIntegrator {
   // The step from `start` (Step's work, from the start StartOf chose).
   StepResult SolveStep(const State& start, double h, State* end);
   // The state a step starts from: `given`, or, once a step from it much shorter than the one before was redone for
-  // a friction event or when a step landed on a time function's breakpoint there, `given` with its velocities
-  // projected onto the constraints (kept in projected_start_).
+  // a friction event, `given` with its velocities projected onto the constraints (kept in projected_start_).
   const State& StartOf(const State& given);
   // Asks every effect with modes whether the converged step contradicts its trial mode; true if any did.
   bool ReviseModes();

@@ -38,21 +38,6 @@ constexpr double kModeChatterShrink = 0.25;
 // of that step's impulse over its own size, and the slip reversal it saw in its end rates may be that mode's.
 constexpr double kShortStepFraction = 0.1;
 
-// A step that lands on a breakpoint ends there to round-off: t + (b - t) is within an ulp of b.
-constexpr double kLandingRoundOff = 1.0e-12;
-
-// True at a breakpoint of the time functions that a step landed on (Simulation::AdvanceTo restarted the history
-// there). A drive's rate may jump there, and the end rates of the step that landed carry the alternating mode of that
-// jump (a drive's 0.1 rad, 20 ms table blip left +-40 rad/s on a joint held at rest after it, 799 J of kinetic
-// energy): the step after it starts from the velocities projected onto the constraints, as after an impact.
-bool LandedOnBreakpoint(const Model& model, const State& start) {
-  if (start.history_steps != 0 || !(start.recent_h[0] > 0.0)) return false;
-  const std::vector<double>& breakpoints = model.breakpoints();
-  const double tolerance = kLandingRoundOff * std::max(1.0, std::abs(start.t));
-  const auto nearest = std::lower_bound(breakpoints.begin(), breakpoints.end(), start.t - tolerance);
-  return nearest != breakpoints.end() && *nearest <= start.t + tolerance;
-}
-
 bool SameModes(const std::vector<EffectState>& a, const std::vector<EffectState>& b) {
   for (size_t k = 0; k < a.size(); ++k) {
     if (a[k].mode != b[k].mode) return false;
@@ -203,7 +188,7 @@ StepResult EnergyDecayingIntegrator::Step(const State& given, double h, State* e
 }
 
 const State& EnergyDecayingIntegrator::StartOf(const State& given) {
-  if (given.t != short_event_start_ && !LandedOnBreakpoint(model_, given)) return given;
+  if (given.t != short_event_start_) return given;
   projected_start_ = given;
   const std::vector<bool> nothing_held(held_.size(), false);
   return projection_.Apply(&projected_start_, nothing_held) ? projected_start_ : given;
