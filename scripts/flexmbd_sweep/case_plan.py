@@ -1,11 +1,13 @@
 """Expands a sweep into cases, writes each case's merged YAML and the plan every backend runs from."""
 
+import difflib
 import itertools
 import json
 import os
 import subprocess
 
 from .config_paths import scale_path, set_path
+from .csv_metrics import METRIC_KINDS
 from .errors import SweepError
 from .yaml_io import dump_yaml, load_yaml
 
@@ -47,15 +49,33 @@ def merged_config(spec, base, combination):
     return config
 
 
-def check_case(runner, urdf, config_path, where):
-    """Has flexmbd_run load and build the case without running it; its refusal becomes a SweepError."""
+def check_case(runner, urdf, config_path, where, columns_path):
+    """Has flexmbd_run load and build the case without running it, writing its CSV header to `columns_path`; its
+    refusal becomes a SweepError. Returns the CSV's columns, or None when the case writes no such CSV (eigen)."""
     try:
-        done = subprocess.run([runner, '--urdf', urdf, '--config', config_path, '--check'],
+        done = subprocess.run([runner, '--urdf', urdf, '--config', config_path, '--check', '--columns', columns_path],
                               stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, check=False)
     except OSError as error:
         raise SweepError(f'cannot run the runner {runner}: {error.strerror}') from None
     if done.returncode != 0:
         raise SweepError(f'{where}: the runner rejects this case: {done.stderr.strip()}')
+    if not os.path.exists(columns_path):
+        return None
+    with open(columns_path, encoding='utf-8') as stream:
+        return stream.readline().strip().split(',')
+
+
+def check_metric_columns(spec, columns, where):
+    """Every column the CSV metrics read must be one the case writes: a misspelt one fails here, before any case
+    runs, with the closest column suggested."""
+    for name, entry in spec.csv_metrics.items():
+        for column in METRIC_KINDS[entry['kind']].columns(entry):
+            if column in columns:
+                continue
+            closest = difflib.get_close_matches(column, columns, n=1)
+            hint = f"; did you mean {closest[0]!r}?" if closest else ''
+            raise SweepError(f'{spec.sweep_file}: metrics.csv.{name}: {column!r} is not a column of the CSV of '
+                             f'{where}{hint}')
 
 
 def write_plan(spec, runner, out_dir):
@@ -71,7 +91,11 @@ def write_plan(spec, runner, out_dir):
         dump_yaml(merged_config(spec, base, combination), config_path)
         values = {parameter.name: value for parameter, value in combination}
         described = ', '.join(f'{p.field} = {v!r}' for p, v in combination)
-        check_case(runner, spec.urdf, config_path, f'{spec.sweep_file}: case {index} ({described})')
+        where = f'case {index} ({described})'
+        columns = check_case(runner, spec.urdf, config_path, f'{spec.sweep_file}: {where}',
+                             os.path.join(directory, 'columns.csv'))
+        if columns is not None:
+            check_metric_columns(spec, columns, where)
         cases.append({'index': index, 'dir': directory, 'config': config_path, 'parameters': values})
     plan = {'sweep_file': os.path.abspath(spec.sweep_file), 'runner': runner, 'urdf': spec.urdf,
             'runner_metrics': spec.runner_metrics, 'csv_metrics': spec.csv_metrics,

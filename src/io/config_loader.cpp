@@ -21,7 +21,7 @@ ModelSpec LoadModelSpec(const std::string& urdf_path, const std::string& yaml_pa
 
 ModelSpec LoadModelSpecFromStrings(const std::string& urdf_xml, const std::string& urdf_name, const YAML::Node& params,
                                    const std::string& params_name) {
-  io::UrdfModel model = io::ReadUrdf(urdf_xml, urdf_name, io::BeamLinkNames(params, params_name));
+  io::UrdfModel model = io::ReadUrdf(urdf_xml, urdf_name, io::BeamLinkNames(params, params_name), params_name);
   io::ApplyYamlOverlay(params, params_name, &model);
   io::PlaceBodies(model.free_bodies, &model.spec);
   model.spec.source = params_name.empty() ? urdf_name : urdf_name + " + " + params_name;

@@ -267,14 +267,14 @@ class UrdfWalker {
 }  // namespace
 
 UrdfModel ReadUrdf(const std::string& urdf_xml, const std::string& urdf_name,
-                   const std::set<std::string>& beam_links) {
+                   const std::set<std::string>& beam_links, const std::string& beam_links_file) {
   const UrdfTreeOwner urdf(ParseUrdf(urdf_xml, urdf_name));
   CheckUrdfTree(*urdf, urdf_name);
   for (const std::string& beam : beam_links) {
     if (!urdf->getLink(beam)) {
       std::vector<std::string> links;
       for (const auto& link : urdf->links_) links.push_back(link.first);
-      throw ConfigError(urdf_name + ": beams." + QuoteForMessage(beam) + ": " +
+      throw ConfigError(QuoteForMessage(beam_links_file + ": beams." + beam + ": ") +
                         NotFoundMessage("link", "links", beam, urdf_name, links));
     }
   }

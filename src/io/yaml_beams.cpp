@@ -61,7 +61,8 @@ void ReadSection(const Field& section, BeamSectionSpec* spec) {
   spec->stiffness = ReadStiffness(section);
   RequireKey(section, "m", "the mass per length m [kg/m]");
   spec->mass_per_length = ReadNumber(section.Child("m"), Quantity{"a mass per length", Bound::kPositive, "kg/m"});
-  OverlayVec3(section, "m_ii", Quantity{"mass moments per length", Bound::kNonNegative, "kg m"},
+  OverlayVec3(section, "m_ii",
+              Quantity{"mass moments per length", Bound::kNonNegative, "kg m", "[torsional, about y, about z]"},
               &spec->inertia_per_length);
   if (section.Child("offsets").present()) ReadOffsets(section.Child("offsets"), spec);
 }

@@ -200,7 +200,7 @@ std::string ReadString(const Field& field, const std::string& what) {
 }
 
 Vec3 ReadVec3(const Field& field, const Quantity& quantity) {
-  const std::string expected = "expected [x, y, z], " + Expected(quantity);
+  const std::string expected = "expected " + quantity.components + ", " + Expected(quantity);
   if (!field.node().IsSequence()) field.Fail(field.Describe() + " is not a list; " + expected);
   if (field.node().size() != 3) {
     field.Fail(field.Text() + " has " + std::to_string(field.node().size()) + " entries; " + expected);

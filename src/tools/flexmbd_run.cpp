@@ -1,7 +1,9 @@
 // Command-line runner: runs a case without roscore.
-//   flexmbd_run --urdf F --config F [--csv F] [--bag F] [--check]
+//   flexmbd_run --urdf F --config F [--csv F] [--bag F] [--check [--columns F]]
 // --csv and --bag override output.csv and output.bag; the bag is the one the node writes (docs/ros.md).
-// --check loads and builds the model and exits without running it (scripts/sweep.py checks every case first).
+// --check loads and builds the model and exits without running it (scripts/sweep.py checks every case first); with
+// --columns F it writes to F the CSV's header row, the columns a run would write (not for an eigen-analysis), so that
+// a sweep's metrics can be checked against them before any case runs.
 // Exit status (flexmbd/common/exit_status.hpp): 0 success, 1 usage error, 2 bad input (ConfigError), 3 the run
 // failed (SolverError, or an output file that cannot be written), 4 an unexpected error (a bug); every failure
 // prints one line on stderr.
@@ -16,6 +18,7 @@
 #include "flexmbd/common/error.hpp"
 #include "flexmbd/common/exit_status.hpp"
 #include "flexmbd/io/config_loader.hpp"
+#include "flexmbd/io/csv_sink.hpp"
 #include "flexmbd/ros/sample_fan_out.hpp"
 #include "flexmbd/io/text_file.hpp"
 #include "flexmbd/ros/transform_frames.hpp"
@@ -32,11 +35,13 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-constexpr char kUsage[] = "usage: flexmbd_run --urdf FILE --config FILE [--csv FILE] [--bag FILE] [--check]\n";
+constexpr char kUsage[] =
+    "usage: flexmbd_run --urdf FILE --config FILE [--csv FILE] [--bag FILE] [--check [--columns FILE]]\n";
 
 struct Arguments {
   std::string urdf, config, csv, bag;
   bool check_only = false;
+  std::string columns;  ///< with --check: where to write the CSV's header row
 };
 
 bool Parse(int argc, char** argv, Arguments* args) {
@@ -52,9 +57,10 @@ bool Parse(int argc, char** argv, Arguments* args) {
     else if (flag == "--config") args->config = value;
     else if (flag == "--csv") args->csv = value;
     else if (flag == "--bag") args->bag = value;
+    else if (flag == "--columns") args->columns = value;
     else return false;
   }
-  return !args->urdf.empty();
+  return !args->urdf.empty() && (args->columns.empty() || args->check_only);
 }
 
 // output.cycle_from: keeps every joint variable's samples from that time on and reports the settled motion (a
@@ -295,6 +301,9 @@ int main(int argc, char** argv) {
     if (!args.bag.empty()) spec.output.bag = args.bag;
     const flexmbd::Model model = flexmbd::BuildModel(spec);
     if (args.check_only) {
+      if (!args.columns.empty() && model.solver().analysis != flexmbd::SolverSpec::Analysis::kEigen) {
+        flexmbd::CsvSink(model, args.columns).Close();
+      }
       std::printf("flexmbd_run: %s and %s are valid\n", args.urdf.c_str(), args.config.c_str());
       return flexmbd::kExitSuccess;
     }

@@ -65,6 +65,25 @@ TEST(BeamConfig, NegativeSectionStiffnessNamesTheField) {
   EXPECT_NE(message.find("arm.yaml: beams.arm.section.EI3: -1.0 is negative; expected a stiffness EI3 > 0 [N m^2]"), std::string::npos) << message;
 }
 
+TEST(BeamConfig, UnknownBeamLinkIsAFieldOfTheYamlThatNamesIt) {
+  // Reference: the loader's convention for a YAML field (file: path: what); the link is missing from the URDF, which
+  // the message names as where it was looked for. It once carried the URDF's name as its file.
+  std::string yaml = kArmYaml;
+  yaml.replace(yaml.find("arm:"), 4, "armm:");
+  const std::string message = ConfigErrorOf([&] { LoadDataUrdf("beam_arm.urdf", yaml, "arm.yaml"); });
+  EXPECT_EQ(message, "arm.yaml: beams.armm: no link 'armm' in beam_arm.urdf; links are: arm, tip, world; did you "
+                     "mean 'arm'?");
+}
+
+TEST(BeamConfig, MassMomentsOfTheWrongLengthAreNamedAsTheSchemaNamesThem) {
+  // Reference: docs/config.md, beams: m_ii = [torsional, about y, about z]; not the [x, y, z] of a vector in space.
+  std::string yaml = kArmYaml;
+  yaml.replace(yaml.find("m_ii: [0.002, 0.001, 0.001]"), 27, "m_ii: [0.002, 0.001]");
+  const std::string message = ConfigErrorOf([&] { LoadDataUrdf("beam_arm.urdf", yaml, "arm.yaml"); });
+  EXPECT_EQ(message, "arm.yaml: beams.arm.section.m_ii: [0.002, 0.001] has 2 entries; expected [torsional, about y, "
+                     "about z], mass moments per length >= 0 [kg m]");
+}
+
 TEST(BeamConfig, ZeroElementsIsRejected) {
   std::string yaml = kArmYaml;
   yaml.replace(yaml.find("elements: 2"), 11, "elements: 0");

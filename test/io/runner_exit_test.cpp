@@ -248,6 +248,19 @@ TEST(RunnerExit, CheckLoadsTheCaseAndExitsZeroWithoutRunning) {
   EXPECT_FALSE(std::ifstream(csv).good()) << "--check ran the case and wrote " << csv;
 }
 
+TEST(RunnerExit, CheckWithColumnsWritesTheCsvHeaderAndNoSample) {
+  // scripts/sweep.py checks its metrics' columns against this header before any case runs.
+  const std::string columns = testing::TempDir() + "check_columns.csv";
+  const RunOutcome out = RunRunner("--urdf " + Data("urdf/pendulum.urdf") + " --config " + Data("yaml/pendulum.yaml") +
+                                   " --check --columns " + columns);
+  EXPECT_EQ(out.exit_status, 0) << out.stderr_text;
+  std::ifstream file(columns);
+  std::string header, row;
+  std::getline(file, header);
+  EXPECT_EQ(header.rfind("t,joint.B1.position,joint.B1.velocity,joint.B1.effort,", 0), 0u) << header;
+  EXPECT_FALSE(std::getline(file, row)) << row;
+}
+
 TEST(RunnerExit, CheckOfBadInputExitsWithTwoAndNamesField) {
   const std::string yaml = WriteFile("check_negative_k.yaml", "joints:\n  B1:\n    spring: {k: -3.0}\n");
   const RunOutcome out = RunRunner("--check --urdf " + Data("urdf/pendulum.urdf") + " --config " + yaml);

@@ -233,23 +233,18 @@ TEST(TimeFunction, TableRateJumpsAtItsKinksAndItsHeldEnds) {
   ExpectJump(RateJumpNear(f, 3.0 - 0.1 * kSameInstant, kSameInstant), 3.0, -0.5, 0.0);
   EXPECT_FALSE(RateJumpNear(f, 4.0, kSameInstant).has_value());
   EXPECT_FALSE(RateJumpNear(f, 2.0, kSameInstant).has_value());
-  ExpectJump(NextRateJump(f, -1.0, kSameInstant), 0.0, 0.0, 2.0);
-  ExpectJump(NextRateJump(f, 0.0, kSameInstant), 1.0, 2.0, -0.5);
-  ExpectJump(NextRateJump(f, 1.0 - 0.1 * kSameInstant, kSameInstant), 3.0, -0.5, 0.0);
-  EXPECT_FALSE(NextRateJump(f, 3.0, kSameInstant).has_value());
 }
 
 TEST(TimeFunction, LinearRampAndSineRateJumpWhereTheyStartAndStop) {
   // Reference: the linear ramp turns its rate (2.5 - 0.5) / 2 = 1 on at start = 1 and off at start + duration = 3;
   // the sine starts at 0.5 at its rate amplitude 2 pi frequency cos(phase).
   const TimeFunctionSpec ramp = Ramp(Kind::kLinearRamp);
-  ExpectJump(NextRateJump(ramp, 0.0, kSameInstant), 1.0, 0.0, 1.0);
-  ExpectJump(NextRateJump(ramp, 1.0, kSameInstant), 3.0, 1.0, 0.0);
+  ExpectJump(RateJumpNear(ramp, 1.0, kSameInstant), 1.0, 0.0, 1.0);
   ExpectJump(RateJumpNear(ramp, 3.0, kSameInstant), 3.0, 1.0, 0.0);
-  EXPECT_FALSE(NextRateJump(ramp, 3.0, kSameInstant).has_value());
+  EXPECT_FALSE(RateJumpNear(ramp, 2.0, kSameInstant).has_value());
   const TimeFunctionSpec sine = Sine();
-  ExpectJump(NextRateJump(sine, 0.0, kSameInstant), 0.5, 0.0, 1.5 * 2.0 * M_PI * 0.75 * std::cos(0.4));
-  EXPECT_FALSE(NextRateJump(sine, 0.5, kSameInstant).has_value());
+  ExpectJump(RateJumpNear(sine, 0.5, kSameInstant), 0.5, 0.0, 1.5 * 2.0 * M_PI * 0.75 * std::cos(0.4));
+  EXPECT_FALSE(RateJumpNear(sine, 1.0, kSameInstant).has_value());
 }
 
 TEST(TimeFunction, SmoothLawsHaveNoRateJump) {
@@ -258,9 +253,21 @@ TEST(TimeFunction, SmoothLawsHaveNoRateJump) {
   // stepped as before rate jumps were handled.
   for (Kind kind : {Kind::kCosineRamp, Kind::kRateRamp, Kind::kConstant}) {
     const TimeFunctionSpec f = Ramp(kind);
-    EXPECT_FALSE(NextRateJump(f, -1.0, kSameInstant).has_value());
     for (double t : {1.0, 3.0}) EXPECT_FALSE(RateJumpNear(f, t, kSameInstant).has_value()) << "t " << t;
   }
+}
+
+TEST(TimeFunction, BreakpointsAreWhereTheValueOrItsFirstTwoRatesJump) {
+  // Reference: the formulas of the header: a linear ramp kinks at its start and end, a cosine ramp's f'' jumps there
+  // (by +-(value - offset) (pi/duration)^2 / 2), a sine's rate jumps at its start, a table kinks at every abscissa; a
+  // rate ramp's f'' = value (pi/duration) sin(pi s)/2 is continuous, and a constant has none (exact).
+  using Times = std::vector<double>;
+  EXPECT_EQ(Breakpoints(Ramp(Kind::kLinearRamp)), (Times{1.0, 3.0}));
+  EXPECT_EQ(Breakpoints(Ramp(Kind::kCosineRamp)), (Times{1.0, 3.0}));
+  EXPECT_EQ(Breakpoints(Sine()), (Times{0.5}));
+  EXPECT_EQ(Breakpoints(Table()), (Times{0.0, 1.0, 3.0, 4.0}));
+  EXPECT_TRUE(Breakpoints(Ramp(Kind::kRateRamp)).empty());
+  EXPECT_TRUE(Breakpoints(TimeFunctionSpec()).empty());
 }
 
 }  // namespace time_function_test

@@ -262,10 +262,14 @@ TEST(BeamDynamics, EnergyDecayingSchemeDampsUnresolvedStrainModes) {
   // tolerance leaves (1e-9 relative).
   constexpr double kRateTolerance = 0.01;
   for (double rho_inf : {0.6, 0.8}) {
+    // The initial sample and 41 steps: the first lands on the kick's end (docs/theory.md, "Breakpoints"; its 1e-9 s
+    // fall, closer than dt_min, is stepped across), 39 of 0.1 s follow, and the last is cut to end at t_end; the rate
+    // is taken over the last 20.
     const std::vector<double> e = UnresolvedAxialEnergies(rho_inf);
-    ASSERT_EQ(e.size(), 41u);
-    EXPECT_NEAR(std::pow(e[40] / e[20], 1.0 / 40.0), rho_inf, kRateTolerance) << "rho_inf " << rho_inf;
-    for (size_t k = 2; k < e.size(); ++k) EXPECT_LE(e[k], e[k - 1] * (1.0 + 1.0e-9)) << "step " << k;
+    ASSERT_EQ(e.size(), 42u);
+    EXPECT_NEAR(std::pow(e[41] / e[21], 1.0 / 40.0), rho_inf, kRateTolerance) << "rho_inf " << rho_inf;
+    // After the kick: its 1e-9 s fall lies in the second step, whose load still works.
+    for (size_t k = 3; k < e.size(); ++k) EXPECT_LE(e[k], e[k - 1] * (1.0 + 1.0e-9)) << "step " << k;
   }
 }
 

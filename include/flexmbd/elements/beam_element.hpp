@@ -56,6 +56,7 @@ class BeamElement : public Element {
     Eigen::Matrix<double, 6, 1> strain;  ///< [eps; kappa], section frame [-, 1/m]
     Eigen::Matrix<double, 6, 1> load;    ///< [N; M] = C strain, the elastic part, section frame [N, N m]
     Vec3 x = Vec3::Zero();               ///< position of the beam axis [m]
+    Vec3 v = Vec3::Zero();               ///< its velocity, sum_k N_k v_k, in W [m/s]
     Mat3 R = Mat3::Identity();           ///< section frame in W
   };
   /// The section at distance s from the element's first node, 0 <= s <= length [m].

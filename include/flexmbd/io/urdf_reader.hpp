@@ -43,11 +43,12 @@ struct UrdfModel {
 /// Reads a URDF. The links named in `beam_links` become beams (BeamSpec with only name and frame set; their
 /// <inertial>, if any, is not used: the beam's section gives its mass). Throws ConfigError naming
 /// `urdf_name` if urdfdom cannot parse it, if its links are not one tree or a name would break the CSV
-/// (CheckUrdfTree), if a beam link is not in it, if nothing can move (no body and no beam), if a link that
-/// moves has no <inertial>, if a mass is not positive or an inertia not positive semi-definite, or if a
-/// damping is negative. The tree is walked without recursion.
+/// (CheckUrdfTree), if nothing can move (no body and no beam), if a link that moves has no <inertial>, if a mass
+/// is not positive or an inertia not positive semi-definite, or if a damping is negative; and naming the field
+/// beams.<link> of `beam_links_file` (the YAML that names them) if a beam link is not in it. The tree is walked
+/// without recursion.
 UrdfModel ReadUrdf(const std::string& urdf_xml, const std::string& urdf_name,
-                   const std::set<std::string>& beam_links = {});
+                   const std::set<std::string>& beam_links = {}, const std::string& beam_links_file = "");
 
 /// Sizes a joint's initial_position, initial_velocity and effects to NumJointVariables(type), keeping the
 /// entries of the variables it already had and zero-filling new ones.

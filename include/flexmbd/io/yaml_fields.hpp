@@ -62,6 +62,7 @@ struct Quantity {
   std::string name;
   Bound bound = Bound::kAny;
   std::string unit;  ///< SI unit; empty for a plain number
+  std::string components = "[x, y, z]";  ///< a vector's entries, as docs/config.md names them (ReadVec3)
 };
 
 /// "a stiffness >= 0 [N m/rad]".

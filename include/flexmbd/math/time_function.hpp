@@ -3,6 +3,7 @@
 /// Scalar time functions for drives and loads (docs/config.md, "time functions").
 
 #include <optional>
+#include <vector>
 
 #include "flexmbd/model/model_spec.hpp"
 
@@ -31,7 +32,9 @@ struct RateJump {
 /// ends too, where it is held), a sine's start at a nonzero rate. Cosine and rate ramps have none.
 std::optional<RateJump> RateJumpNear(const TimeFunctionSpec& f, double t, double tolerance);
 
-/// The first jump of df/dt later than t + tolerance, if there is one.
-std::optional<RateJump> NextRateJump(const TimeFunctionSpec& f, double t, double tolerance);
+
+/// The instants where f, f' or f'' jumps [s], increasing: a ramp's start and end (a rate ramp's f'' is continuous:
+/// none), a sine's start, a table's abscissae. The steps of a run land on them (docs/theory.md, "Breakpoints").
+std::vector<double> Breakpoints(const TimeFunctionSpec& f);
 
 }  // namespace flexmbd

@@ -131,6 +131,10 @@ class Model {
   /// True if a drive prescribes the motion of `variable` (it then takes set-points, State::commands).
   bool driven(int variable) const { return driven_[variable]; }
 
+  /// The breakpoints of every time function (drives, load scales, the gust's scale), increasing, each once [s]: a
+  /// run's steps land on them (docs/theory.md, "Breakpoints").
+  const std::vector<double>& breakpoints() const { return breakpoints_; }
+
   const SolverSpec& solver() const { return solver_; }
   const OutputSpec& output() const { return output_; }
   const State& initial_state() const { return initial_state_; }
@@ -167,6 +171,7 @@ class Model {
   std::vector<bool> driven_;  ///< per variable
   std::vector<std::string> multiplier_names_;
   std::vector<std::string> element_state_names_;  ///< "<owner> <state name>", per element state
+  std::vector<double> breakpoints_;
   SolverSpec solver_;
   OutputSpec output_;
   State initial_state_;

@@ -35,6 +35,8 @@ struct BeamStationSample {
   Vec6 strain = Vec6::Zero();     ///< strains and curvatures (eps1, gamma2, gamma3, kappa1..3), section frame [-, 1/m]
   Vec3 displacement = Vec3::Zero();  ///< of the beam axis from its initial position, in W [m]
   Vec3 rotation = Vec3::Zero();      ///< rotation vector of R_W(s) R_W0(s)^T, in W [rad]
+  Vec3 velocity = Vec3::Zero();      ///< of the beam axis, in W [m/s]: the displacement's slope between samples (not
+                                     ///< written to the sinks)
 };
 
 /// One aero section (aero.sections) at a sample: the loads of TypicalSectionAero::SectionLoads over its span, as
@@ -85,7 +87,9 @@ EnergyTally StateEnergy(const Model& model, const State& state);
 /// The sample at a state; efforts and reactions come from the multipliers evaluated in `ctx`.
 OutputSample MakeSample(const Model& model, const State& state, const StepContext& ctx, double dt, int iterations);
 
-/// Linear interpolation between two samples at time t in [a.t, b.t].
+/// The sample at time t in [a.t, b.t] between two samples: linear, except beam stations' displacements (cubic Hermite
+/// from their end velocities) and rotations (on SO(3), at a constant rate from a's to b's) (docs/theory.md, "Station
+/// outputs").
 OutputSample Interpolate(const OutputSample& a, const OutputSample& b, double t);
 
 }  // namespace flexmbd

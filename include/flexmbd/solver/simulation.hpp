@@ -47,8 +47,8 @@ class Simulation {
   void Begin(const SampleSink& sink);
 
   /// Takes steps until the state reaches t_until, emitting every sample due on the way. Steps are not cut to
-  /// land on t_until (the output never limits the step) except the last one before t_end; steps also end where a
-  /// drive's law jumps in rate (NextDriveRateJump). Call after Begin;
+  /// land on t_until (the output never limits the step), only on t_end and on the time functions' breakpoints before
+  /// it (Model::breakpoints), after which the error estimate restarts. Call after Begin;
   /// calls may follow one another (pause and resume between them). Throws SolverError when it cannot go on.
   void AdvanceTo(double t_until, double t_end, const SampleSink& sink);
 

@@ -359,7 +359,10 @@ BeamElement::Section BeamElement::SectionAt(const State& state, double s) const 
   const BeamShape point = PointShape(shape_.order, length_, 2.0 * s / length_ - 1.0);
   Section section;
   section.R = Field(point, c, Field::Order::kStrains).SectionRotation(0);
-  for (int k = 0; k < shape_.num_nodes(); ++k) section.x += point.N[0][k] * c.x[k];
+  for (int k = 0; k < shape_.num_nodes(); ++k) {
+    section.x += point.N[0][k] * c.x[k];
+    section.v += point.N[0][k] * state.nodes[nodes_[k]].v;
+  }
   // Strains are recovered at the Gauss points, where the reduced rule makes them accurate (the shear strains
   // between them carry the parasitic part that reduced integration removes from the energy), and carried to
   // s by the polynomial through them (docs/theory.md, "Station outputs").

@@ -98,19 +98,21 @@ std::optional<RateJump> RateJumpNear(const TimeFunctionSpec& f, double t, double
   return std::nullopt;
 }
 
-std::optional<RateJump> NextRateJump(const TimeFunctionSpec& f, double t, double tolerance) {
-  if (f.kind == TimeFunctionSpec::Kind::kTable) {
-    FLEXMBD_DEMAND(!f.times.empty() && f.times.size() == f.values.size());
-    for (auto later = std::upper_bound(f.times.begin(), f.times.end(), t + tolerance); later != f.times.end();
-         ++later) {
-      if (std::optional<RateJump> kink = TableKink(f, static_cast<size_t>(later - f.times.begin()))) return kink;
-    }
-    return std::nullopt;
+std::vector<double> Breakpoints(const TimeFunctionSpec& f) {
+  using Kind = TimeFunctionSpec::Kind;
+  switch (f.kind) {
+    case Kind::kConstant:
+    case Kind::kRateRamp:
+      return {};
+    case Kind::kLinearRamp:
+    case Kind::kCosineRamp:
+      return {f.start, f.start + f.duration};
+    case Kind::kSine:
+      return {f.start};
+    case Kind::kTable:
+      return f.times;
   }
-  for (const RateJump& jump : FewRateJumps(f)) {
-    if (jump.t > t + tolerance) return jump;
-  }
-  return std::nullopt;
+  return {};
 }
 
 }  // namespace flexmbd

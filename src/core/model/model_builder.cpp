@@ -5,6 +5,7 @@
 
 #include "flexmbd/common/error.hpp"
 #include "flexmbd/elements/applied_load.hpp"
+#include "flexmbd/math/time_function.hpp"
 #include "flexmbd/model/beam_layout.hpp"
 #include "flexmbd/model/eigen_size.hpp"
 #include "flexmbd/model/model.hpp"
@@ -81,6 +82,25 @@ std::vector<BeamStationInfo> LocateBeamStations(const ModelSpec& spec, const std
   }
   return located;
 }
+// The breakpoints of every time function of the model, increasing, each once (Model::breakpoints).
+std::vector<double> TimeFunctionBreakpoints(const ModelSpec& spec) {
+  std::vector<double> all;
+  auto add = [&all](const TimeFunctionSpec& f) {
+    const std::vector<double> own = Breakpoints(f);
+    all.insert(all.end(), own.begin(), own.end());
+  };
+  for (const JointSpec& joint : spec.joints) {
+    for (const VariableEffectsSpec& effects : joint.effects) {
+      for (const TimeFunctionSpec& drive : effects.drives) add(drive);
+    }
+  }
+  for (const LoadSpec& load : spec.loads) add(load.scale);
+  add(spec.aero_flow.gust_scale);
+  std::sort(all.begin(), all.end());
+  all.erase(std::unique(all.begin(), all.end()), all.end());
+  return all;
+}
+
 }  // namespace
 
 std::string Model::DescribeUnknown(int unknown) const {
@@ -112,6 +132,7 @@ Model BuildModel(const ModelSpec& spec) {
   model.source_ = spec.source;
   model.solver_ = spec.solver;
   model.output_ = spec.output;
+  model.breakpoints_ = TimeFunctionBreakpoints(spec);
   std::map<std::string, int> body_index;
   for (const BodySpec& body : spec.bodies) {
     ValidateBody(spec, body);

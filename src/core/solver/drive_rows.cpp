@@ -4,7 +4,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 
 #include "flexmbd/common/error.hpp"
 #include "flexmbd/effects/variable_effects.hpp"
@@ -47,17 +46,6 @@ Eigen::VectorXd DriveRates(const Model& model, const State& state, RateSide side
     }
   }
   return rates;
-}
-
-double NextDriveRateJump(const Model& model, const State& state) {
-  double next = std::numeric_limits<double>::infinity();
-  for (const auto& element : model.elements()) {
-    const auto* drive = dynamic_cast<const VariableDrive*>(element.get());
-    if (drive == nullptr || state.commands[drive->variable()].has_setpoint) continue;
-    const std::optional<RateJump> jump = NextRateJump(drive->law(), state.t, SameInstantTolerance(state.t));
-    if (jump) next = std::min(next, jump->t);
-  }
-  return next;
 }
 
 }  // namespace flexmbd

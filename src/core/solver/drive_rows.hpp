@@ -27,8 +27,4 @@ enum class RateSide { kBefore, kAfter };
 /// without a drive [rad/s or m/s].
 Eigen::VectorXd DriveRates(const Model& model, const State& state, RateSide side);
 
-/// The first instant after state.t at which the law of a drive that follows its law (not a set-point) jumps in rate:
-/// steps end there rather than step across it. Infinity if there is none.
-double NextDriveRateJump(const Model& model, const State& state);
-
 }  // namespace flexmbd

@@ -189,13 +189,23 @@ void Simulation::AdvanceTo(double t_until, double t_end, const SampleSink& sink)
   const SolverSpec& solver = model_.solver();
   const double sample_period = model_.output().rate_hz > 0 ? 1.0 / model_.output().rate_hz : 0.0;
   while (state_.t < std::min(t_until, t_end) - kTimeEpsilon * h_) {
+    // Steps land on t_end and on every breakpoint of the time functions before it, never across one, except one
+    // closer than dt_min: the step after a landing grows from the landing's size, and a table's 1e-9 s edge landed on
+    // left the run below dt_min.
+    const std::vector<double>& breakpoints = model_.breakpoints();
+    const auto next_breakpoint = std::upper_bound(breakpoints.begin(), breakpoints.end(),
+                                                  state_.t + std::max(kTimeEpsilon * h_, solver.dt_min));
+    const bool to_breakpoint = next_breakpoint != breakpoints.end() && *next_breakpoint < t_end;
+    const double t_land = to_breakpoint ? *next_breakpoint : t_end;
     double h = std::min(h_, solver.dt_max);
-    // Steps end where a drive's law jumps in rate rather than step across it (docs/theory.md, "Jumps of a drive's
-    // rate"), as they end at t_end.
-    const double landing = std::min(t_end, NextDriveRateJump(model_, state_));
-    if (landing - state_.t - h < kSliverFraction * h) h = landing - state_.t;
+    if (t_land - state_.t - h < kSliverFraction * h) h = t_land - state_.t;
     const StepResult result = TryStep(h);
     const double h_next = controller_.Next(h, result);
+    // Past a breakpoint the motion's derivatives jump: the error estimate and the scheme's dissipation restart their
+    // history there, as after an impact.
+    if (result.status == StepStatus::kAccepted && to_breakpoint && state_.t >= t_land - kTimeEpsilon * h) {
+      state_.history_steps = 0;
+    }
     if (result.status == StepStatus::kAccepted) {
       const OutputSample current = MakeSample(model_, state_, integrator_->last_context(), h, result.newton.iterations);
       if (sample_period == 0) {

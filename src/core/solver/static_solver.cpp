@@ -86,6 +86,17 @@ bool OpenPullingStops(const Model& model, const State& equilibrium, State* start
   return opened;
 }
 
+// Elastic stops that the equilibrium presses (a negative gap) are in contact, the mode a step ending there would commit
+// (ElasticStop::Commit), as the rigid stops that hold are closed: a run started from the equilibrium has each contact
+// from its start (Simulation::Begin).
+void MarkPressedElasticStops(const Model& model, State* state) {
+  for (const JointStop* stop : ElasticStops(model)) {
+    EffectState& effect = state->effects[stop->slot()];
+    if (effect.mode == JointStop::kRetracted) continue;
+    effect.mode = stop->Gap(state->q[stop->variable()]) < 0.0 ? JointStop::kContact : JointStop::kOpen;
+  }
+}
+
 StaticResult SolveLoadSteps(const Model& model, SparseSystem* system, State* state) {
   StepContextBuilder builder(model);
   builder.set_geometric_stiffness(true);
@@ -136,6 +147,7 @@ StaticResult SolveLoadSteps(const Model& model, SparseSystem* system, State* sta
   }
   state->qdot = JointRates(model, *state);
   state->element_state_rates.setZero();
+  MarkPressedElasticStops(model, state);
   result.converged = true;
   return result;
 }

@@ -72,6 +72,14 @@ class SweepLocal(unittest.TestCase):
         self.assert_bad_input(run_sweep(sweep, self.out_dir), sweep, 'case 1 (grid.solver.t_end = -1.0)',
                               'solver.t_end')
 
+    def test_misspelt_metric_column_is_refused_before_any_case_runs_with_the_closest_column(self):
+        # Once found only after every case ran: each row failed, with the runner's exit code 0.
+        metrics = {'csv': {'peak_deg': {'kind': 'peak_abs', 'column': 'joint.B1.positon'}}}
+        sweep = self.sweep_file(metrics=metrics)
+        self.assert_bad_input(run_sweep(sweep, self.out_dir), sweep, "metrics.csv.peak_deg: 'joint.B1.positon' is "
+                              "not a column", "did you mean 'joint.B1.position'?")
+        self.assertFalse(os.path.exists(os.path.join(self.out_dir, 'cases', '000', 'run.csv')))
+
     def test_missing_base_file_names_the_field(self):
         sweep = self.sweep_file(base={'urdf': '/nonexistent/pendulum.urdf', 'config': 'pendulum.yaml'})
         self.assert_bad_input(run_sweep(sweep, self.out_dir), sweep, 'base.urdf', 'no such file')
