@@ -67,7 +67,6 @@ class Joint : public Element {
     std::array<NodeStep, 2> nodes;
     int num_nodes = 0;
     Variables q_i, q_f;
-    bool over_a_step = false;  ///< a dynamic step (not the end configuration of statics or an end-point scheme)
   };
   // Constraint rows at f, their exact discrete gradient G and, if asked for, their derivative D w.r.t. the
   // local increments. Fixed capacity: evaluating allocates nothing.
@@ -78,10 +77,6 @@ class Joint : public Element {
   };
   Evaluation Evaluate(const Sides& sides, bool with_derivative, const PathDirection& direction = {}) const;
   Sides GatherSides(const StepContext& ctx) const;
-  // Over a step between two nodes: the rotation rows' G made blind to a rigid rotation of both sides, so that
-  // their torques on the two nodes balance (angular momentum) while G still gives the rows' change exactly;
-  // with a direction, G_variation made the variation of that G.
-  void BalanceRotationRowTorques(const Sides& sides, const PathDirection& direction, Evaluation* e) const;
   Eigen::Ref<const Eigen::VectorXd> Multipliers(const StepContext& ctx) const;  ///< a view into ctx.lambda
 
   std::string name_;

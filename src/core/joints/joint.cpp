@@ -3,7 +3,6 @@
 #include <cmath>
 
 #include "flexmbd/common/error.hpp"
-#include "flexmbd/joints/rigid_rotation_projection.hpp"
 
 namespace flexmbd {
 namespace {
@@ -43,7 +42,6 @@ Joint::Sides Joint::GatherSides(const StepContext& ctx) const {
     sides.q_i[k] = (*ctx.variables)[first_variable_ + k].q_i;
     sides.q_f[k] = (*ctx.variables)[first_variable_ + k].q_f;
   }
-  sides.over_a_step = !ctx.at_end();
   return sides;
 }
 
@@ -99,45 +97,7 @@ Joint::Evaluation Joint::Evaluate(const Sides& sides, bool with_derivative, cons
     if (with_derivative) e.D.block<3, 1>(3, k) = Axial(C.derivative(k));
     if (varied && C.has_variation && C.depends_on(k)) e.G_variation.block<3, 1>(3, k) = Axial(C.vdg[k]);
   }
-  if (sides.over_a_step && sides.num_nodes == 2) BalanceRotationRowTorques(sides, direction, &e);
   return e;
-}
-
-void Joint::BalanceRotationRowTorques(const Sides& sides, const PathDirection& direction, Evaluation* e) const {
-  // The rows' columns: theta of the parent (3..5) and of the child (9..11), then the rotation variables.
-  std::array<int, RotationIncrements::kMax> columns;
-  int m = 0;
-  for (int slot = 0; slot < 2; ++slot) {
-    for (int j = 0; j < 3; ++j) columns[m++] = 6 * slot + 3 + j;
-  }
-  for (const RotationFactor& factor : kinematics_.rotations) columns[m++] = 6 * sides.num_nodes + factor.variable;
-  RotationIncrements increments;
-  increments.z.resize(m);
-  increments.delta.setZero(m, 3);
-  for (int slot = 0; slot < 2; ++slot) {
-    increments.z.segment<3>(3 * slot) = sides.nodes[slot].theta;
-    increments.delta.block<3, 3>(3 * slot, 0) = sides.nodes[slot].R_i.transpose();
-  }
-  for (int k = 6; k < m; ++k) {
-    const int v = columns[k] - 6 * sides.num_nodes;
-    increments.z[k] = sides.q_f[v] - sides.q_i[v];
-  }
-  RotationIncrements::Rows G(3, m);
-  for (int k = 0; k < m; ++k) G.col(k) = e->G.block<3, 1>(3, columns[k]);
-  const RigidRotationBalance balance(increments, G);
-  if (direction.index < 0) {
-    G = balance.Balanced();
-    for (int k = 0; k < m; ++k) e->G.block<3, 1>(3, columns[k]) = G.col(k);
-    return;
-  }
-  RotationIncrements::Rows dG(3, m);
-  int l = -1;
-  for (int k = 0; k < m; ++k) {
-    dG.col(k) = e->G_variation.block<3, 1>(3, columns[k]);
-    if (columns[k] == direction.index) l = k;
-  }
-  dG = balance.BalancedVariation(dG, l);
-  for (int k = 0; k < m; ++k) e->G_variation.block<3, 1>(3, columns[k]) = dG.col(k);
 }
 
 Eigen::Ref<const Eigen::VectorXd> Joint::Multipliers(const StepContext& ctx) const {
