@@ -7,6 +7,7 @@
 
 #include "flexmbd/io/initial_placement.hpp"
 #include "flexmbd/io/loop_closure.hpp"
+#include "flexmbd/joints/joint_kinematics.hpp"
 #include "flexmbd/math/so3.hpp"
 
 namespace flexmbd {
@@ -30,6 +31,11 @@ constexpr double kGapDifferenceStep = 1.0e-7;
 // Singular values below this fraction of the largest are taken as zero: directions the loops do not fix (a
 // dead centre, a joint outside every loop) get no change.
 constexpr double kRankThreshold = 1.0e-10;
+// A loop drawn straight (every link along one line) is at a dead centre: the gaps along the line change only to
+// second order, so no Gauss-Newton step narrows them. The free joint variables are then turned by this much
+// [rad or m], enough for the first order to see the way out and small against any link, and the iteration goes
+// on; a positive turn picks the branch on one side of the line.
+constexpr double kDeadCentreNudge = 1.0e-3;
 
 // One coordinate the assembly may change: variable `slot` of a joint, or (slot >= the joint's variables) a
 // component of a spherical joint's relative rotation (or angular velocity) in Jp.
@@ -122,10 +128,24 @@ double Extent(const ModelSpec& spec) {
   return extent;
 }
 
+// The nudge off a dead centre: kDeadCentreNudge on every free joint variable (not a spherical joint's rotation,
+// which would tilt a planar loop out of its plane).
+Eigen::VectorXd DeadCentreNudge(const ModelSpec& spec, const std::vector<Coordinate>& free) {
+  Eigen::VectorXd nudge = Eigen::VectorXd::Zero(free.size());
+  for (size_t i = 0; i < free.size(); ++i) {
+    if (free[i].slot < static_cast<int>(spec.joints[free[i].joint].initial_position.size())) {
+      nudge[i] = kDeadCentreNudge;
+    }
+  }
+  return nudge;
+}
+
 // Gauss-Newton on the gaps (K2), its step halved while it widens them (far from the solution the linearisation
-// may); stops at kAssembledGap or where no step narrows them (least squares: the loops cannot close).
-void CloseByLeastChange(double extent, Assembler* positions) {
+// may); stops at kAssembledGap or where no step narrows them (least squares: the loops cannot close), after one
+// nudge off a dead centre.
+void CloseByLeastChange(double extent, Assembler* positions, const ModelSpec& spec) {
   Eigen::VectorXd gaps = positions->Gaps();
+  bool nudged = false;
   for (int iteration = 0; iteration < kAssemblyIterations; ++iteration) {
     if (gaps.lpNorm<Eigen::Infinity>() < kAssembledGap * extent) return;
     Eigen::VectorXd change = positions->LeastChange(gaps), next = positions->GapsMoved(change);
@@ -133,9 +153,30 @@ void CloseByLeastChange(double extent, Assembler* positions) {
       change /= 2.0;
       next = positions->GapsMoved(change);
     }
-    if (next.norm() >= gaps.norm()) return;
+    if (next.norm() >= gaps.norm()) {
+      if (nudged) return;
+      nudged = true;
+      change = DeadCentreNudge(spec, positions->free());
+      next = positions->GapsMoved(change);
+    }
     positions->Accept(change);
     gaps = next;
+  }
+}
+
+// Each free angle of a joint (a rotation variable that moves nothing along the axis) turned by whole turns to
+// the one nearest its value before the assembly: Gauss-Newton's steps may wind a loop's joints round, which
+// moves no body but reads as turns of a spring or a stop's angle.
+void UnwindTurns(const std::vector<Coordinate>& free, const std::vector<double>& before, ModelSpec* spec) {
+  for (size_t i = 0; i < free.size(); ++i) {
+    JointSpec& joint = spec->joints[free[i].joint];
+    if (free[i].slot >= static_cast<int>(joint.initial_position.size())) continue;
+    const JointKinematics kinematics = MakeJointKinematics(joint);
+    const bool rotates = std::any_of(kinematics.rotations.begin(), kinematics.rotations.end(),
+                                     [&](const RotationFactor& factor) { return factor.variable == free[i].slot; });
+    if (!rotates || !kinematics.translation_rates_Jp[free[i].slot].isZero()) continue;
+    double& q = joint.initial_position[free[i].slot];
+    q = before[i] + std::remainder(q - before[i], 2.0 * M_PI);
   }
 }
 }  // namespace
@@ -144,6 +185,11 @@ void AssembleLoops(const std::vector<BodyMount>& free_bodies, ModelSpec* spec) {
   const double extent = Extent(*spec);
   Assembler positions(free_bodies, false, spec);
   if (!positions.free().empty() && positions.Gaps().lpNorm<Eigen::Infinity>() >= kAssembledGap * extent) {
+    std::vector<double> before;  // the free coordinates' values as drawn
+    for (const Coordinate& c : positions.free()) {
+      const JointSpec& joint = spec->joints[c.joint];
+      before.push_back(c.slot < static_cast<int>(joint.initial_position.size()) ? joint.initial_position[c.slot] : 0);
+    }
     // the set positions, walked from the URDF's pose (zero) to their values
     std::vector<double*> set;
     std::vector<double> target;
@@ -166,8 +212,10 @@ void AssembleLoops(const std::vector<BodyMount>& free_bodies, ModelSpec* spec) {
         *set[i] = increment == increments ? target[i] : target[i] * increment / increments;
       }
       PlaceBodies(free_bodies, spec);
-      CloseByLeastChange(extent, &positions);
+      CloseByLeastChange(extent, &positions, *spec);
     }
+    UnwindTurns(positions.free(), before, spec);
+    PlaceBodies(free_bodies, spec);
   }
   // The gaps in the rates are linear in them: one step closes them; a second takes the round-off.
   Assembler rates(free_bodies, true, spec);
