@@ -211,7 +211,7 @@ struct SolverSpec {
   ErrorFloors error_floor;
   int max_iterations = 20;         ///< Newton iterations per step
   int load_steps = 10;             ///< load increments of the static analysis
-  int threads = 0;                 ///< threads evaluating the elements; 0: the cores available
+  int threads = 1;                 ///< threads evaluating the elements (1: the calling thread alone)
   bool static_first = false;       ///< run a static analysis and start the dynamics from it
   Vec3 gravity = Vec3(0.0, 0.0, -9.81);  ///< [m/s^2]
   /// Eigen-analysis settings (docs/config.md, "solver.eigen"; docs/theory.md, "Eigen-analysis").

@@ -64,7 +64,7 @@ class SparseSystem {
 
   const Model& model_;
   int n_;
-  int threads_;  ///< solver.threads, 0 resolved to the cores available
+  int threads_;  ///< solver.threads
   int assembly_threads_ = 1;
   std::vector<int> column_start_, row_index_;
   std::vector<double> values_;

@@ -4,7 +4,6 @@
 #include <chrono>
 #include <cmath>
 #include <set>
-#include <thread>
 #include <utility>
 
 #include <klu.h>
@@ -30,10 +29,6 @@ namespace {
 // pivots near 1/stiffness, so even freshly pivoted factors of well-posed models show 1e-10 to 1e-23.)
 constexpr double kRefactorGrowthRatio = 1.0e-2;
 
-// solver.threads: 0 asks for the cores available.
-int ThreadsFor(const SolverSpec& solver) {
-  return solver.threads > 0 ? solver.threads : std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
-}
 
 double SecondsSince(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -41,7 +36,7 @@ double SecondsSince(std::chrono::steady_clock::time_point start) {
 }  // namespace
 
 SparseSystem::SparseSystem(const Model& model)
-    : model_(model), n_(model.num_unknowns()), threads_(ThreadsFor(model.solver())) {
+    : model_(model), n_(model.num_unknowns()), threads_(model.solver().threads) {
   std::vector<std::set<int>> rows_of_column(n_);
   int max_local = 0;
   for (const auto& element : model.elements()) {
