@@ -88,6 +88,11 @@ TEST(TimeFunctionBreakpoints, ADriveTableBlipAfterALongRestIsFollowed) {
     const double blip = std::max(0.0, 0.1 - 10.0 * std::abs(t - 100.01));
     EXPECT_NEAR(At(table, row, "joint.pivot.position"), blip, kFollowed) << "t " << t;
   }
+  // Held at rest after the blip: the steps from its kinks start from velocities carried across the drive's rate
+  // jumps (docs/theory.md (T13)), so no alternating rate of the jumps is left (it read -23 rad/s at the end, 477 J).
+  const size_t last = table.rows.size() - 1;
+  EXPECT_NEAR(At(table, last, "joint.pivot.velocity"), 0.0, kFollowed / 0.01);
+  EXPECT_NEAR(At(table, last, "energy.kinetic"), 0.0, kFollowed);
 }
 
 }  // namespace time_function_breakpoints_test
