@@ -44,6 +44,11 @@ struct Coordinate {
   int slot;
 };
 
+// Whether the coordinate is a joint variable (not a component of a spherical joint's rotation).
+bool IsJointVariable(const ModelSpec& spec, const Coordinate& c) {
+  return c.slot < static_cast<int>(spec.joints[c.joint].initial_position.size());
+}
+
 std::vector<Coordinate> FreeCoordinates(const ModelSpec& spec, bool rates) {
   std::vector<Coordinate> free;
   for (size_t j = 0; j < spec.joints.size(); ++j) {
@@ -133,7 +138,7 @@ double Extent(const ModelSpec& spec) {
 Eigen::VectorXd DeadCentreNudge(const ModelSpec& spec, const std::vector<Coordinate>& free) {
   Eigen::VectorXd nudge = Eigen::VectorXd::Zero(free.size());
   for (size_t i = 0; i < free.size(); ++i) {
-    if (free[i].slot < static_cast<int>(spec.joints[free[i].joint].initial_position.size())) {
+    if (IsJointVariable(spec, free[i])) {
       nudge[i] = kDeadCentreNudge;
     }
   }
@@ -169,8 +174,8 @@ void CloseByLeastChange(double extent, Assembler* positions, const ModelSpec& sp
 // moves no body but reads as turns of a spring or a stop's angle.
 void UnwindTurns(const std::vector<Coordinate>& free, const std::vector<double>& before, ModelSpec* spec) {
   for (size_t i = 0; i < free.size(); ++i) {
+    if (!IsJointVariable(*spec, free[i])) continue;
     JointSpec& joint = spec->joints[free[i].joint];
-    if (free[i].slot >= static_cast<int>(joint.initial_position.size())) continue;
     const JointKinematics kinematics = MakeJointKinematics(joint);
     const bool rotates = std::any_of(kinematics.rotations.begin(), kinematics.rotations.end(),
                                      [&](const RotationFactor& factor) { return factor.variable == free[i].slot; });
@@ -187,8 +192,7 @@ void AssembleLoops(const std::vector<BodyMount>& free_bodies, ModelSpec* spec) {
   if (!positions.free().empty() && positions.Gaps().lpNorm<Eigen::Infinity>() >= kAssembledGap * extent) {
     std::vector<double> before;  // the free coordinates' values as drawn
     for (const Coordinate& c : positions.free()) {
-      const JointSpec& joint = spec->joints[c.joint];
-      before.push_back(c.slot < static_cast<int>(joint.initial_position.size()) ? joint.initial_position[c.slot] : 0);
+      before.push_back(IsJointVariable(*spec, c) ? spec->joints[c.joint].initial_position[c.slot] : 0);
     }
     // the set positions, walked from the URDF's pose (zero) to their values
     std::vector<double*> set;

@@ -10,8 +10,6 @@
 #include "flexmbd/solver/static_start_rates.hpp"
 #include "flexmbd/solver/step_context_builder.hpp"
 
-#include "drive_rows.hpp"
-
 namespace flexmbd {
 namespace {
 // Times closer than this fraction of a step are the same instant (guards the end of the run and sample times
