@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <functional>
 #include <string>
 #include <vector>
@@ -238,6 +239,25 @@ TEST(ElementTangent, ElasticStopMatchesFiniteDifference) {
   ExpectDynamicTangents<ElasticStop>(model, 215, AtStop(model, 0.01, -0.03, JointStop::kOpen));
   ExpectDynamicTangents<ElasticStop>(model, 216, AtStop(model, -0.01, 0.012, JointStop::kContact));
   ExpectStaticTangents<ElasticStop>(model, 217, AtStop(model, -0.03, -0.02, JointStop::kContact));
+}
+
+TEST(ElementTangent, HertzStopAtFirstTouchTakesItsTouchStiffnessInStaticsAndTheLawsApproach) {
+  // Reference: the Hertz law F = k a^1.5 (k 1e4 N/m^1.5, radius 0.3 m). Its V'' = 1.5 k a^0.5 vanishes at first touch,
+  // where a static iteration takes the law's stiffness at 1e-3 times the model's size instead (docs/theory.md, "Static
+  // increments"); an open gap has none, a deep approach its own. An increment dq into the stop from first touch
+  // predicts the force K rho |dq|, and the joint goes to the approach (F / k)^(2/3) of it. Exact formulas: to 1e-14.
+  constexpr double kFormula = 1.0e-14, kRadius = 0.3, kK = 1.0e4;
+  const Model model = ModelWithStop(HertzStop());
+  const ElasticStop& stop = *ElementsOf<ElasticStop>(model).at(0);
+  const double touch = 1.5 * kK * std::sqrt(1.0e-3 * model.length_scale());
+  EXPECT_NEAR(stop.StaticStiffness(0.0), touch, kFormula * touch);
+  EXPECT_NEAR(stop.StaticStiffness(1.0), 1.5 * kK, kFormula * kK);
+  EXPECT_EQ(stop.StaticStiffness(-1.0e-9), 0.0);
+  const double dq = -0.01, approach = std::pow(touch * kRadius * -dq / kK, 2.0 / 3.0);
+  EXPECT_NEAR(stop.StaticPosition(kStopAngle, dq), kStopAngle - approach / kRadius, kFormula);
+  // Moving off the stop, or from an open gap, the joint takes the increment as it is.
+  EXPECT_EQ(stop.StaticPosition(kStopAngle, 0.01), kStopAngle + 0.01);
+  EXPECT_EQ(stop.StaticPosition(kStopAngle + 0.1, -0.2), kStopAngle + 0.1 - 0.2);
 }
 
 TEST(ElementTangent, ElasticStopEndPointPartsMatchFiniteDifference) {

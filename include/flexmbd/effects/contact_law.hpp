@@ -21,6 +21,11 @@ class ContactLaw {
   /// The approach a may be negative (open gap): V and V' vanish there.
   double Potential(double a) const;  ///< V(a) [J]
   double Force(double a) const;      ///< V'(a) [N]
+  /// V''(a) [N/m]: 0 for an open gap, and touching (a = 0) the linear law's k, Hertz's 0.
+  double Stiffness(double a) const;
+  /// The approach [m] at which the force is `force` [N] > 0: the inverse of V'.
+  double ApproachAt(double force) const;
+  bool linear() const { return exponent_ == 1.0; }  ///< F = k a
   /// The exact discrete gradient (V(a_f) - V(a_i)) / (a_f - a_i) (V' at the midpoint when they coincide) [N],
   /// and its derivative with respect to a_f in *d_da_f [N/m]. A step that opens or closes the gap takes
   /// a_i or a_f negative, so the quotient is over the whole motion of the step.

@@ -107,8 +107,19 @@ class ElasticStop : public JointStop {
  public:
   /// @param solver the run's settings: with adaptive steps the local error test, on the stop's own pace at the
   /// onset of a contact, resolves it (C6); with fixed steps the contact rule (C6) bounds every contact step.
-  ElasticStop(const StopSpec& spec, int variable, int variable_unknown, int slot, const SolverSpec& solver);
+  /// @param length_scale the model's size [m], which sets the least stiffness a static iteration gives the stop in
+  /// contact (StaticStiffness).
+  ElasticStop(const StopSpec& spec, int variable, int variable_unknown, int slot, const SolverSpec& solver,
+              double length_scale);
   bool rigid() const override { return false; }
+  /// The stiffness dF/da [N/m] a static Newton iteration takes at the signed approach a [m] (docs/theory.md, "Static
+  /// increments"): V''(a), touching or pressed at least the law's at an approach of kTouchApproach times the model's
+  /// size, since Hertz's V'' vanishes at first touch and left the matrix singular.
+  double StaticStiffness(double a) const;
+  /// Where a static increment dq from the joint position q takes the joint: pressed on the stop (a >= 0), to the
+  /// approach at which the law's force is the force the increment's linearisation predicts, V'(a) +
+  /// StaticStiffness(a) da (Newton's update in the force, in which the law is linear); otherwise q + dq.
+  double StaticPosition(double q, double dq) const;
   void AddResidual(const StepContext& ctx, Eigen::Ref<Eigen::VectorXd> r,
                    Eigen::Ref<Eigen::VectorXd> magnitude) const override;
   void AddTangent(const StepContext& ctx, Eigen::Ref<Eigen::MatrixXd> J) const override;
@@ -155,6 +166,7 @@ class ElasticStop : public JointStop {
   ContactLaw law_;
   int steps_per_contact_;
   SolverSpec solver_;
+  double touch_stiffness_;  ///< least static stiffness in contact [N/m] (StaticStiffness)
 };
 
 }  // namespace flexmbd

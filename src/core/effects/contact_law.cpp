@@ -35,16 +35,21 @@ double ContactLaw::Potential(double a) const {
 
 double ContactLaw::Force(double a) const { return a > 0 ? stiffness_ * std::pow(a, exponent_) : 0.0; }
 
+double ContactLaw::Stiffness(double a) const {
+  // Out of contact the force is zero and so is its slope, for the linear law too: a slope there stiffened a static
+  // tangent (where the approaches always coincide) against a residual without it. Touching (a = 0), the linear law
+  // takes its contact side's slope: a joint pressed onto its stop.
+  if (a < 0 || (a == 0 && !linear())) return 0.0;
+  return exponent_ * stiffness_ * std::pow(a, exponent_ - 1.0);
+}
+
+double ContactLaw::ApproachAt(double force) const { return std::pow(force / stiffness_, 1.0 / exponent_); }
+
 double ContactLaw::DiscreteForce(double a_i, double a_f, double* d_da_f) const {
   const double da = a_f - a_i;
   if (std::abs(da) <= kCoincidentFraction * std::max(std::abs(a_i), std::abs(a_f))) {
     const double mid = 0.5 * (a_i + a_f);
-    // Out of contact the force is zero and so is its slope, for the linear law too: a slope there stiffened a
-    // static tangent (where the approaches always coincide) against a residual without it. Touching (a = 0), the
-    // linear law takes its contact side's slope: a joint pressed onto its stop.
-    const bool touching = mid > 0 || (mid == 0 && exponent_ == 1.0);
-    const double slope = touching ? exponent_ * stiffness_ * std::pow(mid, exponent_ - 1.0) : 0.0;
-    *d_da_f = 0.5 * slope;
+    *d_da_f = 0.5 * Stiffness(mid);
     return Force(mid);
   }
   const double gradient = (Potential(a_f) - Potential(a_i)) / da;

@@ -108,7 +108,8 @@ void VariableEffectsBuilder::AddStop(const std::string& where, int v, StopSpec s
     model_.multiplier_names_.push_back("stop " + stop.name + " of " + model_.variable_names_[v]);
     ++*multiplier;
   } else {
-    element = std::make_unique<ElasticStop>(stop, v, model_.variable_unknown(v), slot, model_.solver());
+    element = std::make_unique<ElasticStop>(stop, v, model_.variable_unknown(v), slot, model_.solver(),
+                                            model_.length_scale());
   }
   const double q_initial = model_.initial_state_.q[v];
   if (element->Gap(q_initial) < -kInitialConstraintTolerance) {
