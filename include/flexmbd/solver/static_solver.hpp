@@ -18,9 +18,16 @@ struct StaticResult {
   int load_steps = 0;
   int iterations = 0;       ///< over all load steps
   NewtonReport last;        ///< report of the last Newton solve
+  /// Set when the equilibrium found is refused (converged false): a joint variable it turns by more than a turn
+  /// from the start, and that turn [rad]; or the stop (index into Model::stops()) it lies beyond, open.
+  int turned_variable = -1;
+  double turn = 0;
+  int passed_stop = -1;
 };
 
-/// Solves for equilibrium at time state->t starting from *state; velocities are set to zero.
+/// Solves for equilibrium at time state->t starting from *state; velocities are set to zero. An increment turns a
+/// joint by at most half a radian and stops at an open stop it would pass (docs/theory.md, "Static increments"); an
+/// equilibrium that turns a joint more than a turn from the start, or lies beyond an open rigid stop, is refused.
 StaticResult SolveStatic(const Model& model, SparseSystem* system, State* state);
 
 /// What a static analysis that did not converge did, in its own terms (load increments, Newton iterations, the

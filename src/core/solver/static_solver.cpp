@@ -1,20 +1,26 @@
 #include "flexmbd/solver/static_solver.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 #include <sstream>
 #include <vector>
 
 #include "flexmbd/common/error.hpp"
 #include "flexmbd/effects/joint_stop.hpp"
+#include "flexmbd/joints/joint.hpp"
 #include "flexmbd/model/model.hpp"
 #include "flexmbd/solver/eigen_analysis.hpp"
 #include "flexmbd/solver/joint_rates.hpp"
 #include "flexmbd/solver/sparse_system.hpp"
 #include "flexmbd/solver/step_context_builder.hpp"
+#include "static_increment.hpp"
 
 namespace flexmbd {
 namespace {
+// A turn [rad]. An equilibrium with a joint (not driven) turned further from its start passed the configuration it
+// started from, and is not the one nearest to the start that a user expects.
+constexpr double kTurn = 2.0 * 3.14159265358979323846;
 
 // Multipliers to start from when the state has none: those that hold the joints when the model is released from
 // rest there (theory (E2)), scaled to the first load step. With zero multipliers the first tangent has no
@@ -29,75 +35,74 @@ void StartFromReleaseMultipliers(const Model& model, double load_factor, State* 
   }
 }
 
-// An increment that would close an open elastic stop is cut to end just past it: an open stop has no stiffness in
-// the tangent the increment came from, and the whole increment can end deep inside the stop (a flap floating to 3
-// deg through its 0.5 deg stop), from where Newton diverges. Just past it, the next tangent holds the stop. As a
-// dynamic step lands on a contact ((C5), kEventLanding), but on the contact's side.
-constexpr double kStopLanding = 1.02;
-
-// The fraction of `increment` to take: 1, or less where it would close one of `stops` from `state`.
-double StopLandingFraction(const std::vector<const JointStop*>& stops, const Model& model, const State& state,
-                           const Eigen::VectorXd& increment, double round_off) {
-  double fraction = 1.0;
-  for (const JointStop* stop : stops) {
-    const double q = state.q[stop->variable()];
-    const double g_i = stop->Gap(q), g_f = stop->Gap(q + increment[model.variable_unknown(stop->variable())]);
-    if (g_i > round_off && g_f < 0) fraction = std::min(fraction, kStopLanding * g_i / (g_i - g_f));
-  }
-  return std::min(fraction, 1.0);
-}
-
-std::vector<const JointStop*> ElasticStops(const Model& model) {
-  std::vector<const JointStop*> stops;
-  for (const JointStop* stop : model.stop_effects()) {
-    if (!stop->rigid()) stops.push_back(stop);
-  }
-  return stops;
-}
-
 // Rigid stops that the joint touches (gap within round-off) are closed: a static analysis has no time steps whose
 // events would close them, and a joint resting on its stop with nothing else to hold it (a block on a frictionless
 // incline, a hinged blade on its droop stop) had a singular iteration matrix. In contact the stop's row is g_f = 0
-// (C2a). Returns whether any was closed.
-bool CloseTouchedRigidStops(const Model& model, double round_off, State* state) {
-  bool closed = false;
+// (C2a).
+void CloseTouchedRigidStops(const Model& model, double round_off, State* state) {
   for (const JointStop* stop : model.stop_effects()) {
     EffectState& effect = state->effects[stop->slot()];
     if (!stop->rigid() || effect.mode != JointStop::kOpen) continue;
     if (stop->Gap(state->q[stop->variable()]) > round_off) continue;
     effect.mode = JointStop::kContact;
-    closed = true;
   }
-  return closed;
 }
 
-// Opens the closed rigid stops of an equilibrium whose contact force pulls (the load takes the joint off the stop).
-// Returns whether any was opened.
-bool OpenPullingStops(const Model& model, const State& equilibrium, State* start) {
+// Opens the rigid stops that hold the equilibrium with a contact force that pulls (the load takes the joint off the
+// stop) in the start, and releases them: a landing does not close them again. Returns whether any was opened.
+bool ReleasePullingStops(const Model& model, const State& equilibrium, State* start, std::vector<bool>* released) {
   bool opened = false;
   StepContextBuilder builder(model);
   const StepContext& at_equilibrium = builder.AtState(equilibrium);
-  for (const JointStop* stop : model.stop_effects()) {
-    EffectState& effect = start->effects[stop->slot()];
-    if (effect.mode != JointStop::kContact || stop->Sample(equilibrium, at_equilibrium).force >= 0.0) continue;
-    effect.mode = JointStop::kOpen;
+  for (size_t k = 0; k < model.stop_effects().size(); ++k) {
+    const JointStop& stop = *model.stop_effects()[k];
+    if (equilibrium.effects[stop.slot()].mode != JointStop::kContact || !stop.rigid() ||
+        stop.Sample(equilibrium, at_equilibrium).force >= 0.0) {
+      continue;
+    }
+    start->effects[stop.slot()].mode = JointStop::kOpen;
+    (*released)[k] = true;
     opened = true;
   }
   return opened;
+}
+
+// An equilibrium the user cannot have meant is no solution: one with a joint turned by more than a turn from its
+// start (Newton went past the nearest one), or beyond a rigid stop that is open there (it passed the stop).
+void RefuseOutOfReach(const Model& model, const State& start, const State& equilibrium, StaticResult* result) {
+  for (const Joint* joint : model.joints()) {
+    for (const RotationFactor& factor : joint->kinematics().rotations) {
+      const int v = joint->first_variable() + factor.variable;
+      if (model.driven(v) || std::abs(equilibrium.q[v] - start.q[v]) <= kTurn) continue;
+      result->converged = false;
+      result->turned_variable = v;
+      result->turn = equilibrium.q[v] - start.q[v];
+      return;
+    }
+  }
+  for (size_t k = 0; k < model.stop_effects().size(); ++k) {
+    const JointStop& stop = *model.stop_effects()[k];
+    const bool open = equilibrium.effects[stop.slot()].mode == JointStop::kOpen;
+    if (!stop.rigid() || !open || stop.Gap(equilibrium.q[stop.variable()]) >= -kConstraintTolerance) continue;
+    result->converged = false;
+    result->passed_stop = static_cast<int>(k);
+    return;
+  }
 }
 
 // Elastic stops that the equilibrium presses (a negative gap) are in contact, the mode a step ending there would commit
 // (ElasticStop::Commit), as the rigid stops that hold are closed: a run started from the equilibrium has each contact
 // from its start (Simulation::Begin).
 void MarkPressedElasticStops(const Model& model, State* state) {
-  for (const JointStop* stop : ElasticStops(model)) {
+  for (const JointStop* stop : model.stop_effects()) {
     EffectState& effect = state->effects[stop->slot()];
-    if (effect.mode == JointStop::kRetracted) continue;
+    if (stop->rigid() || effect.mode == JointStop::kRetracted) continue;
     effect.mode = stop->Gap(state->q[stop->variable()]) < 0.0 ? JointStop::kContact : JointStop::kOpen;
   }
 }
 
-StaticResult SolveLoadSteps(const Model& model, SparseSystem* system, State* state) {
+StaticResult SolveLoadSteps(const Model& model, SparseSystem* system, const std::vector<bool>& released,
+                            State* state) {
   StepContextBuilder builder(model);
   builder.set_geometric_stiffness(true);
   StaticResult result;
@@ -110,7 +115,7 @@ StaticResult SolveLoadSteps(const Model& model, SparseSystem* system, State* sta
   // a stale tangent's divergence in the motion (docs/theory.md, "Newton iteration").
   NewtonOptions options;
   options.fresh_tangent_every_iteration = true;
-  const std::vector<const JointStop*> stops = ElasticStops(model);
+  const StaticIncrement increment_rule(model);
   const double round_off = RoundOffFloor(model.length_scale());
   for (int step = 1; step <= n_steps; ++step) {
     const double load_factor = static_cast<double>(step) / n_steps;
@@ -127,17 +132,7 @@ StaticResult SolveLoadSteps(const Model& model, SparseSystem* system, State* sta
           return builder.Static(*state, unknowns, state->t, load_factor);
         },
         [&](const Eigen::VectorXd& increment) {
-          const double f = StopLandingFraction(stops, model, *state, increment, round_off);
-          for (int k = 0; k < model.num_nodes(); ++k) {
-            NodeState& n = state->nodes[k];
-            n.x += f * increment.segment<3>(model.node_unknown(k));
-            n.R = n.R * Exp(f * increment.segment<3>(model.node_unknown(k) + 3));
-          }
-          for (int k = 0; k < model.num_variables(); ++k) state->q[k] += f * increment[model.variable_unknown(k)];
-          state->element_states += f * increment.segment(model.element_state_unknown(0), model.num_element_states());
-          state->lambda += f * increment.tail(model.num_multipliers());
-          const int n_kinematic = model.num_unknowns() - model.num_multipliers();
-          travelled = std::max(travelled, f * increment.head(n_kinematic).cwiseAbs().maxCoeff());
+          travelled = std::max(travelled, increment_rule.Apply(system->residual(), increment, released, state));
           return travelled + kMotionFloor;
         },
         options);
@@ -155,22 +150,36 @@ StaticResult SolveLoadSteps(const Model& model, SparseSystem* system, State* sta
 }  // namespace
 
 StaticResult SolveStatic(const Model& model, SparseSystem* system, State* state) {
-  State start = *state;
-  if (!CloseTouchedRigidStops(model, RoundOffFloor(model.length_scale()), &start)) {
-    return SolveLoadSteps(model, system, state);
-  }
+  const State initial = *state;
+  State start = initial;
+  CloseTouchedRigidStops(model, RoundOffFloor(model.length_scale()), &start);
   // Each closed stop either holds (a contact force >= 0) or is opened and the equilibrium solved again without it.
+  std::vector<bool> released(model.stop_effects().size(), false);
   StaticResult result;
   do {
     *state = start;
-    result = SolveLoadSteps(model, system, state);
-  } while (result.converged && OpenPullingStops(model, *state, &start));
+    result = SolveLoadSteps(model, system, released, state);
+  } while (result.converged && ReleasePullingStops(model, *state, &start, &released));
+  if (result.converged) RefuseOutOfReach(model, initial, *state, &result);
   return result;
 }
 
 std::string DescribeStaticFailure(const Model& model, const StaticResult& result) {
   const SolverSpec& solver = model.solver();
   std::ostringstream text;
+  if (result.turned_variable >= 0) {
+    text << "static analysis failed: the equilibrium Newton found turns joint "
+         << model.variable_names()[result.turned_variable] << " by " << result.turn << " rad ("
+         << result.turn / kTurn << " turns) from its start, more than a turn: not the equilibrium nearest to the "
+         << "start; start the joint within a turn of the equilibrium you expect";
+    return text.str();
+  }
+  if (result.passed_stop >= 0) {
+    const StopInfo& stop = model.stops()[result.passed_stop];
+    text << "static analysis failed: the equilibrium Newton found lies beyond stop " << stop.joint << ' ' << stop.stop
+         << ", which it passed; start the joint closer to the equilibrium you expect";
+    return text.str();
+  }
   text << "static analysis failed in load increment " << result.load_steps << " of " << solver.load_steps
        << " (load factor " << static_cast<double>(result.load_steps) / solver.load_steps << "): ";
   if (result.last.singular) {
