@@ -9,23 +9,13 @@
 #include <string>
 #include <vector>
 
-#include "../integration/helpers/csv_table.hpp"
+#include "runner_equilibrium.hpp"
 #include "runner_output.hpp"
 
 namespace flexmbd {
 namespace static_rigid_stop_test {
 
 constexpr double kG = 9.81;
-
-// The last row of the CSV of a runner run on `yaml_text` (which must not give output.csv).
-std::vector<double> EquilibriumRow(const std::string& urdf, std::string yaml_text, const std::string& name,
-                                   test::CsvTable* csv) {
-  const std::string path = testing::TempDir() + name + ".csv";
-  yaml_text += "\noutput: {csv: " + path + "}\n";
-  test::RunnerOutput(urdf, yaml_text, name);
-  *csv = test::ReadCsv(path);
-  return csv->rows.empty() ? std::vector<double>() : csv->rows.back();
-}
 
 std::string DataYaml(const std::string& name) { return test::SourceText("test/data/yaml/" + name); }
 
@@ -35,7 +25,7 @@ TEST(StaticRigidStop, BlockStartedOnItsStopRestsThereWithItsWeightAlongTheInclin
   constexpr double kRoundOff = 1.0e-12;
   test::CsvTable csv;
   const std::vector<double> row =
-      EquilibriumRow("test/data/urdf/incline.urdf", DataYaml("incline_stop_static_on.yaml"), "incline_on", &csv);
+      test::EquilibriumRow("test/data/urdf/incline.urdf", DataYaml("incline_stop_static_on.yaml"), "incline_on", &csv);
   ASSERT_FALSE(row.empty());
   EXPECT_NEAR(row[csv.Column("joint.slide.position")], 0.5, kRoundOff);
   EXPECT_EQ(row[csv.Column("stop.slide.upper.in_contact")], 1.0);
@@ -104,7 +94,7 @@ TEST(StaticRigidStop, HingedBladeRestsOnItsDroopStopAsAClampedCantilever) {
 std::vector<double> PendulumOnStop(const std::string& side, test::CsvTable* csv) {
   const std::string yaml = "joints: {pivot: {initial: {position: 0.3}, backlash: {" + side + ": 0.3, radius_" + side +
                            ": 0.1, stop: {type: rigid}}}}\nsolver: {analysis: static}";
-  return EquilibriumRow("test/data/urdf/pend_rev.urdf", yaml, "pend_" + side, csv);
+  return test::EquilibriumRow("test/data/urdf/pend_rev.urdf", yaml, "pend_" + side, csv);
 }
 
 TEST(StaticRigidStop, StopThatWouldPullOpensAndOneThatPushesHolds) {
