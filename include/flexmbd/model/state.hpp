@@ -92,7 +92,7 @@ struct State {
   std::array<Eigen::VectorXd, 3> mean_state_rate;    ///< the same for the element states
   double peak_speed = 0.0;          ///< largest node speed so far [m/s]: scales of the local error test
   double peak_spin = 0.0;           ///< largest node angular speed so far [rad/s]
-  double peak_joint_rate = 0.0;     ///< largest |qdot| of any joint variable so far [rad/s or m/s]
+  Eigen::VectorXd peak_joint_rate;  ///< largest |qdot| of each joint variable so far [rad/s or m/s] (num_variables)
   Eigen::VectorXd peak_state_rate;  ///< largest |mean rate| of each element state so far (element units per s)
   double external_work = 0.0;       ///< work of applied loads, drives and commanded efforts since t = 0 [J]
   double dissipated_physical = 0.0; ///< energy dissipated by dampers, friction, stop and beam damping since t = 0 [J]

@@ -54,8 +54,8 @@ std::unique_ptr<TimeIntegrator> MakeTimeIntegrator(const Model& model, SparseSys
 double JointErrorFloor(const SolverSpec& solver);
 
 /// What the local error test (T12) accepts in a joint variable over a step of size h [rad or m]: its floor plus
-/// error_tol times the step's travel at the run's peak joint rate.
-double JointErrorScale(const SolverSpec& solver, double h, double peak_joint_rate);
+/// error_tol times the step's travel at the variable's own peak rate so far, `peak_rate`.
+double JointErrorScale(const SolverSpec& solver, double h, double peak_rate);
 
 /// The derivative of a motion from the mean rates of two consecutive steps of sizes h_newer and h_older (the rates
 /// at the step midpoints): their divided difference over the span between the midpoints.
@@ -75,9 +75,9 @@ Rate MeanRateThirdDerivative(const Rate& newest, const Rate& middle, const Rate&
 
 /// The largest step that begins with a jump of `acceleration_jump` in a joint variable's acceleration [rad/s^2 or
 /// m/s^2] and has no error history (docs/theory.md, (F3'')): where the estimate (T12), run across the jump with equal
-/// steps, would find the error acceptable, |jump| h^2 / 24 = floor + error_tol h peak_joint_rate. Infinity with
-/// fixed steps or without a jump.
-double StepAfterJump(const SolverSpec& solver, double acceleration_jump, double peak_joint_rate);
+/// steps, would find the error acceptable, |jump| h^2 / 24 = floor + error_tol h peak_rate (the variable's own peak
+/// rate so far). Infinity with fixed steps or without a jump.
+double StepAfterJump(const SolverSpec& solver, double acceleration_jump, double peak_rate);
 
 /// Local error estimate of the step that led to `end` (docs/theory.md, (T12); damped beams (T12b), (T12c)), from its
 /// mean-rate history.

@@ -294,7 +294,7 @@ StepLimit FrictionEffect::Limit(const StepContext& ctx, const State& end) const 
     const double rate_before = rates_before.size() > variable_ ? rates_before[variable_] : 0.0;
     const VariableStep& q = (*ctx.variables)[variable_];
     const double jump = 2.0 * ((q.q_f - q.q_i) / ctx.h - rate_before) / ctx.h;
-    const double longest = StepAfterJump(solver_, jump, ctx.start->peak_joint_rate);
+    const double longest = StepAfterJump(solver_, jump, ctx.start->peak_joint_rate[variable_]);
     if (ctx.h > longest) {
       limit.retry = kStepAfterJumpSafety * longest;
       return limit;

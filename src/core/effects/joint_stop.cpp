@@ -165,7 +165,7 @@ double RigidStop::CrossingTime(const StepContext& ctx) const {
 bool RigidStop::Centred(const StepContext& ctx) const {
   // A contact step of h instead of twice the crossing time shifts the motion after it by their difference: at the
   // start rate, a shift in the joint that the local error test (T12) must accept.
-  const double allowance = JointErrorScale(solver_, ctx.h, ctx.start->peak_joint_rate);
+  const double allowance = JointErrorScale(solver_, ctx.h, ctx.start->peak_joint_rate[variable()]);
   const double shift = std::abs((*ctx.variables)[variable()].qdot_i) * std::abs(ctx.h - 2 * CrossingTime(ctx));
   return shift <= allowance;
 }
@@ -186,7 +186,7 @@ double RigidStop::LongestImpactStep(const StepContext& ctx, const State& end) co
   // carries on. The local error test (T12) lets the error grow by error_tol times the peak joint rate per unit time
   // (its relative part over a step), so the rate may be off by that much (C5').
   const double jump = 2 * kinetic * change / force;
-  return 2 * solver_.error_tol * start.peak_joint_rate / std::abs(jump);
+  return 2 * solver_.error_tol * start.peak_joint_rate[v] / std::abs(jump);
 }
 
 StepLimit RigidStop::Limit(const StepContext& ctx, const State& end) const {
@@ -410,7 +410,7 @@ double ElasticStop::OnsetError(const StepContext& ctx, const Onset& onset) const
     rates[2] = onset.rate - 0.5 * h_closing * onset.acceleration;
   }
   const double error = ctx.h * ctx.h * ctx.h * std::abs(MeanRateThirdDerivative(rates[0], rates[1], rates[2], h)) / 12;
-  return error / JointErrorScale(solver_, ctx.h, start.peak_joint_rate);
+  return error / JointErrorScale(solver_, ctx.h, start.peak_joint_rate[variable()]);
 }
 
 StepLimit ElasticStop::Limit(const StepContext& ctx, const State& end) const {

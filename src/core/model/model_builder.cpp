@@ -280,6 +280,7 @@ Model BuildModel(const ModelSpec& spec) {
   state.peak_state_rate = Eigen::VectorXd::Zero(model.num_element_states_);
   state.q = Eigen::VectorXd::Zero(model.num_variables_);
   state.qdot = Eigen::VectorXd::Zero(model.num_variables_);
+  state.peak_joint_rate = Eigen::VectorXd::Zero(model.num_variables_);
   state.lambda = Eigen::VectorXd::Zero(model.num_multipliers_);
   state.effects.resize(num_effect_slots);
   state.commands.resize(model.num_variables_);

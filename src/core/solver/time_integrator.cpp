@@ -80,15 +80,15 @@ double JointErrorFloor(const SolverSpec& solver) {
   return FloorOrDefault(solver.error_floor.joint, solver.error_tol, 1.0);
 }
 
-double JointErrorScale(const SolverSpec& solver, double h, double peak_joint_rate) {
-  return JointErrorFloor(solver) + solver.error_tol * h * peak_joint_rate;
+double JointErrorScale(const SolverSpec& solver, double h, double peak_rate) {
+  return JointErrorFloor(solver) + solver.error_tol * h * peak_rate;
 }
 
-double StepAfterJump(const SolverSpec& solver, double acceleration_jump, double peak_joint_rate) {
+double StepAfterJump(const SolverSpec& solver, double acceleration_jump, double peak_rate) {
   const double jump = std::abs(acceleration_jump);
   if (!solver.adaptive || jump == 0) return std::numeric_limits<double>::infinity();
   // The positive root of jump h^2 / 24 - relative h - floor = 0.
-  const double relative = solver.error_tol * peak_joint_rate;
+  const double relative = solver.error_tol * peak_rate;
   return 12.0 * (relative + std::sqrt(relative * relative + jump * JointErrorFloor(solver) / 6.0)) / jump;
 }
 
@@ -126,11 +126,11 @@ ErrorEstimate EstimateLocalError(const Model& model, const State& end) {
     return MeanRateThirdDerivative(newest, middle, oldest, h);
   };
   const double weight = h[0] * h[0] * h[0] / 12.0;
-  // Each entry is compared with its floor plus rtol times the step's travel at the run's peak rate of its kind.
+  // Each entry is compared with its floor plus rtol times the step's travel at the run's peak rate of its kind (of
+  // its own for a joint variable: a slow joint beside a fast one is judged on its own motion).
   const double position_scale = FloorOrDefault(solver.error_floor.position, rtol, model.length_scale()) +
                                 rtol * h[0] * end.peak_speed;
   const double rotation_scale = FloorOrDefault(solver.error_floor.rotation, rtol, 1.0) + rtol * h[0] * end.peak_spin;
-  const double joint_scale = JointErrorScale(solver, h[0], end.peak_joint_rate);
   double sum = 0, worst = -1;
   int count = 0;
   auto add = [&](double local_error, double scale, int unknown) {
@@ -186,7 +186,8 @@ ErrorEstimate EstimateLocalError(const Model& model, const State& end) {
   }
   const auto& q = end.mean_qdot;
   for (int k = 0; k < model.num_variables(); ++k) {
-    add(weight * std::abs(third_derivative(q[0][k], q[1][k], q[2][k])), joint_scale, model.variable_unknown(k));
+    add(weight * std::abs(third_derivative(q[0][k], q[1][k], q[2][k])),
+        JointErrorScale(solver, h[0], end.peak_joint_rate[k]), model.variable_unknown(k));
   }
   // Element states: the same estimate on their mean rates (the midpoint rule's local error is h^3 |x'''| / 24,
   // so the trapezoidal weight errs on the safe side), against the element's own scale.
@@ -224,7 +225,8 @@ void RecordStepHistory(const State& start, double h, State* end) {
     if (rates.size() != end->element_states.size()) rates = Eigen::VectorXd::Zero(end->element_states.size());
   }
   if (end->element_states.size() > 0) end->peak_state_rate = end->peak_state_rate.cwiseMax(end->mean_state_rate[0].cwiseAbs());
-  if (end->qdot.size() > 0) end->peak_joint_rate = std::max(end->peak_joint_rate, end->qdot.cwiseAbs().maxCoeff());
+  if (end->peak_joint_rate.size() != end->qdot.size()) end->peak_joint_rate = Eigen::VectorXd::Zero(end->qdot.size());
+  end->peak_joint_rate = end->peak_joint_rate.cwiseMax(end->qdot.cwiseAbs());
 }
 
 double NoiseFloor(const Model& model, const State& start) {
