@@ -263,8 +263,9 @@ TEST(BeamDynamics, EnergyDecayingSchemeDampsUnresolvedStrainModes) {
   constexpr double kRateTolerance = 0.01;
   for (double rho_inf : {0.6, 0.8}) {
     // The initial sample and 41 steps: the first lands on the kick's end (docs/theory.md, "Breakpoints"; its 1e-9 s
-    // fall, closer than dt_min, is stepped across), 39 of 0.1 s follow, and the last is cut to end at t_end; the rate
-    // is taken over the last 20.
+    // fall, closer than dt_min, is stepped across), 37 of 0.1 s follow, and the last three share the 0.25 s left
+    // (docs/theory.md, "Last steps"; at w h ~ 1000 each amplifies by rho_inf still); the rate is taken over the last
+    // 20.
     const std::vector<double> e = UnresolvedAxialEnergies(rho_inf);
     ASSERT_EQ(e.size(), 42u);
     EXPECT_NEAR(std::pow(e[41] / e[21], 1.0 / 40.0), rho_inf, kRateTolerance) << "rho_inf " << rho_inf;

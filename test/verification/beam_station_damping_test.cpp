@@ -73,6 +73,40 @@ TEST(BeamStationDamping, SteadySpinGivesTheCentrifugalTensionAndNoLagShear) {
   RecordProperty("largest_shear_or_moment_N_or_Nm", test::Figure(worst_shear));
 }
 
+TEST(BeamStationDamping, LastSampleOfARunCutShortStaysWithTheOthers) {
+  // The blade above on fixed 2 ms steps to t_end = 0.6002 s, every step written. The run once ended with a step of
+  // 0.2 ms, whose forces carry the alternating mode of its start velocities divided by its size: the last sample's
+  // hub effort jumped by 0.088 N m and the root's lag shear by 1.07 N from the sample before, where the steps before
+  // change them by less than 1e-3 N m and 0.01 N. The last steps now share the time left (docs/theory.md (T12),
+  // "Last steps"): here three of 1.4 ms. Any change of step size moves these forces, the effort by 0.098 N m times
+  // the change over the step (last steps cut to 0.1, 0.4, 0.7 and 0.9 of it gave 0.088, 0.051, 0.027 and 9.6e-3 N m;
+  // the shear 1.07, 0.44, 0.20 and 0.067 N): a change of 0.3 of the step moves them by a third of the old cut's
+  // change of 0.9 or less, and a third of the old jumps bounds every sample of the last steps.
+  constexpr double kEffortJump = 0.088 / 3, kShearJump = 1.07 / 3, kStep = 2.0e-3;
+  constexpr int kLast = 3;  // steps that share the time left, at 2/3 to 1.01 of kStep
+  const std::string csv = testing::TempDir() + "spinning_damped_blade_cut.csv";
+  test::RunnerOutput(
+      "test/data/urdf/spinning_hub.urdf",
+      DampedBlade("solver: {t_end: 0.6002, adaptive: false, dt: 2.0e-3, gravity: [0.0, 0.0, 0.0]}\n", "0", csv),
+      "spinning_damped_blade_cut");
+  const test::CsvTable table = test::ReadCsv(csv);
+  ASSERT_GE(table.rows.size(), static_cast<size_t>(kLast + 2));
+  EXPECT_NEAR(table.rows.back()[table.Column("t")], 0.6002, 1e-12);
+  const size_t dt = table.Column("solver.dt");
+  for (const auto& [column, bound] : {std::make_pair("joint.spin.effort", kEffortJump),
+                                      std::make_pair("beam.blade.s0.V2", kShearJump)}) {
+    double worst = 0;
+    for (size_t k = table.rows.size() - kLast; k < table.rows.size(); ++k) {
+      const std::vector<double>&now = table.rows[k], &before = table.rows[k - 1];
+      EXPECT_LE(now[dt], kStep * 1.01);
+      EXPECT_GE(now[dt], kStep * 2 / 3);
+      worst = std::max(worst, std::abs(now[table.Column(column)] - before[table.Column(column)]));
+    }
+    EXPECT_LT(worst, bound) << column;
+    RecordProperty(std::string("largest_jump_of_the_last_steps_") + column, test::Figure(worst));
+  }
+}
+
 TEST(BeamStationDamping, VibratingBeamCarriesMuEITimesItsCurvatureRate) {
   // test/data/urdf/beam_arm.urdf: a clamped 1 m arm (EI3 = 100 N m^2, 2 cubic elements, a 2 kg tip mass on a
   // hinge) shaken across by a 20 N tip force at 1 Hz, with mu = 0.02 s (first mode ~10.7 rad/s, zeta 0.1). The root

@@ -11,6 +11,7 @@
 
 #include "flexmbd/io/config_loader.hpp"
 #include "friction_bound.hpp"
+#include "landing_run.hpp"
 #include "run_trace.hpp"
 
 namespace flexmbd {
@@ -113,6 +114,39 @@ TEST(RigidStop, ForearmFallsOntoRigidStopsWithAndWithoutFriction) {
       }
       EXPECT_LT(top, 0.3 * kStop);
       EXPECT_GT(top, -0.01 * kStop);  // and not beyond: no energy gained
+    }
+  }
+}
+
+// Runs that land just after the impact, which then lies in their last steps (docs/theory.md (T12), "Last steps"):
+// at their end, or at an at_times instant they go on from. The last steps share the time left but yield to the
+// stop: a step rejected for the impact is redone at the size the stop asks for, never stretched back toward the
+// landing (a rule that did, 32706e1, looped here). Each run lands on its time with what the run to 3 s shows: the
+// rod on or short of its stop, the energy books closed (as ForearmFallsOntoRigidStops...), and, when the time is
+// past the 2% of the fall that the scheme may take, the contact begun.
+TEST(RigidStop, ARunLandingJustAfterTheImpactResolvesItAndEndsOnItsTime) {
+  for (const Variant& v : kVariants) {
+    for (const double after : {1.0e-4, 2.0e-3, 6.0e-3, 1.5e-2, 2.5e-2}) {  // [s] past the fall time
+      for (const bool at_instant : {false, true}) {
+        const double t_land = FallTime(v.friction) + after;
+        SCOPED_TRACE(std::string(v.name) + ", landing " + std::to_string(after) + " s after the fall" +
+                     (at_instant ? " at an instant" : " at t_end"));
+        const test::Trace run = test::RunLandingOn(Forearm(v), t_land, at_instant);
+        const OutputSample* landed = test::SampleAt(run, t_land);
+        ASSERT_NE(landed, nullptr);
+        double beyond = -kStop;
+        bool contact = false;
+        for (const OutputSample& s : run.samples) {
+          beyond = std::max(beyond, s.position[0] - kStop);
+          contact = contact || (s.t <= landed->t && s.stops[1].in_contact);
+        }
+        EXPECT_LT(beyond, kBeyondTolerance);
+        const OutputSample& first = run.samples.front();
+        EXPECT_NEAR(landed->total() + landed->dissipated + landed->numerical_dissipation, first.total(), 1e-6);
+        if (after > 0.02 * FallTime(v.friction)) {
+          EXPECT_TRUE(contact);
+        }
+      }
     }
   }
 }

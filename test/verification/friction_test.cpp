@@ -10,6 +10,7 @@
 
 #include "case_builders.hpp"
 #include "friction_bound.hpp"
+#include "landing_run.hpp"
 #include "run_trace.hpp"
 #include "flexmbd/common/error.hpp"
 #include "flexmbd/io/config_loader.hpp"
@@ -102,9 +103,15 @@ ModelSpec RotorUnderMomentRamp(double rate) {
   return spec;
 }
 
-double SpeedAtRampEnd(double rate) {
+// The closed form's speed at t (t_b <= t <= kRampEnd) [rad/s].
+double SpeedAt(double rate, double t) {
   const double t_b = kStaticTorque / rate;
-  return (rate * (kRampEnd * kRampEnd - t_b * t_b) / 2 - kKineticTorque * (kRampEnd - t_b)) / kInertia;
+  return (rate * (t * t - t_b * t_b) / 2 - kKineticTorque * (t - t_b)) / kInertia;
+}
+
+// What a breakaway located up to 2% of a step of dt_max early (F3') costs of speed [rad/s].
+double EarlyBreakawaySpeed(double dt_max) {
+  return (kStaticTorque - kKineticTorque) * 0.02 * dt_max / kInertia;
 }
 
 TEST(Friction, BreakawayWhenTorqueExceedsStaticBound) {
@@ -125,7 +132,7 @@ TEST(Friction, BreakawayWhenTorqueExceedsStaticBound) {
   }
   // Breakaway starts within a step of t_b, which costs at most (c t_b - T_k) h / J of speed.
   const double tolerance = (kRate * t_b - kKineticTorque) * kStep / kInertia;
-  EXPECT_NEAR(run.samples.back().velocity[0], SpeedAtRampEnd(kRate), tolerance);
+  EXPECT_NEAR(run.samples.back().velocity[0], SpeedAt(kRate, kRampEnd), tolerance);
 }
 
 // The same ramp at the rotor's own steps: a stuck joint has no local error, so they grow to dt_max = 0.05 s, and
@@ -137,10 +144,31 @@ TEST(Friction, BreakawayIsLocatedWithinTheStep) {
   constexpr double kRate = 0.93;
   const ModelSpec spec = RotorUnderMomentRamp(kRate);
   const test::Trace run = test::RunTrace(spec);
-  const double t_b = kStaticTorque / kRate;
-  const double tolerance = (kRate * t_b - kKineticTorque) * 0.02 * spec.solver.dt_max / kInertia;  // 2.4e-4 measured
-  EXPECT_NEAR(run.samples.back().velocity[0], SpeedAtRampEnd(kRate), tolerance);
+  EXPECT_NEAR(run.samples.back().velocity[0], SpeedAt(kRate, kRampEnd), EarlyBreakawaySpeed(spec.solver.dt_max))
+      << "2.4e-4 measured";
   for (const OutputSample& s : run.samples) EXPECT_LE(test::StaticBoundRatio(spec, BuildModel(spec), s), 1.0 + 1e-9);
+}
+
+// Runs of BreakawayIsLocatedWithinTheStep that land just after the breakaway, which then lies in their last steps
+// (docs/theory.md (T12), "Last steps"): at their end, or at an at_times instant they go on from. The step that
+// passes the static bound is redone as in the middle of a run, at the size (F3') asks for, and the last steps share
+// what is left after it. Each run lands on its time with the closed form's speed there, to the 2% of a step that
+// the breakaway may start early.
+TEST(Friction, ARunLandingJustAfterTheBreakawayLocatesItAndEndsOnItsTime) {
+  constexpr double kRate = 0.93;
+  const double t_b = kStaticTorque / kRate;
+  for (const double after : {1.0e-3, 1.0e-2, 3.0e-2, 6.0e-2, 0.1}) {  // [s] past t_b, within the ramp
+    for (const bool at_instant : {false, true}) {
+      const double t_land = t_b + after;
+      SCOPED_TRACE("landing " + std::to_string(after) + " s after the breakaway" +
+                   (at_instant ? " at an instant" : " at t_end"));
+      const ModelSpec spec = RotorUnderMomentRamp(kRate);
+      const test::Trace run = test::RunLandingOn(spec, t_land, at_instant);
+      const OutputSample* landed = test::SampleAt(run, t_land);
+      ASSERT_NE(landed, nullptr);
+      EXPECT_NEAR(landed->velocity[0], SpeedAt(kRate, t_land), EarlyBreakawaySpeed(spec.solver.dt_max));
+    }
+  }
 }
 
 // The stick-slip oscillator: mass m on a prismatic joint, gravity across it (N = m g from the joint reaction),

@@ -1,6 +1,6 @@
 #pragma once
-// Runs a hand-written case to its end and keeps what the verification tests look at: every output sample and
-// every mode change of the stops and frictional joints.
+// Runs a hand-written case to its end and keeps what the verification tests look at: every output sample, every
+// mode change of the stops and frictional joints, and the times of the states handed over at `instants`.
 
 #include <vector>
 
@@ -12,13 +12,15 @@ namespace test {
 struct Trace {
   std::vector<OutputSample> samples;
   std::vector<EffectEvent> events;
+  std::vector<double> instants;  ///< the time of the state at each instant the run stopped at [s]
 };
 
-inline Trace RunTrace(const ModelSpec& spec) {
+inline Trace RunTrace(const ModelSpec& spec, const std::vector<double>& instants = {}) {
   const Model model = BuildModel(spec);
   Simulation simulation(model);
   Trace run;
-  simulation.Run([&run](const OutputSample& s) { run.samples.push_back(s); });
+  simulation.Run([&run](const OutputSample& s) { run.samples.push_back(s); }, instants,
+                 [&run](const State& s) { run.instants.push_back(s.t); });
   run.events = simulation.effect_events();
   return run;
 }

@@ -9,15 +9,13 @@
 #include "flexmbd/solver/starting_step.hpp"
 #include "flexmbd/solver/static_start_rates.hpp"
 #include "flexmbd/solver/step_context_builder.hpp"
+#include "flexmbd/solver/step_to_landing.hpp"
 
 namespace flexmbd {
 namespace {
 // Times closer than this fraction of a step are the same instant (guards the end of the run and sample times
 // against round-off in sums of step sizes).
 constexpr double kTimeEpsilon = 1.0e-9;
-// A step that would leave less than this fraction of itself before t_end is stretched to reach t_end, so the
-// run never ends with a sliver step dominated by round-off.
-constexpr double kSliverFraction = 0.01;
 
 std::string FormatCommand(double value) {
   std::ostringstream text;
@@ -104,7 +102,7 @@ void Simulation::Run(const SampleSink& sink, const std::vector<double>& instants
   // Generalized-alpha damps the alternating velocity mode that the energy-consistent schemes' end rates carry.
   const bool rates_alternate = solver.integrator != SolverSpec::Integrator::kGeneralizedAlpha;
   for (double t : instants) {
-    AdvanceTo(t, t, sink);  // with t as the end, the last step is cut to land on it
+    AdvanceTo(t, t, sink);  // with t as the end, the last step lands on it
     at_instant(rates_alternate ? WithSmoothedRates(state_) : state_);
   }
   AdvanceTo(solver.t_end, solver.t_end, sink);
@@ -186,18 +184,23 @@ void Simulation::Begin(const SampleSink& sink) {
 void Simulation::AdvanceTo(double t_until, double t_end, const SampleSink& sink) {
   const SolverSpec& solver = model_.solver();
   const double sample_period = model_.output().rate_hz > 0 ? 1.0 / model_.output().rate_hz : 0.0;
+  // Each call ends on an accepted step, so a call starts as after one, and a run split into calls (a node's pauses)
+  // takes the steps of a run in one.
+  bool rejected = false;
   while (state_.t < std::min(t_until, t_end) - kTimeEpsilon * h_) {
     // Steps land on t_end and on every breakpoint of the time functions before it, never across one, except one
     // closer than dt_min: the step after a landing grows from the landing's size, and a table's 1e-9 s edge landed on
-    // left the run below dt_min.
+    // left the run below dt_min. The run's last steps share the time left; a breakpoint or an instant the run stops at
+    // before its end (at_times) is reached by one step, so that the state an eigen-analysis takes there stays as it was.
     const std::vector<double>& breakpoints = model_.breakpoints();
     const auto next_breakpoint = std::upper_bound(breakpoints.begin(), breakpoints.end(),
                                                   state_.t + std::max(kTimeEpsilon * h_, solver.dt_min));
     const bool to_breakpoint = next_breakpoint != breakpoints.end() && *next_breakpoint < t_end;
     const double t_land = to_breakpoint ? *next_breakpoint : t_end;
-    double h = std::min(h_, solver.dt_max);
-    if (t_land - state_.t - h < kSliverFraction * h) h = t_land - state_.t;
+    const int window = to_breakpoint || t_end < solver.t_end ? 1 : kLastSteps;
+    const double h = StepToLanding(std::min(h_, solver.dt_max), t_land - state_.t, window, rejected);
     const StepResult result = TryStep(h);
+    rejected = result.status != StepStatus::kAccepted;
     const double h_next = controller_.Next(h, result);
     // Past a breakpoint the motion's derivatives jump: the error estimate and the scheme's dissipation restart their
     // history there, as after an impact.
