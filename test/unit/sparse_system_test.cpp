@@ -13,7 +13,6 @@
 #include <Eigen/SVD>
 
 #include "flexmbd/model/model.hpp"
-#include "flexmbd/solver/energy_decaying_integrator.hpp"
 #include "flexmbd/solver/sparse_system.hpp"
 #include "flexmbd/solver/step_context_builder.hpp"
 #include "tangent_test_models.hpp"
@@ -92,23 +91,6 @@ class SparseSystemTest : public ::testing::Test {
     EXPECT_LT((dx - reference).norm(), forward_tolerance * reference.norm()) << "condition " << condition;
   }
 
-  // NodeTermDefect with every node's terms switched off against (J_off - J_on) dx from the dense tangents at
-  // `unknowns` from start_, dx random in each node's translation (`offset` 0) or rotation (3) and 0 elsewhere.
-  void ExpectDefectIsTheTangentChange(const Eigen::VectorXd& unknowns, int offset) {
-    const std::vector<NodeSchemeCoefficients> off(model_.num_nodes());
-    Eigen::VectorXd dx = Eigen::VectorXd::Zero(model_.num_unknowns());
-    for (int k = 0; k < model_.num_nodes(); ++k) dx.segment<3>(model_.node_unknown(k) + offset) = Vec3::Random();
-    const Eigen::MatrixXd on_tangent =
-        AssembleDense(model_, builder_.Dynamic(start_, unknowns, kStepSize, coefficients_)).tangent;
-    const Eigen::MatrixXd off_tangent =
-        AssembleDense(model_, builder_.Dynamic(start_, unknowns, kStepSize, off)).tangent;
-    const Eigen::VectorXd reference = (off_tangent - on_tangent) * dx;
-    Eigen::VectorXd defect;
-    ASSERT_TRUE(NodeTermDefect(model_, builder_.context(), coefficients_, off, dx, &defect));
-    ASSERT_GT(reference.norm(), 0.0);
-    EXPECT_LT((defect - reference).norm(), kAssembly * reference.norm());
-  }
-
   Model model_;
   StepContextBuilder builder_;
   test::Random random_;
@@ -166,41 +148,6 @@ TEST_F(SparseSystemTest, RefactorisationAtNewPointsSolvesEachSystem) {
     ASSERT_TRUE(system.Solve(&dx)) << "iteration " << iteration;
     ExpectSolvesDenseSystem(dense, dx);
   }
-}
-
-TEST_F(SparseSystemTest, SolveWithFactorisationSolvesTheFactorisedMatrix) {
-  // Reference: the dense tangent the factorisation was made from, applied to the solution of a random right-hand side.
-  SparseSystem system(model_);
-  const StepContext& ctx = RandomContext();
-  const Dense dense = AssembleDense(model_, ctx);
-  system.Assemble(ctx, true);
-  Eigen::VectorXd dx;
-  ASSERT_TRUE(system.Solve(&dx));
-  const Eigen::VectorXd b = Eigen::VectorXd::Random(model_.num_unknowns());
-  Eigen::VectorXd y = b;
-  ASSERT_TRUE(system.SolveWithFactorisation(&y));
-  EXPECT_LT((dense.tangent * y - b).norm() / (dense.tangent.norm() * y.norm() + b.norm()), kBackwardError);
-}
-
-TEST_F(SparseSystemTest, NodeTermDefectIsTheChangeOfTheTangentOnTranslations) {
-  // Reference: the dense tangents assembled with every node's terms on and off, at a random start and iterate,
-  // applied to increments of the node translations (whose rows the terms change only through dv_f/dx).
-  start_ = test::PerturbedState(model_, &random_);
-  ExpectDefectIsTheTangentChange(test::RandomUnknowns(model_, &random_), 0);
-}
-
-TEST_F(SparseSystemTest, NodeTermDefectIsTheChangeOfTheTangentOnRotations) {
-  // Reference: as above for increments of the node rotations, from a start without angular velocity or
-  // acceleration and an iterate that does not rotate: w_f is then 0 whatever the terms, so the gyroscopic part
-  // that NodeTermDefect leaves out is 0 and the change is exactly the rate columns'.
-  start_ = test::PerturbedState(model_, &random_);
-  Eigen::VectorXd unknowns = test::RandomUnknowns(model_, &random_);
-  for (int k = 0; k < model_.num_nodes(); ++k) {
-    start_.nodes[k].w.setZero();
-    start_.nodes[k].alpha_prev.setZero();
-    unknowns.segment<3>(model_.node_unknown(k) + 3).setZero();
-  }
-  ExpectDefectIsTheTangentChange(unknowns, 3);
 }
 
 ModelSpec FreeBodySpec() {

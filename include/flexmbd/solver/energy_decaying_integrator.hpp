@@ -29,14 +29,6 @@ namespace flexmbd {
 constexpr double kMinRhoInf = 1.0 / 3.0;
 double DissipationFromRhoInf(double rho_inf);
 
-/// (J_now - J_then) dx for the iteration matrix of a dynamic step whose node terms of the scheme changed from
-/// `then` to `now` (docs/theory.md, "Newton iteration"): a node's term scales its rigid bodies' rate columns
-/// (mass or inertia over h) by dv_f/dx = 1/(h (1/2 + alpha)); the change of w_f in the gyroscopic part of the
-/// rotation rows is left out. Writes `defect` and returns whether any term changed.
-bool NodeTermDefect(const Model& model, const StepContext& ctx, const std::vector<NodeSchemeCoefficients>& then,
-                    const std::vector<NodeSchemeCoefficients>& now, const Eigen::VectorXd& dx,
-                    Eigen::VectorXd* defect);
-
 class EnergyDecayingIntegrator : public TimeIntegrator {
  public:
   EnergyDecayingIntegrator(const Model& model, SparseSystem* system);

@@ -50,9 +50,6 @@ struct NewtonOptions {
   double expected_contraction_factor = std::numeric_limits<double>::quiet_NaN();
   /// Assemble and factorise a fresh tangent at every iteration (full Newton), as a static solve does.
   bool fresh_tangent_every_iteration = false;
-  /// (J_now - J_factorised) dx where the system changed in a known way since its factorisation (false: no
-  /// change); an increment from that factorisation is then corrected by one solve against it.
-  std::function<bool(const Eigen::VectorXd& dx, Eigen::VectorXd* defect)> tangent_defect = nullptr;
 };
 
 /// Round-off of a configuration with coordinates up to `magnitude` [m or rad]: increments below it are noise.

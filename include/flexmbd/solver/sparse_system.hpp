@@ -39,8 +39,6 @@ class SparseSystem {
   /// Solves J dx = -residual, factorising the last assembled tangent first if `refactorise` (otherwise the
   /// previous factorisation is reused). Returns false if the matrix is singular.
   bool Solve(Eigen::VectorXd* dx, bool refactorise = true);
-  /// Solves J y = b in place with the current factorisation. Returns false if there is none or y is not finite.
-  bool SolveWithFactorisation(Eigen::VectorXd* b);
 
   int num_nonzeros() const { return static_cast<int>(values_.size()); }
   /// Threads that evaluated the elements in the last assembly: 1, or solver.threads once assemblies of that kind

@@ -4,7 +4,6 @@
 #include <cmath>
 #include <limits>
 
-#include "flexmbd/elements/rigid_body.hpp"
 #include "flexmbd/model/model.hpp"
 #include "flexmbd/solver/joint_rates.hpp"
 #include "flexmbd/solver/sparse_system.hpp"
@@ -52,31 +51,6 @@ bool SameModes(const std::vector<EffectState>& a, const std::vector<EffectState>
 double DissipationFromRhoInf(double rho_inf) {
   // Unresolved-mode limit of (T3)-(T4): rho (1 - rho) = 2 alpha (1 + rho)^2 (docs/theory.md).
   return rho_inf * (1.0 - rho_inf) / (2.0 * (1.0 + rho_inf) * (1.0 + rho_inf));
-}
-
-bool NodeTermDefect(const Model& model, const StepContext& ctx, const std::vector<NodeSchemeCoefficients>& then,
-                    const std::vector<NodeSchemeCoefficients>& now, const Eigen::VectorXd& dx,
-                    Eigen::VectorXd* defect) {
-  const double h = ctx.h;
-  const auto rate_change = [h](double alpha_now, double alpha_then) {
-    return 1.0 / (h * (0.5 + alpha_now)) - 1.0 / (h * (0.5 + alpha_then));
-  };
-  bool any = false;
-  defect->setZero(dx.size());
-  for (const RigidBody* body : model.rigid_bodies()) {
-    const int k = body->node(), u = model.node_unknown(k);
-    if (now[k].alpha_translation != then[k].alpha_translation) {
-      const double change = rate_change(now[k].alpha_translation, then[k].alpha_translation);
-      defect->segment<3>(u) += (body->mass() / h * change) * dx.segment<3>(u);
-      any = true;
-    }
-    if (now[k].alpha_rotation != then[k].alpha_rotation) {
-      const double change = rate_change(now[k].alpha_rotation, then[k].alpha_rotation);
-      defect->segment<3>(u + 3) += (change / h) * (Exp((*ctx.nodes)[k].theta) * (body->inertia() * dx.segment<3>(u + 3)));
-      any = true;
-    }
-  }
-  return any;
 }
 
 EnergyDecayingIntegrator::EnergyDecayingIntegrator(const Model& model, SparseSystem* system)
@@ -256,13 +230,6 @@ StepResult EnergyDecayingIntegrator::SolveStep(const State& start, double h, Sta
   // holds (TangentReuse); a solve redone within the step reuses this step's own.
   const bool earlier_tangent = system_->factorisation_key() == h && tangent_reuse_.Attempt();
   bool first_solve = true;
-  // The node terms this step's factorisation was assembled with (empty while it has none of its own): a solve
-  // after terms were dropped corrects its increments for them (NodeTermDefect).
-  std::vector<NodeSchemeCoefficients> factorised_nodes;
-  const auto defect = [&](const Eigen::VectorXd& dx, Eigen::VectorXd* out) {
-    return !factorised_nodes.empty() &&
-           NodeTermDefect(model_, builder_.context(), factorised_nodes, coefficients.nodes, dx, out);
-  };
   while (true) {
     int tangents = 0;
     const double tol = judging_dissipation ? kDissipationJudgedAt : model_.solver().tol;
@@ -276,7 +243,6 @@ StepResult EnergyDecayingIntegrator::SolveStep(const State& start, double h, Sta
           builder_.set_geometric_stiffness(with_tangent && tangents > 1);
           builder_.set_variable_dissipation(coefficients.variables);
           builder_.set_element_dissipation(coefficients.elements);
-          if (with_tangent) factorised_nodes = coefficients.nodes;
           return builder_.Dynamic(start, unknowns, h, coefficients.nodes);
         },
         [&](const Eigen::VectorXd& increment) {
@@ -284,8 +250,7 @@ StepResult EnergyDecayingIntegrator::SolveStep(const State& start, double h, Sta
           return (unknowns.head(n_kinematic) - coasting).cwiseAbs().maxCoeff() + h * h * kAccelerationFloor;
         },
         NewtonOptions{first_solve ? earlier_tangent : system_->factorisation_key() == h, judging_dissipation,
-                      judging_dissipation ? ExpectedJudgingContraction() : std::numeric_limits<double>::quiet_NaN(),
-                      false, defect});
+                      judging_dissipation ? ExpectedJudgingContraction() : std::numeric_limits<double>::quiet_NaN()});
     if (judging_dissipation) {
       // A solve that stopped on the expectation measured no rate: the expectation ages by the same power at each
       // use until a solve measures the rate again (NaN stays NaN).

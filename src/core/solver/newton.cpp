@@ -79,7 +79,7 @@ NewtonReport SolveNewton(const Model& model, SparseSystem* system, double tol, i
   constexpr double kMaxSimplifiedIterations = 3.0;
   NewtonReport report;
   const int n_kinematic = model.num_unknowns() - model.num_multipliers();
-  Eigen::VectorXd increment, applied, defect;
+  Eigen::VectorXd increment, applied;
   bool refresh = !(options.reuse_tangent && system->has_factorisation());
   bool tangent_from_earlier_step = !refresh;
   double previous_size = std::numeric_limits<double>::infinity();
@@ -95,13 +95,6 @@ NewtonReport SolveNewton(const Model& model, SparseSystem* system, double tol, i
     if (!system->Solve(&increment, refresh)) {
       report.singular = true;
       return report;
-    }
-    // A known change of the system since the factorisation (J = J_f + dJ): one step of the splitting
-    // dx = J_f^-1 (-r - dJ dx) squares the contraction that dJ alone would give (an energy-decaying step's dropped
-    // node terms: 0.06 per iteration; bench/README.md, speed7).
-    if (!refresh && options.tangent_defect && options.tangent_defect(increment, &defect) &&
-        system->SolveWithFactorisation(&defect)) {
-      increment -= defect;
     }
     const double size = increment.head(n_kinematic).cwiseAbs().maxCoeff();
     if (!refresh && size >= previous_size) {

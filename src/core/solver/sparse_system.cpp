@@ -169,20 +169,13 @@ bool SparseSystem::Factorise() {
 bool SparseSystem::has_factorisation() const { return klu_->numeric != nullptr; }
 
 bool SparseSystem::Solve(Eigen::VectorXd* dx, bool refactorise) {
-  const auto start = std::chrono::steady_clock::now();
+  auto start = std::chrono::steady_clock::now();
   const bool factorised = (refactorise || klu_->numeric == nullptr) ? Factorise() : true;
   timing_.factorisation += SecondsSince(start);
   if (!factorised) return false;
-  *dx = -residual_;
-  return SolveWithFactorisation(dx);
-}
-
-bool SparseSystem::SolveWithFactorisation(Eigen::VectorXd* b) {
-  if (klu_->numeric == nullptr) return false;
-  const auto start = std::chrono::steady_clock::now();
-  // The rows were scaled before the factorisation (Factorise): the right-hand side is scaled the same way.
-  *b = b->cwiseQuotient(factor_scale_);
-  const bool solved = klu_solve(klu_->symbolic, klu_->numeric, n_, 1, b->data(), &klu_->common) && b->allFinite();
+  start = std::chrono::steady_clock::now();
+  *dx = (-residual_).cwiseQuotient(factor_scale_);
+  const bool solved = klu_solve(klu_->symbolic, klu_->numeric, n_, 1, dx->data(), &klu_->common) && dx->allFinite();
   timing_.solve += SecondsSince(start);
   return solved;
 }
