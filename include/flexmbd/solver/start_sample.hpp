@@ -11,8 +11,9 @@ namespace flexmbd {
 class Model;
 struct State;
 
-/// The sample at `state`, the start of a run whose first step is h [s], with the mean forces of a step of 1e-3 h from
-/// it; where that step does not converge, with the state's own multipliers.
+/// The sample at `state`, the start of a run whose first step is h [s], with the mean forces of steps of 1e-3 h and
+/// 2e-3 h from it extrapolated to a step of length 0; where such a step does not converge, with the state's own
+/// multipliers.
 OutputSample StartSample(const Model& model, const State& state, double h);
 
 }  // namespace flexmbd
