@@ -51,7 +51,7 @@ class BeamStripAero : public Element {
                 int first_state_unknown, const StripFlap& flap = StripFlap(), const StripRotor& rotor = StripRotor());
 
   int num_states() const override { return inflow_.b.size(); }
-  double StateScale(int) const override { return scale_; }
+  double StateScale(int) const override { return PetersStateScale(scale_); }
   std::string StateName(int k) const override { return "mu_" + std::to_string(k + 1); }
   std::string StateOwnerName() const override { return "aero strip " + name_; }
 
@@ -137,7 +137,7 @@ class BeamStripAero : public Element {
   PetersInflow inflow_;
   Eigen::VectorXd lag_;  ///< Abar^-1 cbar: lambda - mu per unit w34
   double lag0_ = 0;      ///< bbar^T Abar^-1 cbar / 2: lambda0 - bbar^T mu / 2 per unit w34
-  double scale_;         ///< size of the states [m/s]
+  double scale_;         ///< speed of the free stream [m/s], the size of the states (PetersStateScale)
   StripFlap flap_;
   ThinAirfoilLoads flap_loads_;  ///< the section's generalised loads with the flap's hinge (A4), (A5)
   Vec3 flap_chord_, flap_pitch_axis_;  ///< chord and pitch axes in the flap node's frame

@@ -31,7 +31,7 @@ class TypicalSectionAero : public Element {
                      int first_state_unknown);
 
   int num_states() const override { return inflow_.b.size(); }
-  double StateScale(int) const override { return velocity_; }
+  double StateScale(int) const override { return PetersStateScale(velocity_); }
   std::string StateName(int k) const override { return "mu_" + std::to_string(k + 1); }
   std::string StateOwnerName() const override { return "aero section " + name_; }
   const std::string& name() const { return name_; }

@@ -35,6 +35,7 @@ class EnergyDecayingIntegrator : public TimeIntegrator {
 
   StepResult Step(const State& start, double h, State* end) override;
   const StepContext& last_context() const override { return builder_.context(); }
+  const State* last_projected_start() const override { return started_projected_ ? &projected_start_ : nullptr; }
 
  private:
   // The dissipation coefficient of each node (kinetic part) and of each joint variable (its springs).
@@ -84,6 +85,7 @@ class EnergyDecayingIntegrator : public TimeIntegrator {
   /// Time of the start from which a step much shorter than the one before was redone for a friction event (StartOf).
   double short_event_start_ = std::numeric_limits<double>::quiet_NaN();
   State projected_start_;  ///< a start with its velocities projected (StartOf)
+  bool started_projected_ = false;  ///< the last step attempted started from projected_start_
   TangentReuse tangent_reuse_;     ///< whether a step starts from the previous one's factorisation, learnt
   DissipationJudging judging_;      ///< when a step judges its dissipation terms, learnt from the steps taken
   std::vector<double> elements_all_on_;  ///< by Element::index(): alpha_inf for elements with a stretch of their own

@@ -47,6 +47,8 @@ class StepController {
   void BookTrial(const StepResult& result);
   /// The run starts with steps of size h: without an estimate the first steps stay at it.
   void Start(double h);
+  /// A motion of a new pace starts (a commanded set-point): until the estimate restarts, the steps stay at most h.
+  void Restart(double h);
 
   /// Books the outcome of a step of size h and returns the size of the next attempt [s].
   double Next(double h, const StepResult& result);

@@ -44,6 +44,10 @@ class TimeIntegrator {
 
   /// The context of the last converged step (for outputs such as joint efforts).
   virtual const StepContext& last_context() const = 0;
+
+  /// The start of the last step attempted where it was not the given state but that state with its velocities
+  /// projected (a drive's rate jump, a redone friction event: docs/theory.md); null where it was the given state.
+  virtual const State* last_projected_start() const { return nullptr; }
 };
 
 /// The scheme the model's solver settings name.

@@ -23,6 +23,13 @@ class Model;
 class SparseSystem;
 struct State;
 
+/// Solves a step of size h from `state` by the trapezoidal rule (no scheme dissipation), in the modes and with the
+/// drive rates `builder` is set to; the context of its converged end, valid until `builder` is used again, or null if
+/// Newton did not converge. With h -> 0 its mean velocities are the projection of the start velocities, and its mean
+/// forces, where those meet the constraints, the start's own.
+const StepContext* SolveLimitingStep(const Model& model, SparseSystem* system, StepContextBuilder* builder,
+                                     const State& state, double h);
+
 class VelocityProjection {
  public:
   VelocityProjection(const Model& model, SparseSystem* system);

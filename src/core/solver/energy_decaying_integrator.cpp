@@ -182,7 +182,9 @@ double EnergyDecayingIntegrator::ExpectedJudgingContraction() const {
 }
 
 StepResult EnergyDecayingIntegrator::Step(const State& given, double h, State* end) {
-  const StepResult result = SolveStep(StartOf(given, h), h, end);
+  const State& start = StartOf(given, h);
+  started_projected_ = &start == &projected_start_;
+  const StepResult result = SolveStep(start, h, end);
   if (result.status == StepStatus::kRejectedEvent && end_rate_event_ && h < kShortStepFraction * given.h_prev) {
     short_event_start_ = given.t;
   }

@@ -6,6 +6,7 @@
 
 #include "flexmbd/common/error.hpp"
 #include "flexmbd/solver/smoothed_rates.hpp"
+#include "flexmbd/solver/start_sample.hpp"
 #include "flexmbd/solver/starting_step.hpp"
 #include "flexmbd/solver/static_start_rates.hpp"
 #include "flexmbd/solver/step_context_builder.hpp"
@@ -125,9 +126,19 @@ void Simulation::SetSetpoint(int variable, double setpoint, double time_constant
                       " is not a finite number > 0 [s]");
   }
   VariableCommand& command = state_.commands[variable];
+  const bool new_pace = !command.has_setpoint || command.setpoint != setpoint || command.time_constant != time_constant;
   command.has_setpoint = true;
   command.setpoint = setpoint;
   command.time_constant = time_constant;
+  const SolverSpec& solver = model_.solver();
+  if (new_pace && solver.adaptive) {
+    // The lag's rate jumps here, and the error estimate restarts after it (docs/theory.md, "Commands"): until it is
+    // back, the steps are those it would allow the lag, whose local error h^3 |q'''| / 12 = h^3 |q'| / (12 tau^2)
+    // (T12) is error_tol h |q'| at h = tau sqrt(12 error_tol).
+    const double resolving = time_constant * std::sqrt(12.0 * solver.error_tol);
+    h_ = std::min(h_, resolving);
+    controller_.Restart(resolving);
+  }
 }
 
 void Simulation::CheckCommand(int variable, const char* what, double value) const {
@@ -169,16 +180,16 @@ void Simulation::Begin(const SampleSink& sink) {
     const int from = initial[k].mode, to = state_.effects[k].mode;
     if (from != to) effect_events_.push_back({state_.t, static_cast<int>(k), from, to});
   }
-  previous_ = SampleAtState(0.0, 0);
-  sink(previous_);
-  next_sample_ = 1;
-  t_start_ = state_.t;
   const SolverSpec& solver = model_.solver();
   h_ = std::min(solver.dt, solver.dt_max);
   if (solver.adaptive) {
     h_ = ChooseStartingStep(integrator_.get(), state_, h_, solver.dt_min, &controller_);
     controller_.Start(h_);
   }
+  previous_ = StartSample(model_, state_, h_);
+  sink(previous_);
+  next_sample_ = 1;
+  t_start_ = state_.t;
 }
 
 void Simulation::AdvanceTo(double t_until, double t_end, const SampleSink& sink) {
@@ -208,7 +219,15 @@ void Simulation::AdvanceTo(double t_until, double t_end, const SampleSink& sink)
       state_.history_steps = 0;
     }
     if (result.status == StepStatus::kAccepted) {
-      const OutputSample current = MakeSample(model_, state_, integrator_->last_context(), h, result.newton.iterations);
+      const StepContext& ctx = integrator_->last_context();
+      const OutputSample current = MakeSample(model_, state_, ctx, h, result.newton.iterations);
+      // A step that started from projected velocities (after a drive's rate jump) moves from them, not from the rates
+      // the last step ended with: its samples start there, with its own forces.
+      if (const State* start = integrator_->last_projected_start()) {
+        State moved_from = *start;
+        moved_from.lambda = state_.lambda;
+        previous_ = MakeSample(model_, moved_from, ctx, h, result.newton.iterations);
+      }
       if (sample_period == 0) {
         sink(current);
       } else {

@@ -62,6 +62,11 @@ void StepController::Start(double h) {
   estimated_next_ = h;
 }
 
+void StepController::Restart(double h) {
+  estimated_next_ = std::min(estimated_next_, h);
+  previous_error_ = 0;
+}
+
 double StepController::Next(double h, const StepResult& result) {
   stats_.newton_iterations += result.newton.iterations;
   stats_.tangents += result.newton.tangents;

@@ -20,23 +20,30 @@ constexpr double kLimitingStepFraction = 1.0e-4;
 VelocityProjection::VelocityProjection(const Model& model, SparseSystem* system)
     : model_(model), system_(system), builder_(model), redundancy_(model) {}
 
-bool VelocityProjection::SolveLimitingStep(const State& state, double h, MeanMotion* mean) {
-  const int n_kinematic = model_.num_unknowns() - model_.num_multipliers();
-  const Eigen::VectorXd coasting = CoastingIncrements(model_, state, h);
-  Eigen::VectorXd unknowns = Eigen::VectorXd::Zero(model_.num_unknowns());
+const StepContext* SolveLimitingStep(const Model& model, SparseSystem* system, StepContextBuilder* builder,
+                                     const State& state, double h) {
+  const int n_kinematic = model.num_unknowns() - model.num_multipliers();
+  const Eigen::VectorXd coasting = CoastingIncrements(model, state, h);
+  Eigen::VectorXd unknowns = Eigen::VectorXd::Zero(model.num_unknowns());
   unknowns.head(n_kinematic) = coasting;
-  const std::vector<NodeSchemeCoefficients> trapezoidal(model_.num_nodes());
-  system_->set_factorisation_key(std::numeric_limits<double>::quiet_NaN());
+  const std::vector<NodeSchemeCoefficients> trapezoidal(model.num_nodes());
+  system->set_factorisation_key(std::numeric_limits<double>::quiet_NaN());
   const NewtonReport report = SolveNewton(
-      model_, system_, model_.solver().tol, model_.solver().max_iterations, NoiseFloor(model_, state),
-      [&](int, bool) -> const StepContext& { return builder_.Dynamic(state, unknowns, h, trapezoidal); },
+      model, system, model.solver().tol, model.solver().max_iterations, NoiseFloor(model, state),
+      [&](int, bool) -> const StepContext& { return builder->Dynamic(state, unknowns, h, trapezoidal); },
       [&](const Eigen::VectorXd& increment) {
         unknowns += increment;
         return (unknowns.head(n_kinematic) - coasting).cwiseAbs().maxCoeff() + h * kMotionFloor;
       });
-  system_->set_factorisation_key(std::numeric_limits<double>::quiet_NaN());
-  if (!report.converged) return false;
-  const StepContext& ctx = builder_.Dynamic(state, unknowns, h, trapezoidal);
+  system->set_factorisation_key(std::numeric_limits<double>::quiet_NaN());
+  if (!report.converged) return nullptr;
+  return &builder->Dynamic(state, unknowns, h, trapezoidal);
+}
+
+bool VelocityProjection::SolveLimitingStep(const State& state, double h, MeanMotion* mean) {
+  const StepContext* limit = flexmbd::SolveLimitingStep(model_, system_, &builder_, state, h);
+  if (limit == nullptr) return false;
+  const StepContext& ctx = *limit;
   mean->v.resize(model_.num_nodes());
   mean->w.resize(model_.num_nodes());
   for (int k = 0; k < model_.num_nodes(); ++k) {

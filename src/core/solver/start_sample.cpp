@@ -1,0 +1,81 @@
+#include "flexmbd/solver/start_sample.hpp"
+
+#include <type_traits>
+#include <vector>
+
+#include "flexmbd/effects/modal_effect.hpp"
+#include "flexmbd/model/model.hpp"
+#include "flexmbd/solver/sparse_system.hpp"
+#include "flexmbd/solver/step_context_builder.hpp"
+#include "flexmbd/solver/sticking_redundancy.hpp"
+#include "flexmbd/solver/velocity_projection.hpp"
+
+namespace flexmbd {
+namespace {
+// The steps' mean forces are the start's to O(h F'), 1e-3 of what one first step changes them by (the generalized-
+// alpha starter's fraction), extrapolated to O(h^2); their motion stays far above the constraint tolerance.
+constexpr double kVanishingStepFraction = 1.0e-3;
+// Mode revisions of that step, as a step allows them (a stop and a friction may each change once or twice).
+constexpr int kMaxModeRevisions = 4;
+
+// The sample of `state` with the mean forces of one step of size `step` from it, in the modes that step takes, revised
+// as a step revises them (a stuck joint whose load exceeds its static bound slides from the start: in the state's
+// mode its sticking force broke the bound (F3) 1.5-130 times); the state's own multipliers if it does not converge.
+OutputSample VanishingStepSample(const Model& model, SparseSystem* system, const State& state, double step,
+                                 std::vector<EffectState>* modes) {
+  StepContextBuilder builder(model);
+  builder.set_effect_modes(modes);
+  StickingRedundancy redundancy(model);
+  const StepContext* ctx = nullptr;
+  for (int revisions = 0; revisions <= kMaxModeRevisions; ++revisions) {
+    redundancy.Mark(state, modes);
+    ctx = SolveLimitingStep(model, system, &builder, state, step);
+    if (ctx == nullptr) return MakeSample(model, state, builder.AtState(state), 0.0, 0);
+    bool revised = false;
+    for (const ModalEffect* effect : model.modal_effects()) {
+      const int mode = effect->ReviseMode(*ctx);
+      revised = revised || mode != (*modes)[effect->slot()].mode;
+      (*modes)[effect->slot()].mode = mode;
+    }
+    if (!revised) break;
+  }
+  State with_forces = state;
+  with_forces.lambda = *ctx->lambda;
+  return MakeSample(model, with_forces, *ctx, 0.0, 0);
+}
+}  // namespace
+
+OutputSample StartSample(const Model& model, const State& state, double h) {
+  // A system of its own: the run's factorisations keep the pivot order of its own first step.
+  SparseSystem system(model);
+  std::vector<EffectState> modes = state.effects;
+  const double step = kVanishingStepFraction * h;
+  OutputSample single = VanishingStepSample(model, &system, state, step, &modes);
+  OutputSample twice = VanishingStepSample(model, &system, state, 2.0 * step, &modes);
+  // Richardson: the mean forces over the two steps, 2 single - twice (Interpolate at -1 step lengths for the columns it
+  // mixes), are those of a step of length 0 (exact for forces linear in time, such as a ramp's); the state's own
+  // quantities are the same in both and stay exact (2 x - x = x). Interpolate takes the stations' displacements and
+  // rotations along the motion, and the stops' and friction's forces from one end: those are set here.
+  single.t = 1.0;
+  twice.t = 2.0;
+  OutputSample start = Interpolate(single, twice, 0.0);
+  start.t = state.t;
+  auto extrapolated = [](const auto& now, const auto& later) -> std::decay_t<decltype(now)> { return 2.0 * now - later; };
+  start.beam_stations = single.beam_stations;
+  for (size_t k = 0; k < start.beam_stations.size(); ++k) {
+    start.beam_stations[k].load = extrapolated(single.beam_stations[k].load, twice.beam_stations[k].load);
+  }
+  start.stops = single.stops;
+  for (size_t k = 0; k < start.stops.size(); ++k) {
+    start.stops[k].force = extrapolated(single.stops[k].force, twice.stops[k].force);
+    start.stops[k].torque = extrapolated(single.stops[k].torque, twice.stops[k].torque);
+  }
+  start.friction = single.friction;
+  for (size_t k = 0; k < start.friction.size(); ++k) {
+    start.friction[k].torque = extrapolated(single.friction[k].torque, twice.friction[k].torque);
+    start.friction[k].normal_force = extrapolated(single.friction[k].normal_force, twice.friction[k].normal_force);
+  }
+  return start;
+}
+
+}  // namespace flexmbd
