@@ -155,8 +155,17 @@ flexmbd::EigenOptions EigenOptionsOf(const flexmbd::SolverSpec::EigenSettings& s
   return options;
 }
 
+// solver.eigen.modes beyond the modes the analysis found: all of them are printed, and the user is told why the
+// table is shorter than asked.
+void WarnIfFewerModes(int asked, size_t found) {
+  if (asked <= static_cast<int>(found)) return;
+  std::fprintf(stderr, "flexmbd_run: warning: solver.eigen.modes: %d asked for, the model has %zu; all %zu printed\n",
+               asked, found, found);
+}
+
 // The mode table of an eigen-analysis about the state at time t, with its heading line.
-void PrintModesAt(double t, const flexmbd::EigenResult& result) {
+void PrintModesAt(double t, const flexmbd::EigenResult& result, int asked) {
+  WarnIfFewerModes(asked, result.modes.size());
   std::printf("flexmbd_run: eigen-analysis at t = %.6g s (%s): %d degrees of freedom, %d rigid-body modes\n", t,
               result.method.c_str(), result.num_dof, result.num_rigid_body);
   std::fputs(flexmbd::FormatModeTable(result).c_str(), stdout);
@@ -167,7 +176,8 @@ void PrintModesAt(double t, const flexmbd::EigenResult& result) {
 // a time of a run"). A failure names the time.
 void PrintModesOfRunState(const flexmbd::Model& model, const flexmbd::State& state) {
   try {
-    PrintModesAt(state.t, flexmbd::EigenAnalysis(model, state, EigenOptionsOf(model.solver().eigen)));
+    PrintModesAt(state.t, flexmbd::EigenAnalysis(model, state, EigenOptionsOf(model.solver().eigen)),
+                 model.solver().eigen.modes);
   } catch (const flexmbd::SolverError& e) {
     char when[64];
     std::snprintf(when, sizeof(when), "eigen-analysis at t = %.6g s: ", state.t);
@@ -178,6 +188,7 @@ void PrintModesOfRunState(const flexmbd::Model& model, const flexmbd::State& sta
 // A fan-plot table on the standard output and, with output.csv (or --csv), as CSV there for scripts/plot_fan.py.
 void PrintFanPlot(const std::vector<flexmbd::SweepPoint>& points, const char* parameter, int modes,
                   const std::string& csv) {
+  if (!points.empty()) WarnIfFewerModes(modes, points.front().result.modes.size());
   std::fputs(flexmbd::FormatFanPlot(points, parameter, modes).c_str(), stdout);
   if (csv.empty()) return;
   std::ofstream file(csv);
@@ -207,6 +218,7 @@ void RunEigenAboutSteadyRotation(const flexmbd::Model& model, const flexmbd::Eig
   std::printf("flexmbd_run: eigen-analysis about the steady rotation (%s): %d degrees of freedom, %d rigid-body "
               "modes\n",
               result.method.c_str(), result.num_dof, result.num_rigid_body);
+  WarnIfFewerModes(settings.modes, result.modes.size());
   std::fputs(flexmbd::FormatModeTable(result).c_str(), stdout);
 }
 
@@ -284,7 +296,7 @@ void RunEigen(const flexmbd::ModelSpec& spec, const flexmbd::Model& model) {
     PrintFanPlot(points, "velocity_scale", settings.modes, model.output().csv);
     return;
   }
-  PrintModesAt(state.t, flexmbd::EigenAnalysis(model, state, options));
+  PrintModesAt(state.t, flexmbd::EigenAnalysis(model, state, options), settings.modes);
 }
 
 }  // namespace

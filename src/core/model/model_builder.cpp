@@ -414,6 +414,7 @@ Model BuildModel(const ModelSpec& spec) {
   }
   CheckOutputSize(model);
   CheckEigenSize(model);
+  CheckSparseEigenStates(model);
   return model;
 }
 
