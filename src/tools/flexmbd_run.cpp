@@ -5,8 +5,8 @@
 // --columns F it writes to F the CSV's header row, the columns a run would write (not for an eigen-analysis), so that
 // a sweep's metrics can be checked against them before any case runs.
 // Exit status (flexmbd/common/exit_status.hpp): 0 success, 1 usage error, 2 bad input (ConfigError), 3 the run
-// failed (SolverError, or an output file that cannot be written), 4 an unexpected error (a bug); every failure
-// prints one line on stderr.
+// failed (SolverError, or an output file that cannot be written), 4 an unexpected error (a bug), 130 stopped by
+// SIGINT or SIGTERM (after the step in progress, the recordings closed); every failure prints one line on stderr.
 
 #include <chrono>
 #include <cstdio>
@@ -20,6 +20,7 @@
 #include "flexmbd/io/config_loader.hpp"
 #include "flexmbd/io/csv_sink.hpp"
 #include "flexmbd/ros/sample_fan_out.hpp"
+#include "flexmbd/ros/stop_signal.hpp"
 #include "flexmbd/io/text_file.hpp"
 #include "flexmbd/ros/transform_frames.hpp"
 #include "flexmbd/solver/damping_crossing.hpp"
@@ -340,6 +341,10 @@ int main(int argc, char** argv) {
     }
     flexmbd::ros::SampleFanOut outputs(model, files, flexmbd::ros::DefaultTopicNames(), std::move(static_transforms));
     flexmbd::Simulation simulation(model);
+    // Ctrl-C or a kill while the files are written: the run stops after its step, and the files are closed whole
+    // (a killed runner left the bag unindexed and the CSV's last row cut, explore23 ros/runner_sigint).
+    flexmbd::ros::InstallStopHandlers();
+    simulation.StopWhen(flexmbd::ros::StopRequested);
     flexmbd::OutputSample last;
     CycleReport cycle(model);
     flexmbd::ros::SampleMessages messages;  // refilled for every sample, reusing its storage
@@ -363,6 +368,11 @@ int main(int argc, char** argv) {
       return flexmbd::kExitRunFailed;
     }
     outputs.Close();
+    if (flexmbd::ros::StopRequested()) {
+      std::fprintf(stderr, "flexmbd_run: interrupted at t = %.6g s (SIGINT or SIGTERM); %ld samples written, the "
+                   "recordings closed\n", simulation.state().t, samples);
+      return flexmbd::kExitInterrupted;
+    }
     const double wall_seconds =
         samples > 0 ? std::chrono::duration<double>(Clock::now() - first_sample_wall).count() : 0.0;
     PrintSummary(simulation, last, samples, wall_seconds);

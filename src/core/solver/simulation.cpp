@@ -105,6 +105,7 @@ void Simulation::Run(const SampleSink& sink, const std::vector<double>& instants
   const bool rates_alternate = solver.integrator != SolverSpec::Integrator::kGeneralizedAlpha;
   for (double t : instants) {
     AdvanceTo(t, t, sink);  // with t as the end, the last step is cut to land on it
+    if (Stopped()) return;
     at_instant(rates_alternate ? WithSmoothedRates(state_) : state_);
   }
   AdvanceTo(solver.t_end, solver.t_end, sink);
@@ -186,7 +187,7 @@ void Simulation::Begin(const SampleSink& sink) {
 void Simulation::AdvanceTo(double t_until, double t_end, const SampleSink& sink) {
   const SolverSpec& solver = model_.solver();
   const double sample_period = model_.output().rate_hz > 0 ? 1.0 / model_.output().rate_hz : 0.0;
-  while (state_.t < std::min(t_until, t_end) - kTimeEpsilon * h_) {
+  while (state_.t < std::min(t_until, t_end) - kTimeEpsilon * h_ && !Stopped()) {
     // Steps land on t_end and on every breakpoint of the time functions before it, never across one, except one
     // closer than dt_min: the step after a landing grows from the landing's size, and a table's 1e-9 s edge landed on
     // left the run below dt_min.
