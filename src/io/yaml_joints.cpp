@@ -116,9 +116,10 @@ void CheckUrdfDynamicsKept(const Field& field, const JointSpec& joint) {
   if (NumJointVariables(joint.type) > 0 || joint.effects.empty()) return;
   const VariableEffectsSpec& urdf = joint.effects.front();
   if (urdf.dampers.empty() && urdf.frictions.empty()) return;
-  const std::string what = !urdf.dampers.empty() && !urdf.frictions.empty() ? "<dynamics damping> and <dynamics friction>"
-                           : !urdf.dampers.empty()                          ? "<dynamics damping>"
-                                                                            : "<dynamics friction>";
+  const bool damping = !urdf.dampers.empty(), friction = !urdf.frictions.empty();
+  const std::string what = damping && friction ? "<dynamics damping> and <dynamics friction>"
+                           : damping           ? "<dynamics damping>"
+                                               : "<dynamics friction>";
   field.Child("type").Fail("a " + JointLabel(joint) + " has no variable to carry the URDF's " + what +
                            "; expected no <dynamics> on a joint made " + JointTypeName(joint.type) +
                            " (or a type with a variable)");

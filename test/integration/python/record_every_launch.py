@@ -20,8 +20,8 @@ import rospy
 import rostest
 
 # A few samples of each case: 2 (the antenna's 20 Hz) to 51 (the blade drop's 1000 Hz) by 0.05 s, fewer than the
-# recorder's queue of 100, so none is dropped at real_time_factor 0. The wing with aileron and the blade drop start from a static
-# equilibrium, which takes longer than the steps.
+# recorder's queue of 100, so none is dropped at real_time_factor 0. The wing with aileron and the blade drop
+# start from a static equilibrium, which takes longer than the steps.
 T_END = '0.05'
 # roslaunch's start, the node's load and build and the recorder's start on a loaded 2-core machine: a few
 # seconds each; the node's own bound on the wait for the recorder (~wait_for_subscribers_timeout) is 60 s.
