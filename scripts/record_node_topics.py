@@ -10,13 +10,18 @@ waiting for a subscriber on every sample topic, never started.
 """
 
 import os
+import signal
 import sys
 import time
 
-import rosgraph
-import rosgraph.names
-import roslib.packages
-import rospy
+# roslaunch ends the recorder with SIGINT when the node ends, perhaps before the node listed its topics (a node that
+# refused its input): quietly, even in the middle of the imports below. rosbag record, exec'd, has its own handler.
+signal.signal(signal.SIGINT, lambda *_: os._exit(0))
+
+import rosgraph  # noqa: E402 (after the handler)
+import rosgraph.names  # noqa: E402
+import roslib.packages  # noqa: E402
+import rospy  # noqa: E402
 
 # The node sets the list after loading and building its model (a second or two; large beams take longer on a
 # loaded machine); a node that fails to load ends the launch first (required="true").
@@ -58,10 +63,7 @@ def main():
         print(f'record_node_topics.py: record:={bag} is the bag the node writes (bag:=); expected another file '
               '(the recorder would replace the node\'s bag)', file=sys.stderr)
         return 2
-    try:
-        topics = recorded_topics(master, parameter)
-    except KeyboardInterrupt:  # the launch ended before the node was up
-        return 0
+    topics = recorded_topics(master, parameter)
     if not topics:
         print(f'record_node_topics.py: {parameter} not set after {WAIT_SECONDS:g} s; expected the flexmbd node '
               f'{node} of this namespace to have started and listed its topics', file=sys.stderr)
