@@ -151,6 +151,18 @@ def _figure(fields, parameters, metric_names):
     return figure.mapping
 
 
+def _check_paths_set_once(sweep_file, parameters):
+    """Two parameters setting one path would write both values into the case and label the row with one of them,
+    while the run takes the other."""
+    setters = {}
+    for parameter in parameters:
+        for path in parameter.paths:
+            if path in setters:
+                raise SweepError(f'{sweep_file}: {parameter.field}: path {path!r} is also set by {setters[path]}; '
+                                 'expected each config path in one parameter')
+            setters[path] = parameter.field
+
+
 def load_sweep_spec(sweep_file):
     document = load_yaml(sweep_file, 'sweep file')
     if not isinstance(document, dict):
@@ -167,6 +179,7 @@ def load_sweep_spec(sweep_file):
     for name in names:
         if names.count(name) > 1:
             root.fail('zip', f'parameter {name!r} is also in grid')
+    _check_paths_set_once(sweep_file, grid + zipped)
     lengths = {len(p.values) for p in zipped}
     if len(lengths) > 1:
         root.fail('zip', f'every parameter needs as many values (have {", ".join(map(str, sorted(lengths)))})')

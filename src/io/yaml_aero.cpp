@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 #include "flexmbd/aero/typical_section_aero.hpp"
 #include "flexmbd/io/message_text.hpp"
@@ -61,6 +62,18 @@ AeroSectionSpec ReadSection(const Field& entry, const std::string& name, const U
   section.plunge = ReadJointName(entry.Child("plunge"), model, "plunge (prismatic)");
   section.pitch = ReadJointName(entry.Child("pitch"), model, "pitch (revolute, at the elastic axis)");
   section.flap = ReadJointName(entry.Child("flap"), model, "flap (revolute, at the hinge)");
+  // One joint in two roles would move the section twice by one variable (and pitch and flap are both revolute,
+  // so the joint types do not catch it).
+  const std::pair<const char*, const std::string*> roles[] = {
+      {"plunge", &section.plunge}, {"pitch", &section.pitch}, {"flap", &section.flap}};
+  for (int k = 1; k < 3; ++k) {
+    for (int j = 0; j < k; ++j) {
+      if (*roles[k].second != *roles[j].second) continue;
+      entry.Child(roles[k].first)
+          .Fail("joint '" + *roles[k].second + "' is the section's " + roles[j].first +
+                " already; expected a joint of its own for each of plunge, pitch and flap");
+    }
+  }
   section.semichord = ReadNumber(entry.Child("semichord"), Quantity{"a semichord", Bound::kPositive, "m"});
   section.a = ReadChordPosition(entry.Child("a"), "the elastic axis a");
   section.c = ReadChordPosition(entry.Child("c"), "the flap hinge c");

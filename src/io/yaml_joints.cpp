@@ -110,6 +110,21 @@ void CheckSecondAxis(const Field& field, const JointSpec& joint) {
   }
 }
 
+// The URDF's <dynamics> act on variable 0 (urdf_reader.cpp); a type without variables (spherical, fixed) would drop
+// them without a word, where the other types carry them or refuse them (ValidateFriction).
+void CheckUrdfDynamicsKept(const Field& field, const JointSpec& joint) {
+  if (NumJointVariables(joint.type) > 0 || joint.effects.empty()) return;
+  const VariableEffectsSpec& urdf = joint.effects.front();
+  if (urdf.dampers.empty() && urdf.frictions.empty()) return;
+  const bool damping = !urdf.dampers.empty(), friction = !urdf.frictions.empty();
+  const std::string what = damping && friction ? "<dynamics damping> and <dynamics friction>"
+                           : damping           ? "<dynamics damping>"
+                                               : "<dynamics friction>";
+  field.Child("type").Fail("a " + JointLabel(joint) + " has no variable to carry the URDF's " + what +
+                           "; expected no <dynamics> on a joint made " + JointTypeName(joint.type) +
+                           " (or a type with a variable)");
+}
+
 void CheckKinematics(const Field& field, const JointSpec& joint) {
   try {
     MakeJointKinematics(joint);
@@ -277,6 +292,7 @@ void ReadJointGeometry(const Field& field, JointSpec* joint) {
   ReadTypeParameters(field, joint);
   CheckSecondAxis(field, *joint);
   CheckKinematics(field, *joint);
+  CheckUrdfDynamicsKept(field, *joint);
   ResizeJointVariables(joint);
 }
 

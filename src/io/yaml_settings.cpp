@@ -71,6 +71,11 @@ void ReadEigen(const Field& eigen, SolverSpec::EigenSettings* spec) {
                                     {{"auto", Method::kAuto}, {"dense", Method::kDense}, {"sparse", Method::kSparse}});
   }
   OverlayNumber(eigen, "shift_hz", Quantity{"a target frequency", Bound::kNonNegative, "Hz"}, &spec->shift_hz);
+  if (spec->method == Method::kDense && spec->shift_hz > 0) {
+    eigen.Child("shift_hz").Fail(eigen.Child("shift_hz").Text() + " picks the modes nearest it for the sparse method, "
+                                 "and method: dense finds every mode; expected no shift_hz with method: dense (or "
+                                 "method: sparse)");
+  }
   if (eigen.Child("about").present()) {
     spec->about = ReadEnum<About>(eigen.Child("about"), "state to linearise about",
                                   {{"initial_state", About::kInitialState}, {"steady_state", About::kSteadyState}});

@@ -53,7 +53,9 @@ void CheckPrivateNames(const YAML::Node& params, const std::string& private_name
 YAML::Node ReadExtensionParameters(const ::ros::NodeHandle& private_node) {
   XmlRpc::XmlRpcValue tree;
   if (!private_node.getParam(private_node.getNamespace(), tree)) return YAML::Node();
-  YAML::Node params = ToYamlWithout(tree, private_node.getNamespace(), NodeSettingNames());
+  std::vector<std::string> not_case = NodeSettingNames();
+  not_case.push_back(kRecordedTopicsParam);  // left by an earlier run of the node
+  YAML::Node params = ToYamlWithout(tree, private_node.getNamespace(), not_case);
   CheckPrivateNames(params, private_node.getNamespace());
   return params;
 }

@@ -79,7 +79,7 @@ class SettingReader {
 const std::vector<std::string>& NodeSettingNames() {
   static const std::vector<std::string> names{
       "urdf_file",  "real_time_factor",     "bag",          "bag_compression", "publish", "rate_hz",
-      "keep_alive", "wait_for_subscribers", "clock_rate_hz",    "paused",
+      "keep_alive", "wait_for_subscribers", "wait_for_subscribers_timeout", "clock_rate_hz", "paused",
       "setpoint_time_constant"};
   return names;
 }
@@ -104,6 +104,11 @@ NodeSettings ReadNodeSettings(const ::ros::NodeHandle& private_node) {
   settings.paused = read.Flag("paused", "true or false").value_or(settings.paused);
   settings.wait_for_subscribers =
       read.Count("wait_for_subscribers", "a number of subscribers >= 0").value_or(settings.wait_for_subscribers);
+  const std::string timeout_expected = "a time > 0 [s] (wall clock) to wait for ~wait_for_subscribers";
+  if (const std::optional<double> timeout = read.NonNegative("wait_for_subscribers_timeout", timeout_expected)) {
+    if (*timeout == 0.0) read.Fail("wait_for_subscribers_timeout", Value(*timeout), "is not > 0", timeout_expected);
+    settings.wait_for_subscribers_timeout = *timeout;
+  }
   const std::string clock_expected = "a rate in [0, " + std::to_string(static_cast<int>(kMaxClockRateHz)) +
                                      "] [Hz] of simulated time (0 = at every step and sample)";
   if (const std::optional<double> clock_rate = read.NonNegative("clock_rate_hz", clock_expected)) {

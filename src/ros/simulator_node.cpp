@@ -50,6 +50,7 @@ SimulatorNode::SimulatorNode(::ros::NodeHandle node, ::ros::NodeHandle private_n
     auto publisher = std::make_unique<TopicPublisher>(node_, private_node_, case_.model, static_transforms,
                                                       use_sim_time, [this] { control_.Notify(); });
     publisher_ = publisher.get();
+    private_node_.setParam(kRecordedTopicsParam, publisher->RecordedTopics());
     outputs_->AddLiveSink(std::move(publisher));
     if (use_sim_time) clock_ticks_.emplace(case_.settings.clock_rate_hz);
   }
@@ -201,17 +202,29 @@ std::optional<RunControl::Reply> SimulatorNode::Execute(RunControl::Command comm
 }
 
 bool SimulatorNode::SubscribersReady() {
+  const NodeSettings& settings = case_.settings;
   subscribers_ready_ =
-      subscribers_ready_ || !publisher_ || publisher_->MinSampleSubscribers() >= case_.settings.wait_for_subscribers;
-  if (!subscribers_ready_ && !waiting_reported_) {
-    // Said once: a start that waits for a recorder or client which never subscribes would otherwise hang mute.
-    const std::string topics = io::JoinNames(publisher_->SampleTopicsBelow(case_.settings.wait_for_subscribers));
+      subscribers_ready_ || !publisher_ || publisher_->MinSampleSubscribers() >= settings.wait_for_subscribers;
+  if (subscribers_ready_) return true;
+  const Clock::time_point now = Clock::now();
+  if (!wait_started_) wait_started_ = now;
+  // Said whenever the topics still missing change, not once: the line written before a recorder connected named
+  // every topic, and stayed the only word of a recorder that never took one of them (explore23 ros/record_hang).
+  const std::string topics = io::JoinNames(publisher_->SampleTopicsBelow(settings.wait_for_subscribers));
+  if (topics != waiting_on_) {
     ROS_INFO("flexmbd: waiting for %d subscriber(s) on each sample topic (~wait_for_subscribers) before the "
              "first sample; still missing on: %s",
-             case_.settings.wait_for_subscribers, topics.c_str());
-    waiting_reported_ = true;
+             settings.wait_for_subscribers, topics.c_str());
+    waiting_on_ = topics;
   }
-  return subscribers_ready_;
+  if (std::chrono::duration<double>(now - *wait_started_).count() > settings.wait_for_subscribers_timeout) {
+    std::ostringstream msg;
+    msg << "~wait_for_subscribers: still no subscriber on " << topics << " after "
+        << settings.wait_for_subscribers_timeout << " s (~wait_for_subscribers_timeout); expected " << settings.wait_for_subscribers
+        << " on every sample topic (a recorder of the topics in ~" << kRecordedTopicsParam << ")";
+    throw OutputError(msg.str());
+  }
+  return false;
 }
 
 bool SimulatorNode::OutputPending() const { return !pending_.empty() || (clock_ticks_ && !clock_ticks_->empty()); }

@@ -107,6 +107,14 @@ bool TopicPublisher::HasSubscribers() const {
   return false;
 }
 
+std::vector<std::string> TopicPublisher::RecordedTopics() const {
+  std::vector<std::string> names;
+  for (const QueuedTopic* topic : SampleTopics()) names.push_back(topic->Name());
+  names.push_back(markers_.getTopic());
+  if (tf_static_) names.push_back(tf_static_.getTopic());
+  return names;
+}
+
 std::vector<const QueuedTopic*> TopicPublisher::SampleTopics() const {
   std::vector<const QueuedTopic*> topics = {&joint_states_, &energy_, &reactions_, &solver_, &tf_};
   for (const QueuedTopic* optional : {&contacts_, &friction_, &beam_loads_, &aero_loads_}) {

@@ -5,8 +5,8 @@
 // --columns F it writes to F the CSV's header row, the columns a run would write (not for an eigen-analysis), so that
 // a sweep's metrics can be checked against them before any case runs.
 // Exit status (flexmbd/common/exit_status.hpp): 0 success, 1 usage error, 2 bad input (ConfigError), 3 the run
-// failed (SolverError, or an output file that cannot be written), 4 an unexpected error (a bug); every failure
-// prints one line on stderr.
+// failed (SolverError, or an output file that cannot be written), 4 an unexpected error (a bug), 130 stopped by
+// SIGINT or SIGTERM (after the step in progress, the recordings closed); every failure prints one line on stderr.
 
 #include <chrono>
 #include <cstdio>
@@ -20,6 +20,7 @@
 #include "flexmbd/io/config_loader.hpp"
 #include "flexmbd/io/csv_sink.hpp"
 #include "flexmbd/ros/sample_fan_out.hpp"
+#include "flexmbd/ros/stop_signal.hpp"
 #include "flexmbd/io/text_file.hpp"
 #include "flexmbd/ros/transform_frames.hpp"
 #include "flexmbd/solver/damping_crossing.hpp"
@@ -155,8 +156,17 @@ flexmbd::EigenOptions EigenOptionsOf(const flexmbd::SolverSpec::EigenSettings& s
   return options;
 }
 
+// solver.eigen.modes beyond the modes the analysis found: all of them are printed, and the user is told why the
+// table is shorter than asked.
+void WarnIfFewerModes(int asked, size_t found) {
+  if (asked <= static_cast<int>(found)) return;
+  std::fprintf(stderr, "flexmbd_run: warning: solver.eigen.modes: %d asked for, the model has %zu; all %zu printed\n",
+               asked, found, found);
+}
+
 // The mode table of an eigen-analysis about the state at time t, with its heading line.
-void PrintModesAt(double t, const flexmbd::EigenResult& result) {
+void PrintModesAt(double t, const flexmbd::EigenResult& result, int asked) {
+  WarnIfFewerModes(asked, result.modes.size());
   std::printf("flexmbd_run: eigen-analysis at t = %.6g s (%s): %d degrees of freedom, %d rigid-body modes\n", t,
               result.method.c_str(), result.num_dof, result.num_rigid_body);
   std::fputs(flexmbd::FormatModeTable(result).c_str(), stdout);
@@ -167,7 +177,8 @@ void PrintModesAt(double t, const flexmbd::EigenResult& result) {
 // a time of a run"). A failure names the time.
 void PrintModesOfRunState(const flexmbd::Model& model, const flexmbd::State& state) {
   try {
-    PrintModesAt(state.t, flexmbd::EigenAnalysis(model, state, EigenOptionsOf(model.solver().eigen)));
+    PrintModesAt(state.t, flexmbd::EigenAnalysis(model, state, EigenOptionsOf(model.solver().eigen)),
+                 model.solver().eigen.modes);
   } catch (const flexmbd::SolverError& e) {
     char when[64];
     std::snprintf(when, sizeof(when), "eigen-analysis at t = %.6g s: ", state.t);
@@ -178,6 +189,7 @@ void PrintModesOfRunState(const flexmbd::Model& model, const flexmbd::State& sta
 // A fan-plot table on the standard output and, with output.csv (or --csv), as CSV there for scripts/plot_fan.py.
 void PrintFanPlot(const std::vector<flexmbd::SweepPoint>& points, const char* parameter, int modes,
                   const std::string& csv) {
+  if (!points.empty()) WarnIfFewerModes(modes, points.front().result.modes.size());
   std::fputs(flexmbd::FormatFanPlot(points, parameter, modes).c_str(), stdout);
   if (csv.empty()) return;
   std::ofstream file(csv);
@@ -207,6 +219,7 @@ void RunEigenAboutSteadyRotation(const flexmbd::Model& model, const flexmbd::Eig
   std::printf("flexmbd_run: eigen-analysis about the steady rotation (%s): %d degrees of freedom, %d rigid-body "
               "modes\n",
               result.method.c_str(), result.num_dof, result.num_rigid_body);
+  WarnIfFewerModes(settings.modes, result.modes.size());
   std::fputs(flexmbd::FormatModeTable(result).c_str(), stdout);
 }
 
@@ -284,7 +297,7 @@ void RunEigen(const flexmbd::ModelSpec& spec, const flexmbd::Model& model) {
     PrintFanPlot(points, "velocity_scale", settings.modes, model.output().csv);
     return;
   }
-  PrintModesAt(state.t, flexmbd::EigenAnalysis(model, state, options));
+  PrintModesAt(state.t, flexmbd::EigenAnalysis(model, state, options), settings.modes);
 }
 
 }  // namespace
@@ -328,6 +341,10 @@ int main(int argc, char** argv) {
     }
     flexmbd::ros::SampleFanOut outputs(model, files, flexmbd::ros::DefaultTopicNames(), std::move(static_transforms));
     flexmbd::Simulation simulation(model);
+    // Ctrl-C or a kill while the files are written: the run stops after its step, and the files are closed whole
+    // (a killed runner left the bag unindexed and the CSV's last row cut, explore23 ros/runner_sigint).
+    flexmbd::ros::InstallStopHandlers();
+    simulation.StopWhen(flexmbd::ros::StopRequested);
     flexmbd::OutputSample last;
     CycleReport cycle(model);
     flexmbd::ros::SampleMessages messages;  // refilled for every sample, reusing its storage
@@ -351,6 +368,11 @@ int main(int argc, char** argv) {
       return flexmbd::kExitRunFailed;
     }
     outputs.Close();
+    if (flexmbd::ros::StopRequested()) {
+      std::fprintf(stderr, "flexmbd_run: interrupted at t = %.6g s (SIGINT or SIGTERM); %ld samples written, the "
+                   "recordings closed\n", simulation.state().t, samples);
+      return flexmbd::kExitInterrupted;
+    }
     const double wall_seconds =
         samples > 0 ? std::chrono::duration<double>(Clock::now() - first_sample_wall).count() : 0.0;
     PrintSummary(simulation, last, samples, wall_seconds);

@@ -66,7 +66,8 @@ TEST(NodeExit, MisspeltNodeSettingExitsWithTwoListingTheSettings) {
   ExpectBadInputExit("flexmbd_misspelt_setting", {"_realtime_factor:=2.0"},
                      "/flexmbd_misspelt_setting/realtime_factor: unknown parameter; did you mean "
                      "'real_time_factor'? expected a node setting (urdf_file, real_time_factor, bag, "
-                     "bag_compression, publish, rate_hz, keep_alive, wait_for_subscribers, clock_rate_hz, paused, "
+                     "bag_compression, publish, rate_hz, keep_alive, wait_for_subscribers, "
+                     "wait_for_subscribers_timeout, clock_rate_hz, paused, "
                      "setpoint_time_constant) "
                      "or a section of the case (beams, joints, solver, output, loads, aero, closures, docs/config.md)");
 }

@@ -90,9 +90,21 @@ TEST(AeroConfig, WrongTypeIsRejected) {
                       "test.yaml: aero.sections.conner.inflow_states:");
 }
 
+// The same joint as pitch and flap passed every type and axis check and ran (explore23 bad/aero/pitch_is_flap.yaml:
+// the Hodges-Pierce section fluttered at 48.17 m/s instead of 54.50).
+TEST(AeroConfig, OneJointInTwoRolesIsRejected) {
+  EXPECT_CONFIG_ERROR(Load("plunge: plunge, pitch: pitch, flap: pitch, semichord: 0.127, a: -0.5, c: 0.5, "
+                           "velocity: 20.0"),
+                      "test.yaml: aero.sections.conner.flap: joint 'pitch' is the section's pitch already; expected a "
+                      "joint of its own for each of plunge, pitch and flap");
+  EXPECT_CONFIG_ERROR(Load("plunge: plunge, pitch: plunge, flap: flap_hinge, semichord: 0.127, a: -0.5, c: 0.5, "
+                           "velocity: 20.0"),
+                      "test.yaml: aero.sections.conner.pitch: joint 'plunge' is the section's plunge already;");
+}
+
 TEST(AeroConfig, JointOfTheWrongTypeOrAxisIsRejectedAtBuild) {
   EXPECT_CONFIG_ERROR(
-      BuildModel(Load("plunge: pitch, pitch: pitch, flap: flap_hinge, semichord: 0.127, a: -0.5, c: 0.5, "
+      BuildModel(Load("plunge: pitch, pitch: plunge, flap: flap_hinge, semichord: 0.127, a: -0.5, c: 0.5, "
                       "velocity: 20.0")),
       "aero.sections.conner.plunge: joint 'pitch' is not a prismatic joint; expected a prismatic joint");
   const std::string tilted = std::regex_replace(ConnerUrdf(), std::regex("<axis xyz=\"0 0 1\"/>"), "<axis xyz=\"1 0 0\"/>");

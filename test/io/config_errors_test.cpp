@@ -84,6 +84,22 @@ TEST(ConfigErrors, UrdfFrictionOnAJointTheYamlRetypesNamesTheUrdf) {
                       "on a revolute or prismatic joint");
 }
 
+// A joint made spherical has no variable for the URDF's damper and friction: they were dropped without a word
+// (explore23 bad/urdf_fric_sph.yaml dissipated 0 J) where a screw or cylindrical joint refuses the friction.
+TEST(ConfigErrors, UrdfDynamicsOnAJointMadeSphericalIsRejected) {
+  const std::string urdf = test::WorldUrdf({"l1"}, R"(
+    <joint name="j1" type="continuous"><parent link="world"/><child link="l1"/><axis xyz="0 0 1"/>
+      <dynamics damping="0.2" friction="0.5"/></joint>)");
+  EXPECT_CONFIG_ERROR(LoadInline(urdf, "joints: {j1: {type: spherical}}"),
+                      "test.yaml: joints.j1.type: a spherical joint 'j1' has no variable to carry the URDF's "
+                      "<dynamics damping> and <dynamics friction>; expected no <dynamics> on a joint made spherical");
+  const std::string damped = test::WorldUrdf({"l1"}, R"(
+    <joint name="j1" type="continuous"><parent link="world"/><child link="l1"/><axis xyz="0 0 1"/>
+      <dynamics damping="0.2"/></joint>)");
+  EXPECT_CONFIG_ERROR(LoadInline(damped, "joints: {j1: {type: spherical}}"),
+                      "has no variable to carry the URDF's <dynamics damping>; expected");
+}
+
 // Names the variable as joint_states does, and gives the angles in the degrees the YAML used as well.
 TEST(ConfigErrors, InitialPositionBeyondAStopNamesTheVariableAndTheUnits) {
   EXPECT_CONFIG_ERROR(BuildModel(Pendulum("joints: {B1: {type: universal, variables: [{}, {initial: {position_deg: "

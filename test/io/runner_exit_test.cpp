@@ -268,4 +268,43 @@ TEST(RunnerExit, CheckOfBadInputExitsWithTwoAndNamesField) {
   EXPECT_NE(out.stderr_text.find("joints.B1.spring.k"), std::string::npos) << out.stderr_text;
 }
 
+// solver.eigen settings a user met without a word or with the wrong exit (explore23 bad/eigen, bad/aero): the run of
+// `yaml` on `urdf` (test/data) is bad input, and its line says `message`.
+void ExpectBadInputSaying(const std::string& urdf, const std::string& yaml, const std::string& message) {
+  const RunOutcome out = RunRunner("--urdf " + Data(urdf) + " --config " + yaml);
+  EXPECT_EQ(out.exit_status, kBadInputExit) << out.stderr_text;
+  EXPECT_NE(out.stderr_text.find(message), std::string::npos) << out.stderr_text;
+}
+
+TEST(RunnerExit, SparseEigenOfAnAeroSectionIsBadInputNamingTheField) {
+  // Once exit 3 "eigen-analysis failed" after the sweep had started.
+  const std::string yaml = WriteFile(
+      "sparse_aero.yaml",
+      "joints: {flap: {drive: {law: constant, value: 0.0}}, plunge: {spring: {k: 7696.9}}, "
+      "pitch: {spring: {k: 2886.3}}}\n"
+      "aero: {sections: {hp: {plunge: plunge, pitch: pitch, flap: flap, semichord: 0.5, a: -0.2, c: 0.6, "
+      "velocity: 10.0}}}\n"
+      "solver: {analysis: eigen, gravity: [0, 0, 0], eigen: {method: sparse, sweep: {airspeed: [10, 20]}}}\n");
+  ExpectBadInputSaying("urdf/hodges_pierce_section.urdf", yaml,
+                       "solver.eigen.method: sparse cannot take the model's element states (aero section hp mu_1, "
+                       "aero inflow); expected method: dense or auto");
+}
+
+TEST(RunnerExit, ShiftWithDenseEigenIsBadInputNamingTheField) {
+  const std::string yaml =
+      WriteFile("shift_dense.yaml", "solver: {analysis: eigen, eigen: {method: dense, shift_hz: 3.0}}\n");
+  ExpectBadInputSaying("urdf/pendulum.urdf", yaml,
+                       "solver.eigen.shift_hz: 3.0 picks the modes nearest it for the sparse method, and method: "
+                       "dense finds every mode");
+}
+
+TEST(RunnerExit, MoreModesThanTheModelHasAreAllPrintedWithAWarning) {
+  // The pendulum has one degree of freedom.
+  const std::string yaml = WriteFile("modes_50.yaml", "solver: {analysis: eigen, eigen: {modes: 50}}\n");
+  const RunOutcome out = RunRunner("--urdf " + Data("urdf/pendulum.urdf") + " --config " + yaml);
+  EXPECT_EQ(out.exit_status, 0) << out.stderr_text;
+  EXPECT_EQ(out.stderr_text,
+            "flexmbd_run: warning: solver.eigen.modes: 50 asked for, the model has 1; all 1 printed\n");
+}
+
 }  // namespace runner_exit_test

@@ -25,6 +25,16 @@ TEST(StaticHoldConfig, WithoutAStaticAnalysisIsRejectedByBuildModel) {
                                         "and this run has none; expected solver.static_first: true");
 }
 
+// Once told "this run has none; expected solver.static_first: true" with eigen.static_first set (explore23
+// bad/eigen/static_hold_eigen.yaml), solver.static_first being a dynamic run's.
+TEST(StaticHoldConfig, InAnEigenAnalysisIsRejectedForWhatItIs) {
+  const ModelSpec spec = test::LoadInline(kHingeUrdf, "joints: {hinge: {initial: {static_hold: true}}}\n"
+                                                      "solver: {analysis: eigen, eigen: {static_first: true}}");
+  EXPECT_CONFIG_ERROR(BuildModel(spec), "joint 'hinge': initial.static_hold in an eigen-analysis, which linearises "
+                                        "about the free system (with solver.eigen.static_first: its equilibrium "
+                                        "without holds); expected no static_hold here");
+}
+
 TEST(StaticHoldConfig, OnADrivenVariableIsRejectedByBuildModel) {
   const ModelSpec spec = test::LoadInline(
       kHingeUrdf, "joints: {hinge: {drive: {law: constant, value: 0.1}, initial: {static_hold: true}}}\n"

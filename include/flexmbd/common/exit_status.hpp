@@ -10,5 +10,6 @@ constexpr int kExitUsage = 1;          ///< runner only: bad command-line argume
 constexpr int kExitBadInput = 2;       ///< a ConfigError: bad URDF, YAML, parameter or output path
 constexpr int kExitRunFailed = 3;      ///< a SolverError, or an OutputError (an output file cannot be written)
 constexpr int kExitInternalError = 4;  ///< an exception none of the above: a bug
+constexpr int kExitInterrupted = 130;  ///< runner only: stopped by SIGINT or SIGTERM (the shell's 128 + SIGINT)
 
 }  // namespace flexmbd

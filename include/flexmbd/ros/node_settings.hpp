@@ -23,10 +23,15 @@ struct NodeSettings {
   std::optional<double> rate_hz;  ///< ~rate_hz: overrides output.rate_hz [Hz]; 0 = every accepted step
   bool keep_alive = false;        ///< ~keep_alive: stay up (services answer) when the run ends
   int wait_for_subscribers = 0;   ///< ~wait_for_subscribers: start once every sample topic has this many
+  double wait_for_subscribers_timeout = 60.0;  ///< ~wait_for_subscribers_timeout: give up waiting after this [s]
   bool paused = false;            ///< ~paused: start paused (~step, ~resume go on)
   double clock_rate_hz = 0.0;     ///< ~clock_rate_hz: /clock ticks per simulated second; 0 = every step
   double setpoint_time_constant = 0.1;  ///< ~setpoint_time_constant: lag of a drive behind its set-point [s]
 };
+
+/// The private parameter the node writes (not a setting): the topics it publishes for its model
+/// (TopicPublisher::RecordedTopics), for the launch files' recorder (scripts/record_node_topics.py).
+constexpr char kRecordedTopicsParam[] = "recorded_topics";
 
 /// Names of the settings above, relative to the private namespace.
 const std::vector<std::string>& NodeSettingNames();

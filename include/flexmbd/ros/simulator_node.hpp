@@ -93,7 +93,8 @@ class SimulatorNode {
 
   // commands
   bool subscribers_ready_ = false;  ///< ~wait_for_subscribers was met once
-  bool waiting_reported_ = false;   ///< the wait for subscribers was logged, with the topics it waits on
+  std::optional<Clock::time_point> wait_started_;  ///< when the wait for subscribers began
+  std::string waiting_on_;  ///< the topics the wait for subscribers was last logged as missing
   bool paused_ = false;
   bool step_in_progress_ = false;  ///< a ~step waits for its sample to be sent
   bool anchor_pace_ = true;        ///< re-anchor the pace at the next sample (start, resume, reset)

@@ -6,7 +6,8 @@
 namespace flexmbd {
 namespace ros {
 
-/// Installs the handlers. Call after ros::init with ros::init_options::NoSigintHandler.
+/// Installs the handlers: in the node after ros::init with ros::init_options::NoSigintHandler; in the runner
+/// before its run (Simulation::StopWhen polls StopRequested).
 void InstallStopHandlers();
 
 /// True once SIGINT or SIGTERM has arrived.

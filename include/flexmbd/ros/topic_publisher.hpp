@@ -52,6 +52,10 @@ class TopicPublisher : public MessageSink {
   /// subscribers is waiting for.
   std::vector<std::string> SampleTopicsBelow(int count) const;
 
+  /// Every topic the samples, the markers and the static transforms go to, by resolved name (not /clock): what
+  /// `record:=` records (scripts/record_node_topics.py reads them from ~recorded_topics).
+  std::vector<std::string> RecordedTopics() const;
+
   /// True if any topic has a subscriber.
   bool HasSubscribers() const;
 

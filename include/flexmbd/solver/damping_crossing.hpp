@@ -14,7 +14,8 @@ namespace flexmbd {
 
 /// One mode's damping ratio crossing zero.
 struct DampingCrossing {
-  int mode = -1;              ///< column of the fan plot (0-based) of the growing mode nearest the axis at the unstable end
+  int mode = -1;              ///< column of the fan plot (0-based) of the growing mode of least Re s at the
+                              ///< unstable end
   double parameter = 0.0;     ///< the middle of the final bracket
   double frequency_hz = 0.0;  ///< the mode's natural frequency at the unstable end of the final bracket [Hz]
   bool oscillating = true;    ///< complex root (flutter) rather than a real one (divergence)

@@ -5,6 +5,7 @@
 
 #include <functional>
 #include <memory>
+#include <utility>
 #include <vector>
 
 #include "flexmbd/model/model.hpp"
@@ -52,6 +53,11 @@ class Simulation {
   /// calls may follow one another (pause and resume between them). Throws SolverError when it cannot go on.
   void AdvanceTo(double t_until, double t_end, const SampleSink& sink);
 
+  /// Once `stop()` returns true, AdvanceTo (and so Run) returns at the end of the step in progress, with that
+  /// step's samples emitted, and Run passes no further instant to its `at_instant` (the runner's SIGINT and
+  /// SIGTERM). `stop` is polled between steps; none by default.
+  void StopWhen(std::function<bool()> stop) { stop_ = std::move(stop); }
+
   /// Commands (docs/theory.md, "Commands"), in force from the next step on until changed; their work is
   /// external work. SetEffort applies `effort` [N m or N] on joint variable `variable`. SetSetpoint makes a driven
   /// variable follow `setpoint` [rad or m] with a first-order lag of `time_constant` [s] instead of its law. Both
@@ -89,6 +95,9 @@ class Simulation {
   long next_sample_ = 1;    ///< index of the next sample time t_start_ + k / rate
   double t_start_ = 0.0;    ///< time of the first sample [s]
   double h_ = 0.0;          ///< size of the next step attempt [s]
+  std::function<bool()> stop_;  ///< StopWhen
+
+  bool Stopped() const { return stop_ && stop_(); }
 };
 
 }  // namespace flexmbd

@@ -22,4 +22,15 @@ void CheckEigenSize(const Model& model) {
   throw ConfigError(msg.str());
 }
 
+void CheckSparseEigenStates(const Model& model) {
+  const SolverSpec& solver = model.solver();
+  const bool analysed = solver.analysis == SolverSpec::Analysis::kEigen || !solver.eigen.at_times.empty();
+  if (!analysed || solver.eigen.method != SolverSpec::EigenSettings::Method::kSparse) return;
+  if (model.num_element_states() == 0) return;
+  throw ConfigError((model.source().empty() ? "" : model.source() + ": ") +
+                    "solver.eigen.method: sparse cannot take the model's element states (" +
+                    model.DescribeUnknown(model.element_state_unknown(0)) +
+                    ", aero inflow); expected method: dense or auto (the dense first-order solve takes them)");
+}
+
 }  // namespace flexmbd

@@ -415,6 +415,7 @@ Model BuildModel(const ModelSpec& spec) {
   }
   CheckOutputSize(model);
   CheckEigenSize(model);
+  CheckSparseEigenStates(model);
   return model;
 }
 

@@ -57,6 +57,13 @@ void VariableEffectsBuilder::AddDrive(const std::string& where, int v, const Tim
 void VariableEffectsBuilder::AddHold(const std::string& where, int v, const VariableEffectsSpec& effects,
                                     int* multiplier) {
   const SolverSpec& solver = model_.solver();
+  // An eigen-analysis's static_first solves the equilibrium it linearises about, of the free system: a hold there
+  // would linearise about a state that is not one.
+  if (solver.analysis == SolverSpec::Analysis::kEigen) {
+    throw ConfigError(where + "initial.static_hold in an eigen-analysis, which linearises about the free system (with "
+                      "solver.eigen.static_first: its equilibrium without holds); expected no static_hold here (it "
+                      "holds a variable in analysis: static, or in a dynamic run's solver.static_first)");
+  }
   if (solver.analysis != SolverSpec::Analysis::kStatic &&
       !(solver.analysis == SolverSpec::Analysis::kDynamic && solver.static_first)) {
     throw ConfigError(where + "initial.static_hold holds the variable in a static analysis, and this run has none; "

@@ -28,11 +28,14 @@ int CountGrowing(const EigenResult& result) {
   return count;
 }
 
-// The growing mode nearest the axis: the one that has just crossed it.
+// The growing mode nearest the axis, by its growth rate Re s: the one that has just crossed it. Not by the damping
+// ratio: a real root that has just crossed (divergence) has ratio -1 however slowly it grows, so a flutter root
+// growing since a lower speed, at ratio -0.2, would be taken for it (explore23 aero/flutter_n8.yaml).
 int LeastGrowing(const EigenResult& result) {
   int k = -1;
   for (size_t i = 0; i < result.modes.size(); ++i) {
-    if (Grows(result.modes[i], result) && (k < 0 || result.modes[i].damping_ratio > result.modes[k].damping_ratio)) {
+    if (Grows(result.modes[i], result) &&
+        (k < 0 || result.modes[i].eigenvalue.real() < result.modes[k].eigenvalue.real())) {
       k = static_cast<int>(i);
     }
   }

@@ -104,6 +104,7 @@ void Simulation::Run(const SampleSink& sink, const std::vector<double>& instants
   const bool rates_alternate = solver.integrator != SolverSpec::Integrator::kGeneralizedAlpha;
   for (double t : instants) {
     AdvanceTo(t, t, sink);  // with t as the end, the last step lands on it
+    if (Stopped()) return;
     at_instant(rates_alternate ? WithSmoothedRates(state_) : state_);
   }
   AdvanceTo(solver.t_end, solver.t_end, sink);
@@ -198,7 +199,7 @@ void Simulation::AdvanceTo(double t_until, double t_end, const SampleSink& sink)
   // Each call ends on an accepted step, so a call starts as after one, and a run split into calls (a node's pauses)
   // takes the steps of a run in one.
   bool rejected = false;
-  while (state_.t < std::min(t_until, t_end) - kTimeEpsilon * h_) {
+  while (state_.t < std::min(t_until, t_end) - kTimeEpsilon * h_ && !Stopped()) {
     // Steps land on t_end and on every breakpoint of the time functions before it, never across one, except one
     // closer than dt_min: the step after a landing grows from the landing's size, and a table's 1e-9 s edge landed on
     // left the run below dt_min. The run's last steps share the time left; a breakpoint or an instant the run stops at

@@ -34,10 +34,20 @@ class RecordLaunch(unittest.TestCase):
         self.assertTrue('process has finished cleanly' in output, output)
         with rosbag.Bag(bag_path) as bag:
             topics = bag.get_type_and_topic_info().topics
-        # rosbag record keeps the names as given, relative to the recorder's namespace (the launch's).
-        for topic in ('joint_states', 'flexmbd/energy', 'flexmbd/contacts'):
+        # The names the node resolved in its namespace (~recorded_topics), as its own bag:= names them.
+        for topic in (NAMESPACE + '/joint_states', NAMESPACE + '/flexmbd/energy', NAMESPACE + '/flexmbd/contacts'):
             self.assertIn(topic, topics)
             self.assertGreater(topics[topic].message_count, 0, topic)
+
+    def test_record_onto_the_nodes_bag_is_refused(self):
+        # Once the recorder's bag silently replaced the node's (explore23 ros/kill).
+        bag_path = os.path.join(tempfile.mkdtemp(), 'same.bag')
+        done = subprocess.run(('roslaunch', 'flexmbd', 'double_pendulum.launch', 'real_time_factor:=0',
+                               'bag:=' + bag_path, 'record:=' + bag_path),
+                              stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True, timeout=RUN_TIMEOUT)
+        self.assertIn('record_node_topics.py: record:=' + bag_path + ' is the bag the node writes (bag:=); '
+                      'expected another file', done.stdout)
+        self.assertIn('REQUIRED process [record-', done.stdout)
 
 
 if __name__ == '__main__':

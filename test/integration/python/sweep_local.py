@@ -80,6 +80,14 @@ class SweepLocal(unittest.TestCase):
                               "not a column", "did you mean 'joint.B1.position'?")
         self.assertFalse(os.path.exists(os.path.join(self.out_dir, 'cases', '000', 'run.csv')))
 
+    def test_path_set_by_grid_and_zip_is_refused_naming_the_path(self):
+        # Once run with the zip's values and summarised with the grid's (explore23 sweep/grid_zip_same.yaml).
+        zipped = {'start': {'paths': ['joints.B1.initial.position_deg'], 'values': [1.0, 2.0]}}
+        sweep = self.sweep_file(zip=zipped)
+        self.assert_bad_input(run_sweep(sweep, self.out_dir), sweep,
+                              "zip.start: path 'joints.B1.initial.position_deg' is also set by "
+                              "grid.joints.B1.initial.position_deg")
+
     def test_missing_base_file_names_the_field(self):
         sweep = self.sweep_file(base={'urdf': '/nonexistent/pendulum.urdf', 'config': 'pendulum.yaml'})
         self.assert_bad_input(run_sweep(sweep, self.out_dir), sweep, 'base.urdf', 'no such file')
