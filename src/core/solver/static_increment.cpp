@@ -23,6 +23,8 @@ constexpr double kLargestTurn = 0.5;
 // dynamic step lands on a contact ((C5), kEventLanding), but on the contact's side.
 constexpr double kStopLanding = 1.02;
 
+}  // namespace
+
 std::vector<int> AngularVariables(const Model& model) {
   std::vector<int> angular;
   for (const Joint* joint : model.joints()) {
@@ -32,7 +34,6 @@ std::vector<int> AngularVariables(const Model& model) {
   }
   return angular;
 }
-}  // namespace
 
 StaticIncrement::StaticIncrement(const Model& model)
     : model_(model), angular_(AngularVariables(model)), round_off_(RoundOffFloor(model.length_scale())) {}

@@ -14,6 +14,9 @@ namespace flexmbd {
 class Model;
 struct State;
 
+/// The joint variables that are angles [rad] (the turns of revolute, cylindrical, screw, planar and universal joints).
+std::vector<int> AngularVariables(const Model& model);
+
 class StaticIncrement {
  public:
   explicit StaticIncrement(const Model& model);

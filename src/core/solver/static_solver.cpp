@@ -8,7 +8,6 @@
 
 #include "flexmbd/common/error.hpp"
 #include "flexmbd/effects/joint_stop.hpp"
-#include "flexmbd/joints/joint.hpp"
 #include "flexmbd/model/model.hpp"
 #include "flexmbd/solver/eigen_analysis.hpp"
 #include "flexmbd/solver/joint_rates.hpp"
@@ -70,15 +69,12 @@ bool ReleasePullingStops(const Model& model, const State& equilibrium, State* st
 // An equilibrium the user cannot have meant is no solution: one with a joint turned by more than a turn from its
 // start (Newton went past the nearest one), or beyond a rigid stop that is open there (it passed the stop).
 void RefuseOutOfReach(const Model& model, const State& start, const State& equilibrium, StaticResult* result) {
-  for (const Joint* joint : model.joints()) {
-    for (const RotationFactor& factor : joint->kinematics().rotations) {
-      const int v = joint->first_variable() + factor.variable;
-      if (model.driven(v) || std::abs(equilibrium.q[v] - start.q[v]) <= kTurn) continue;
-      result->converged = false;
-      result->turned_variable = v;
-      result->turn = equilibrium.q[v] - start.q[v];
-      return;
-    }
+  for (int v : AngularVariables(model)) {
+    if (model.driven(v) || std::abs(equilibrium.q[v] - start.q[v]) <= kTurn) continue;
+    result->converged = false;
+    result->turned_variable = v;
+    result->turn = equilibrium.q[v] - start.q[v];
+    return;
   }
   for (size_t k = 0; k < model.stop_effects().size(); ++k) {
     const JointStop& stop = *model.stop_effects()[k];
