@@ -4,14 +4,18 @@ converged at default settings; docs/theory.md, "Against the aim of the default t
 
 One case per call (the machine is shared; each run is one flexmbd_run):
 
-    bench/reference_cases/against_converged.py CASE [--error_tol X] [--runner PATH] [--cache DIR]
+    bench/reference_cases/against_converged.py CASE [--error_tol X] [--joint_floor X] [--t_end T]
+                                               [--reference_tol X] [--runner PATH] [--cache DIR]
                                                [--drift [--joint NAME]]
 
 Runs CASE as shipped (or with solver.error_tol X laid over it) and the converged run of the same files (error_tol
 1e-7; 1e-6 for the rotor, the wing with aileron and the rigid antenna, whose runs at 1e-7 take too long on a shared
 machine; steps 20 times finer where the case runs on fixed steps; the published antenna's fixed 1e-3 s steps, as in
 bench/work_precision), cached under --cache (default /tmp/flexmbd_converged) by the content of the files and
-settings: delete it after a change of the code that should move the converged motion. Prints, per joint variable,
+settings: delete it after a change of the code that should move the converged motion. --t_end cuts both runs
+short (the rotor's window); --reference_tol sets the converged run's error_tol instead (to check a reference against
+one at a tolerance further down); --joint_floor sets solver.error_floor.joint of the run under test only (to see
+whether a variable's error follows the floor rather than error_tol). Prints, per joint variable,
 the largest difference over the samples relative to the variable's largest converged value ("whole run") and the
 difference of the largest values ("peak"), worst first, and what the samples' linear interpolation between the run's
 step ends can carry ("interpolation", h^2 |q''| / 8). With --drift, for the worst joint by whole run, the
@@ -100,9 +104,11 @@ def read_run(csv_path, summary):
     return Run(summary["accepted"], summary.get("cpu", 0.0), times, positions, rates, step_sizes)
 
 
-def converged_run(runner, case, cache):
-    """The case's converged run, from the cache when its files and settings have not changed."""
+def converged_run(runner, case, cache, overrides):
+    """The case's converged run (its solver keys, then `overrides`), from the cache when its files and settings have
+    not changed."""
     folder, urdf, yaml_name, solver = CASES[case]
+    solver = dict(solver, **overrides)
     digest = hashlib.sha1(json.dumps(solver, sort_keys=True).encode())
     for name in (urdf, yaml_name):
         with open(os.path.join(CONFIG, folder, name), "rb") as f:
@@ -163,6 +169,9 @@ def main():
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("case", choices=sorted(CASES))
     parser.add_argument("--error_tol", type=float, help="solver.error_tol laid over the shipped settings")
+    parser.add_argument("--joint_floor", type=float, help="solver.error_floor.joint of the run under test")
+    parser.add_argument("--t_end", type=float, help="solver.t_end of both runs")
+    parser.add_argument("--reference_tol", type=float, help="the converged run's error_tol instead of its own")
     parser.add_argument("--runner", default=os.path.join(os.environ.get("FLEXMBD_WS", ""), "devel", "lib",
                                                          "flexmbd", "flexmbd_run"))
     parser.add_argument("--cache", default="/tmp/flexmbd_converged")
@@ -173,8 +182,16 @@ def main():
         sys.exit("no runner at %s (set FLEXMBD_WS or --runner)" % args.runner)
 
     folder, urdf, yaml_name, reference = CASES[args.case]
-    converged = converged_run(args.runner, args.case, args.cache)
-    solver = {} if args.error_tol is None else {"error_tol": args.error_tol}
+    window = {} if args.t_end is None else {"t_end": args.t_end}
+    reference = dict(reference, **window)
+    if args.reference_tol is not None:
+        reference["error_tol"] = args.reference_tol
+    converged = converged_run(args.runner, args.case, args.cache, reference)
+    solver = dict(window)
+    if args.error_tol is not None:
+        solver["error_tol"] = args.error_tol
+    if args.joint_floor is not None:
+        solver["error_floor"] = {"joint": args.joint_floor}
     with tempfile.TemporaryDirectory(prefix="against_converged_") as tmp:
         csv_path = os.path.join(tmp, "run.csv")
         summary = run_case(args.runner, os.path.join(CONFIG, folder, urdf), os.path.join(CONFIG, folder, yaml_name),
