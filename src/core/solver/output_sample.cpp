@@ -41,11 +41,14 @@ AeroSectionSample SampleStrip(const BeamStripAero& strip, const State& state, co
 // The cubic through positions x_a, x_b with rates v_a, v_b at the ends of an interval of length `span`, at the
 // fraction u of it. A step of the trapezoidal family has x_b - x_a = span (v_a + v_b) / 2 (T3), for which the cubic
 // is the quadratic of constant acceleration (v_b - v_a) / span: on a uniform turn it errs by O(h^4), where the chord
-// between the ends cut a spinning blade's tip inwards by R (Omega h)^2 / 8.
-Vec3 HermiteAt(const Vec3& x_a, const Vec3& v_a, const Vec3& x_b, const Vec3& v_b, double span, double u) {
+// between the ends cut a spinning blade's tip inwards by R (Omega h)^2 / 8, and a joint variable's samples carried up
+// to h^2 |q''| / 8 (docs/theory.md, "Against the aim of the default tolerance").
+template <typename Vector>
+Vector HermiteAt(const Vector& x_a, const Vector& v_a, const Vector& x_b, const Vector& v_b, double span, double u) {
   const double u2 = u * u, u3 = u2 * u;
-  return (2.0 * u3 - 3.0 * u2 + 1.0) * x_a + (u3 - 2.0 * u2 + u) * span * v_a + (3.0 * u2 - 2.0 * u3) * x_b +
-         (u3 - u2) * span * v_b;
+  return ((2.0 * u3 - 3.0 * u2 + 1.0) * x_a + (u3 - 2.0 * u2 + u) * span * v_a + (3.0 * u2 - 2.0 * u3) * x_b +
+          (u3 - u2) * span * v_b)
+      .eval();
 }
 
 AeroSectionSample Mix(const AeroSectionSample& x, const AeroSectionSample& y, double u) {
@@ -115,7 +118,7 @@ OutputSample Interpolate(const OutputSample& a, const OutputSample& b, double t)
   auto blend = [u](double x, double y) { return (1.0 - u) * x + u * y; };
   OutputSample s = b;
   s.t = t;
-  s.position = mix(a.position, b.position);
+  s.position = HermiteAt(a.position, a.velocity, b.position, b.velocity, span, u);
   s.velocity = mix(a.velocity, b.velocity);
   s.effort = mix(a.effort, b.effort);
   for (size_t k = 0; k < s.reaction_force_W.size(); ++k) {
