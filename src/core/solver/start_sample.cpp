@@ -54,12 +54,14 @@ OutputSample StartSample(const Model& model, const State& state, double h) {
   OutputSample twice = VanishingStepSample(model, &system, state, 2.0 * step, &modes);
   // Richardson: the mean forces over the two steps, 2 single - twice (Interpolate at -1 step lengths for the columns it
   // mixes), are those of a step of length 0 (exact for forces linear in time, such as a ramp's); the state's own
-  // quantities are the same in both and stay exact (2 x - x = x). Interpolate takes the stations' displacements and
-  // rotations along the motion, and the stops' and friction's forces from one end: those are set here.
+  // quantities are the same in both and stay exact (2 x - x = x). Interpolate takes the joint variables and the
+  // stations' displacements along the motion (the cubic through the ends' rates, which these unit times make no
+  // step's) and rotations, and the stops' and friction's forces from one end: those are set here.
   single.t = 1.0;
   twice.t = 2.0;
   OutputSample start = Interpolate(single, twice, 0.0);
   start.t = state.t;
+  start.position = single.position;
   auto extrapolated = [](const auto& now, const auto& later) -> std::decay_t<decltype(now)> { return 2.0 * now - later; };
   start.beam_stations = single.beam_stations;
   for (size_t k = 0; k < start.beam_stations.size(); ++k) {
