@@ -125,27 +125,59 @@ TEST(AntennaPublished, B3SticksLongestAtTheStartAndLongerWithDoubledPreloads) {
   EXPECT_GT(b3_case2, b3_case1);
 }
 
+// Case 0 as its files give it (200 s, samples at 20 Hz), run once for the tests that read it at default settings.
+struct WholeRun {
+  std::array<double, 4> peak = {0, 0, 0, 0};  ///< largest |phi_1..phi_4| over the samples [rad]
+  long attempted = 0;
+  long newton_iterations = 0;
+};
+
+const WholeRun& Case0AsShipped() {
+  static const WholeRun run = [] {
+    const Model model = BuildModel(WholeCase(0));
+    EXPECT_EQ(model.variable_names().at(0), "B1");
+    EXPECT_EQ(model.variable_names().at(3), "B4");
+    Simulation simulation(model);
+    WholeRun whole;
+    simulation.Run([&](const OutputSample& s) {
+      for (int k = 0; k < 4; ++k) whole.peak[k] = std::max(whole.peak[k], std::abs(s.position[k]));
+    });
+    whole.attempted = simulation.statistics().accepted + simulation.statistics().rejected();
+    whole.newton_iterations = simulation.statistics().newton_iterations;
+    return whole;
+  }();
+  return run;
+}
+
+// The converged peaks of phi_2..phi_4: a run at fixed 1e-3 s steps (200,000 steps; error_tol 1e-6 gives the same to
+// 0.002%, docs/validation.md), its 20 Hz samples (bench/reference_cases/against_converged.py antenna_published_0).
+constexpr std::array<double, 3> kConvergedPeaks = {0.19015673, 0.13530643, 0.13164385};  // [rad]
+
 // Issue 13: the flexible antenna with dampers, 200 s, in at most 2,000 steps with hinge peaks within 1% of a
-// converged run. The converged peaks of phi_2..phi_4 are those of a run at fixed 1e-3 s steps (200,000 steps;
-// error_tol 1e-6 gives the same to 0.002%, docs/validation.md). Measured: 695 steps, peaks within 0.09%.
+// converged run. Measured: 697 steps, peaks within 0.08%.
 TEST(AntennaPublished, Case0WholeRunWithin2000StepsAndOnePercentOfConvergedPeaks) {
-  const Model model = BuildModel(WholeCase(0));
-  Simulation simulation(model);
-  const std::array<double, 3> converged_deg = {10.895, 7.753, 7.543};
-  std::array<double, 3> peak = {0, 0, 0};
-  ASSERT_EQ(model.variable_names().at(1), "B2");
-  ASSERT_EQ(model.variable_names().at(3), "B4");
-  simulation.Run([&](const OutputSample& s) {
-    for (int k = 0; k < 3; ++k) peak[k] = std::max(peak[k], std::abs(s.position[k + 1]));
-  });
-  EXPECT_LE(simulation.statistics().accepted + simulation.statistics().rejected(), 2000);
+  const WholeRun& run = Case0AsShipped();
+  EXPECT_LE(run.attempted, 2000);
   // Issue 12: beam dissipation terms started only where they dissipated a step before (docs/theory.md, "Newton
   // iteration"). Measured 2,974 iterations over all solves of all 696 attempted steps (3,306 when every beam
   // started its term on); the bound is 5% above, below the old count by 6%.
-  EXPECT_LE(simulation.statistics().newton_iterations, 3120);
+  EXPECT_LE(run.newton_iterations, 3120);
   for (int k = 0; k < 3; ++k) {
-    const double converged = converged_deg[k] * M_PI / 180.0;
-    EXPECT_NEAR(peak[k], converged, 0.01 * converged) << "phi_" << k + 2;
+    EXPECT_NEAR(run.peak[k + 1], kConvergedPeaks[k], 0.01 * kConvergedPeaks[k]) << "phi_" << k + 2;
+  }
+}
+
+// Issue 13's aim for the default tolerance, as docs/theory.md ("What the aim means") reads it: each hinge's peak
+// within 1e-3 of its converged value, relative. Case 0 stands for the reference cases: a beam model run at the
+// default error_tol, its peaks reached in the deployment's first 20 s. Measured 7.5e-4 (phi_3), 5.8e-5 (phi_2) and
+// 9.8e-5 (phi_4); at error_tol 3e-4 phi_3 is 2.1e-3 off and at 1e-3 6.0e-3 (bench/README.md, twenty-fourth
+// session), so the bound tells the default from a threefold looser one. The converged peaks are known to 2e-5 (the
+// fixed 1e-3 s and error_tol 1e-6 runs agree so far).
+TEST(AntennaPublished, Case0HingePeaksAtTheDefaultToleranceWithinOneThousandthOfConverged) {
+  constexpr double kAim = 1.0e-3;
+  const WholeRun& run = Case0AsShipped();
+  for (int k = 0; k < 3; ++k) {
+    EXPECT_NEAR(run.peak[k + 1], kConvergedPeaks[k], kAim * kConvergedPeaks[k]) << "phi_" << k + 2;
   }
 }
 
