@@ -17,8 +17,10 @@ short (the rotor's window); --reference_tol sets the converged run's error_tol i
 one at a tolerance further down); --joint_floor sets solver.error_floor.joint of the run under test only (to see
 whether a variable's error follows the floor rather than error_tol). Prints, per joint variable,
 the largest difference over the samples relative to the variable's largest converged value ("whole run") and the
-difference of the largest values ("peak"), worst first, and what the samples' linear interpolation between the run's
-step ends can carry ("interpolation", h^2 |q''| / 8). With --drift, for the worst joint by whole run, the
+difference of the largest values ("peak"), worst first, and how far a chord between the run's step ends strays
+from the converged motion ("chord", h^2 |q''| / 8): what linear samples between step ends carried before they were
+cubic (docs/theory.md, "Against the aim of the default tolerance"), now a measure of how well the steps resolve the
+variable's motion. With --drift, for the worst joint by whole run, the
 difference against time in ten windows and its least-squares fit to a phase drift: a run that lags the converged
 one by c t differs by -c t v(t) (v the converged joint rate), so c is the relative period error and "explained" the
 share of the difference's square sum that the drift accounts for.
@@ -126,8 +128,8 @@ def converged_run(runner, case, cache, overrides):
 
 def differences(run, converged):
     """Per joint variable, relative to its largest converged value, on the common samples: the largest difference
-    (whole run), the difference of the largest values (peak), and the largest error that the samples' linear
-    interpolation between the run's step ends can carry, h^2 |q''| / 8 (q'' from the converged rates)."""
+    (whole run), the difference of the largest values (peak), and the largest departure of a chord between the run's
+    step ends from the motion, h^2 |q''| / 8 (q'' from the converged rates)."""
     index = {round(t, 9): k for k, t in enumerate(converged.times)}
     common = [(k, index[round(t, 9)]) for k, t in enumerate(run.times) if round(t, 9) in index]
     result = {}
@@ -141,8 +143,8 @@ def differences(run, converged):
         def acceleration(j):
             return abs(rates[j + 1] - rates[j - 1]) / (times[j + 1] - times[j - 1])
 
-        interpolation = max(run.step_sizes[k] ** 2 / 8 * acceleration(j) for k, j in common if 0 < j < len(times) - 1)
-        result[joint] = (whole / largest, peak / largest, interpolation / largest, largest)
+        chord = max(run.step_sizes[k] ** 2 / 8 * acceleration(j) for k, j in common if 0 < j < len(times) - 1)
+        result[joint] = (whole / largest, peak / largest, chord / largest, largest)
     return result
 
 
@@ -201,9 +203,9 @@ def main():
           "converged run %s: %d steps" % (args.case, solver or "as shipped", summary["accepted"], summary["rejected"],
                                           summary["cpu"], summary["limited_by"], reference, converged.steps))
     result = differences(run, converged)
-    print("%-32s %10s %10s %14s %12s" % ("joint variable", "whole run", "peak", "interpolation", "largest"))
-    for joint, (whole, peak, interpolation, largest) in sorted(result.items(), key=lambda item: -item[1][0]):
-        print("%-32s %10.2e %10.2e %14.2e %12.4g" % (joint, whole, peak, interpolation, largest))
+    print("%-32s %10s %10s %14s %12s" % ("joint variable", "whole run", "peak", "chord", "largest"))
+    for joint, (whole, peak, chord, largest) in sorted(result.items(), key=lambda item: -item[1][0]):
+        print("%-32s %10.2e %10.2e %14.2e %12.4g" % (joint, whole, peak, chord, largest))
     if args.drift and result:
         worst = args.joint or max(result, key=lambda joint: result[joint][0])
         windows, c, explained = phase_drift(run, converged, worst)
