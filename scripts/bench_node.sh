@@ -17,7 +17,7 @@ set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
 scripts="${FLEXMBD_REPO_ROOT}/scripts"
 
-bash "${scripts}/build.sh" >/dev/null
+bash "${scripts}/build.sh" all sample_rate_subscriber >/dev/null
 set +u
 source "${FLEXMBD_WS}/devel/setup.bash" || die "cannot source ${FLEXMBD_WS}/devel/setup.bash"
 set -u
