@@ -49,9 +49,9 @@ void CloseTouchedRigidStops(const Model& model, double round_off, State* state) 
 
 // A joint that only an open rigid stop can hold (a slider with no spring, pushed along its travel) has no stiffness
 // and its iteration matrix is singular: no increment moves it onto the stop. The stop it rests on is the one its
-// loads push it towards: of the open rigid stops not released, the nearest that the joint, released from rest at
-// the start, accelerates towards, closed as a touched one is (its row g_f = 0 lands the joint on it). One whose force
-// then pulls is opened again (ReleasePullingStops). Returns whether any was closed.
+// loads push it towards: of the open rigid stops not released on a variable no drive holds, the nearest that the
+// joint, released from rest at the start, accelerates towards, closed as a touched one is (its row g_f = 0 lands the
+// joint on it). One whose force then pulls is opened again (ReleasePullingStops). Returns whether any was closed.
 bool ClosePushedRigidStops(const Model& model, const std::vector<bool>& released, State* start) {
   State at_rest = *start;
   for (NodeState& n : at_rest.nodes) n.v = n.w = Vec3::Zero();
@@ -66,7 +66,7 @@ bool ClosePushedRigidStops(const Model& model, const std::vector<bool>& released
   for (size_t k = 0; k < stops.size(); ++k) {
     const JointStop& stop = *stops[k];
     const int v = stop.variable();
-    if (!stop.rigid() || released[k] || start->effects[stop.slot()].mode != JointStop::kOpen ||
+    if (!stop.rigid() || released[k] || model.driven(v) || start->effects[stop.slot()].mode != JointStop::kOpen ||
         stop.GapRate(accelerations[v]) >= 0.0) {
       continue;
     }
