@@ -114,5 +114,61 @@ TEST(StaticRigidStop, StopThatWouldPullOpensAndOneThatPushesHolds) {
   EXPECT_EQ(row[csv.Column("stop.pivot.upper.in_contact")], 0.0);
 }
 
+// stick_slip.urdf: 1 kg on a slide along x with no spring, pushed along it by a 5 N load, with rigid stops given by
+// `backlash` (flow style), started at `start`; the static analysis or the run of `solver`.
+std::string PushedSlider(const std::string& start, const std::string& backlash, const std::string& solver) {
+  return "joints: {slider: {initial: {position: " + start + "}, backlash: " + backlash + "}}\n"
+         "loads:\n  - {body: mass, force: [5.0, 0.0, 0.0]}\nsolver: " + solver + "\n";
+}
+
+TEST(StaticRigidStop, FreeSliderPushedOntoItsStopRestsOnItWithThePushAsTheContactForce) {
+  // Nothing but the stop holds the slide: the iteration matrix was singular at the first iteration when the stop was
+  // open at the start. The stop the load pushes the slider towards closes, and the slider rests on it with the
+  // contact force 5 N: a balance of two forces, exact to round-off, from a gap of 0.3 m and from the stop (gap 0),
+  // and on the stop the push faces when the slider has one on either side.
+  constexpr double kRoundOff = 1.0e-12;
+  struct Case {
+    const char *name, *start, *backlash, *stop;
+    double position;
+  };
+  for (const Case& c : {Case{"open", "0.2", "{upper: 0.5}", "upper", 0.5}, Case{"closed", "0.5", "{upper: 0.5}", "upper", 0.5},
+                        Case{"between", "0.2", "{lower: -0.5, upper: 0.5}", "upper", 0.5}}) {
+    SCOPED_TRACE(c.name);
+    test::CsvTable csv;
+    const std::vector<double> row = test::EquilibriumRow(
+        "test/data/urdf/stick_slip.urdf", PushedSlider(c.start, c.backlash, "{analysis: static}"),
+        std::string("slider_") + c.name, &csv);
+    ASSERT_FALSE(row.empty());
+    const std::string stop = std::string("stop.slider.") + c.stop;
+    EXPECT_NEAR(row[csv.Column("joint.slider.position")], c.position, kRoundOff);
+    EXPECT_EQ(row[csv.Column(stop + ".in_contact")], 1.0);
+    EXPECT_NEAR(row[csv.Column(stop + ".force")], 5.0, kRoundOff * 5.0);
+  }
+}
+
+TEST(StaticRigidStop, RunStartedFromTheStaticEquilibriumOfAPushedSliderStaysOnItsStop) {
+  // solver.static_first from a gap of 0.3 m: the run starts on the stop, in contact from t = 0, and stays there at
+  // rest with the contact force 5 N (to round-off: nothing moves).
+  constexpr double kRoundOff = 1.0e-12;
+  test::CsvTable csv;
+  const std::vector<double> last = test::EquilibriumRow(
+      "test/data/urdf/stick_slip.urdf", PushedSlider("0.2", "{upper: 0.5}", "{static_first: true, t_end: 0.1}"),
+      "slider_static_first", &csv);
+  ASSERT_FALSE(last.empty());
+  for (const std::vector<double>& row : {csv.rows.front(), last}) {
+    EXPECT_NEAR(row[csv.Column("joint.slider.position")], 0.5, kRoundOff);
+    EXPECT_EQ(row[csv.Column("stop.slider.upper.in_contact")], 1.0);
+    EXPECT_NEAR(row[csv.Column("stop.slider.upper.force")], 5.0, kRoundOff * 5.0);
+  }
+}
+
+TEST(StaticRigidStop, FreeSliderPushedAwayFromItsOnlyStopHasNoEquilibriumAndSaysWhy) {
+  // Pushed away from its only stop the slider has nothing to rest on: the run fails (exit 3) and says what to check.
+  const std::string output = test::RunnerOutput(
+      "test/data/urdf/stick_slip.urdf", PushedSlider("0.2", "{lower: -0.5}", "{analysis: static}"), "slider_away", 3);
+  EXPECT_NE(output.find("singular iteration matrix"), std::string::npos) << output;
+  EXPECT_NE(output.find("a joint free to move with nothing to stop it"), std::string::npos) << output;
+}
+
 }  // namespace static_rigid_stop_test
 }  // namespace flexmbd

@@ -68,7 +68,10 @@ class RigidStop : public JointStop {
                    Eigen::Ref<Eigen::VectorXd> magnitude) const override;
   void AddTangent(const StepContext& ctx, Eigen::Ref<Eigen::MatrixXd> J) const override;
   int ReviseMode(const StepContext& ctx) const override;
-  /// A plastic impact, or a contact that goes on after its first step while the joint still moves (C2a').
+  /// The work of the contact force over a step that closes the gap, the scheme's (numerical).
+  void AddStepWork(const StepContext& ctx, StepWork* work) const override;
+  /// A plastic impact, or a contact that goes on after its first step while the joint still moves or has closed
+  /// its gap (C2a').
   bool ComesToRest(const State& start, const State& end, double negligible_rate) const override;
   /// The approach rule (C5); with adaptive steps an impact's contact step centred on the stop and bounded by its
   /// acceleration jump (C5').
@@ -78,6 +81,12 @@ class RigidStop : public JointStop {
   StopSample Sample(const State& state, const StepContext& step) const override;
 
  private:
+  // True when the contact row of the step ctx is g_f = 0 (a static analysis, a contact at rest) rather than
+  // g_f = g_i (C2a).
+  bool ClosesGap(const StepContext& ctx) const;
+  // True when `start` is in a contact the velocity projection held at rest, and the joint's rate is still below
+  // `negligible_rate` [rad/s or m/s] (C2a'').
+  bool RestsOnStop(const State& start, double negligible_rate) const;
   // True when a contact begun with the gap closing at `closing` [m/s] rebounds, not a plastic impact that comes to
   // rest (C2a'); `fastest` is the fastest impact the stop has seen [m/s].
   static bool Rebounds(double closing, double fastest);

@@ -317,7 +317,11 @@ StepResult EnergyDecayingIntegrator::SolveStep(const State& start, double h, Sta
     held_[effect->slot()] = effect->ComesToRest(start, *end, negligible_rate);
     comes_to_rest = comes_to_rest || held_[effect->slot()];
   }
-  if (jumped || comes_to_rest) projection_.Apply(end, held_);
+  if ((jumped || comes_to_rest) && projection_.Apply(end, held_)) {
+    for (const ModalEffect* effect : model_.modal_effects()) {
+      if (held_[effect->slot()]) end->effects[effect->slot()].held_at_rest = true;
+    }
+  }
   return result;
 }
 

@@ -47,6 +47,41 @@ void CloseTouchedRigidStops(const Model& model, double round_off, State* state) 
   }
 }
 
+// A joint that only an open rigid stop can hold (a slider with no spring, pushed along its travel) has no stiffness
+// and its iteration matrix is singular: no increment moves it onto the stop. The stop it rests on is the one its
+// loads push it towards: of the open rigid stops not released on a variable no drive holds, the nearest that the
+// joint, released from rest at the start, accelerates towards, closed as a touched one is (its row g_f = 0 lands the
+// joint on it). One whose force then pulls is opened again (ReleasePullingStops). Returns whether any was closed.
+bool ClosePushedRigidStops(const Model& model, const std::vector<bool>& released, State* start) {
+  State at_rest = *start;
+  for (NodeState& n : at_rest.nodes) n.v = n.w = Vec3::Zero();
+  Eigen::VectorXd accelerations;
+  try {
+    accelerations = WithConsistentMotion(model, at_rest).qddot_prev;
+  } catch (const SolverError&) {
+    return false;  // no inertia to tell the loads' direction by
+  }
+  std::vector<int> nearest(model.num_variables(), -1);
+  const std::vector<const JointStop*>& stops = model.stop_effects();
+  for (size_t k = 0; k < stops.size(); ++k) {
+    const JointStop& stop = *stops[k];
+    const int v = stop.variable();
+    if (!stop.rigid() || released[k] || model.driven(v) || start->effects[stop.slot()].mode != JointStop::kOpen ||
+        stop.GapRate(accelerations[v]) >= 0.0) {
+      continue;
+    }
+    const double gap = stop.Gap(start->q[v]);
+    if (nearest[v] < 0 || gap < stops[nearest[v]]->Gap(start->q[v])) nearest[v] = static_cast<int>(k);
+  }
+  bool closed = false;
+  for (int k : nearest) {
+    if (k < 0) continue;
+    start->effects[stops[k]->slot()].mode = JointStop::kContact;
+    closed = true;
+  }
+  return closed;
+}
+
 // Opens the rigid stops that hold the equilibrium with a contact force that pulls (the load takes the joint off the
 // stop) in the start, and releases them: a landing does not close them again. Returns whether any was opened.
 bool ReleasePullingStops(const Model& model, const State& equilibrium, State* start, std::vector<bool>* released) {
@@ -152,10 +187,13 @@ StaticResult SolveStatic(const Model& model, SparseSystem* system, State* state)
   // Each closed stop either holds (a contact force >= 0) or is opened and the equilibrium solved again without it.
   std::vector<bool> released(model.stop_effects().size(), false);
   StaticResult result;
-  do {
+  while (true) {
     *state = start;
     result = SolveLoadSteps(model, system, released, state);
-  } while (result.converged && ReleasePullingStops(model, *state, &start, &released));
+    const bool again = result.converged ? ReleasePullingStops(model, *state, &start, &released)
+                                        : result.last.singular && ClosePushedRigidStops(model, released, &start);
+    if (!again) break;
+  }
   if (result.converged) RefuseOutOfReach(model, initial, *state, &result);
   return result;
 }
