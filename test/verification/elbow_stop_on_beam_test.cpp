@@ -19,14 +19,15 @@
 namespace flexmbd {
 namespace elbow_stop_on_beam_test {
 
-// The arm released straight, the shoulder held by its drive; the elbow's lossless Hertz stops at the URDF's
-// <limit>, with the contact radius `radius` [m].
-std::string ArmYaml(const std::string& radius, const std::string& t_end, const std::string& csv) {
+// The arm released straight, the shoulder held by its drive or free (`shoulder` its YAML entry); the elbow's lossless
+// Hertz stops at the URDF's <limit>, with the contact radius `radius` [m].
+std::string ArmYaml(const std::string& shoulder, const std::string& radius, const std::string& t_end,
+                    const std::string& csv) {
   return "beams:\n"
          "  upper: {length: 1.0, elements: 3, section: {EA: 1.0e8, GA2: 4.0e7, GA3: 4.0e7, GJ: 400.0, EI2: 500.0,\n"
          "          EI3: 500.0, m: 2.0}}\n"
          "joints:\n"
-         "  shoulder: {drive: {law: constant, value: 0.0}}\n"
+         + shoulder +
          "  elbow: {backlash: {radius_lower: " + radius + ", radius_upper: " + radius +
          ", stop: {type: elastic, law: hertz, stiffness: 1.0e7}}}\n"
          "solver: {t_end: " + t_end + "}\n"
@@ -36,13 +37,15 @@ std::string ArmYaml(const std::string& radius, const std::string& t_end, const s
 // Runs to t_end at default settings and checks the books (T6) on every sample: the stop is lossless and nothing
 // else dissipates, so what the scheme removes is booked as numerical dissipation and the books close to Newton's
 // tolerance (solver.tol, 1e-6) times the energy through them, as in the other runner cases.
-void ExpectRunsWithClosedBooks(const std::string& radius, const std::string& t_end, const std::string& name) {
+void ExpectRunsWithClosedBooks(const std::string& shoulder, const std::string& radius, const std::string& t_end,
+                               const std::string& stop, const std::string& name) {
   const std::string csv = testing::TempDir() + name + ".csv";
-  const std::string out = test::RunnerOutput("test/data/urdf/flex_arm_elbow.urdf", ArmYaml(radius, t_end, csv), name);
+  const std::string yaml = ArmYaml(shoulder, radius, t_end, csv);
+  const std::string out = test::RunnerOutput("test/data/urdf/flex_arm_elbow.urdf", yaml, name);
   EXPECT_NE(out.find("finished at t = " + t_end + " s"), std::string::npos) << out;
-  // The forearm reached its stop (the upper one: gravity turns it toward positive angles).
-  EXPECT_EQ(out.find("stop elbow upper: 0 contact"), std::string::npos) << out;
-  EXPECT_NE(out.find("stop elbow upper: "), std::string::npos) << out;
+  // The forearm reached the stop it falls onto.
+  EXPECT_EQ(out.find("stop elbow " + stop + ": 0 contact"), std::string::npos) << out;
+  EXPECT_NE(out.find("stop elbow " + stop + ": "), std::string::npos) << out;
   const test::CsvTable table = test::ReadCsv(csv);
   ASSERT_FALSE(table.rows.empty());
   double worst = 0;
@@ -55,11 +58,14 @@ void ExpectRunsWithClosedBooks(const std::string& radius, const std::string& t_e
 }
 
 TEST(ElbowStopOnBeam, ContactRadiusOneMetreStepsIntoTheSecondContact) {
-  ExpectRunsWithClosedBooks("1.0", "0.14", "elbow_stop_radius_1");
+  // Gravity turns the forearm toward positive angles, onto the upper stop.
+  ExpectRunsWithClosedBooks("  shoulder: {drive: {law: constant, value: 0.0}}\n", "1.0", "0.14", "upper",
+                            "elbow_stop_radius_1");
 }
 
 TEST(ElbowStopOnBeam, ContactRadiusTwentyMetresStepsIntoTheContact) {
-  ExpectRunsWithClosedBooks("20.0", "0.075", "elbow_stop_radius_20");
+  // The shoulder free: the whole arm falls, and the forearm, left behind, meets the lower stop.
+  ExpectRunsWithClosedBooks("", "20.0", "0.075", "lower", "elbow_stop_radius_20");
 }
 
 }  // namespace elbow_stop_on_beam_test
