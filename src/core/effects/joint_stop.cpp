@@ -422,9 +422,11 @@ double ElasticStop::OnsetError(const StepContext& ctx, const Onset& onset) const
 
 StepLimit ElasticStop::Limit(const StepContext& ctx, const State& end) const {
   StepLimit limit = ContactLimit(ctx, end);
-  // Like the landing (C5), the contact's rules ask for no step shorter than dt_min, and one at dt_min stands: the
-  // alternating mode a joint on a beam node carries changes its rate by a finite amount however short the step, and
-  // its contact's first step, judged by the budget (C6) on that change, was cut below any dt_min.
+  // Like the landing (C5), the rules of a step that begins open ask for no step shorter than dt_min, and one at dt_min
+  // stands: the alternating mode a joint on a beam node carries changes its rate by a finite amount however short the
+  // step, and its contact's first step, judged by the budget (C6) on that change, was cut below any dt_min. Inside a
+  // contact a step below dt_min is a contact too fast for it, and the run stops saying so.
+  if (Gap((*ctx.variables)[variable()].q_i) < 0) return limit;
   if (limit.retry < ctx.h) {
     limit.retry = ctx.h > solver_.dt_min ? std::max(limit.retry, solver_.dt_min) : kInfinity;
   }
