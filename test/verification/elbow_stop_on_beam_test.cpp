@@ -4,8 +4,8 @@
 // which moves it by a finite amount however short the step: the landings before the stop (C5) and the budget of
 // the contact's first step (C6) were redone below dt_min ("a stop or friction event could not be stepped across")
 // at the contact radius 1 m (t = 0.1326 s) and 20 m (0.0647 s). At dt_min the contact now begins where it is. (Later,
-// at 0.207 s and 0.077 s, the local error test (T12) asks for steps below dt_min on the same joint: issue 13's
-// estimate, not a stop event; the runs here end before that.)
+// at 0.184 s inside a contact (its budget (C6)) and at 0.077 s (the local error test (T12)) the same joint still asks
+// for steps below dt_min: open; the runs here end before that.)
 
 #include <gtest/gtest.h>
 
