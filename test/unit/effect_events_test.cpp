@@ -36,5 +36,24 @@ TEST(EffectEvents, ContactIntervalsPerStopCloseAtTheEndOfTheRun) {
                                       "stop hinge upper: 0 contact interval(s)"}));
 }
 
+// A friction that sticks at the end of a step and breaks away from the start of the next has two events at one instant:
+// a momentary stop, counted but not listed as an interval [t, t] (it had printed "[0, 0]" and "[2.00735, 2.00735]").
+TEST(EffectEvents, ZeroLengthIntervalsAreCountedNotListed) {
+  ModelSpec spec = test::WorldRevoluteModel();
+  StopSpec lower;
+  lower.name = "lower";
+  lower.side = StopSpec::Side::kLower;
+  lower.limit = 0.25;
+  spec.joints[0].effects[0].stops = {lower};
+  const Model model = BuildModel(spec);
+  const std::vector<EffectEvent> events = {
+      {0.2, 0, JointStop::kOpen, JointStop::kContact}, {0.2, 0, JointStop::kContact, JointStop::kOpen},
+      {0.5, 0, JointStop::kOpen, JointStop::kContact}, {0.6, 0, JointStop::kContact, JointStop::kOpen}};
+  State end = model.initial_state();
+  end.t = 1.0;
+  EXPECT_EQ(DescribeEffectIntervals(model, events, end),
+            (std::vector<std::string>{"stop hinge lower: 1 contact interval(s) [0.5, 0.6] s and 1 of zero length"}));
+}
+
 }  // namespace effect_events_test
 }  // namespace flexmbd

@@ -43,13 +43,19 @@ class JointStop : public ModalEffect {
 
   /// Open if in contact (a contact may always separate); an open or retracted stop keeps its mode.
   int ReleasedMode(const State& state) const override;
-  /// Approach rule: the next step may cross at most a little beyond the predicted contact.
+  /// Approach rule (C5): a step that crosses the stop from far is redone to land just short of it, never shorter than
+  /// dt_min; one at dt_min begins the contact where it is.
   StepLimit Limit(const StepContext& ctx, const State& end) const override;
   /// Counts contacts begun and applies the retraction rule; derived classes add their memory.
   void Commit(const StepContext& ctx, const State& end, EffectState* effect) const override;
 
  protected:
-  JointStop(const StopSpec& spec, int variable, int slot);
+  JointStop(const StopSpec& spec, int variable, int slot, const SolverSpec& solver);
+
+  // True when a step from the gap g_i to g_f < 0 [m] began too far from the stop to begin a contact (C5).
+  static bool StartsFar(double g_i, double g_f);
+
+  SolverSpec solver_;
 
  private:
   int variable_;
@@ -108,7 +114,6 @@ class RigidStop : public JointStop {
   double Acceleration(const State& state) const;
 
   int multiplier_;
-  SolverSpec solver_;
   const FrictionEffect* friction_ = nullptr;
 };
 
@@ -171,10 +176,12 @@ class ElasticStop : public JointStop {
   double MeanRateChange(const StepContext& ctx, const Onset& onset) const;
   // The joint's local error over the step ctx at the onset of a contact, against its tolerance (C6).
   double OnsetError(const StepContext& ctx, const Onset& onset) const;
+  // The landing (C5), the onset's error (C6') and the budget (C6) on the step ctx, before Limit floors a retry at
+  // dt_min.
+  StepLimit ContactLimit(const StepContext& ctx, const State& end) const;
 
   ContactLaw law_;
   int steps_per_contact_;
-  SolverSpec solver_;
   double touch_stiffness_;  ///< least static stiffness in contact [N/m] (StaticStiffness)
 };
 

@@ -24,19 +24,26 @@ std::string ListIntervals(const std::vector<std::pair<double, double>>& interval
   return out.str();
 }
 
-// Intervals of one effect in `mode`, from its events in time order; one still open ends at t_end.
+// Intervals of one effect in `mode`, from its events in time order; one still open ends at t_end. An interval of
+// zero length (a joint captured at the end of a step that breaks away from the start of the next: a momentary stop
+// where its slip turns) is counted in `instants`, not listed.
 std::vector<std::pair<double, double>> Intervals(const std::vector<EffectEvent>& events, int effect, int mode,
-                                                 int initial_mode, double t_end) {
+                                                 int initial_mode, double t_end, int* instants) {
   std::vector<std::pair<double, double>> intervals;
+  *instants = 0;
   bool inside = initial_mode == mode;
   double begin = 0;
+  auto close = [&](double end) {
+    if (end > begin) intervals.emplace_back(begin, end);
+    else ++*instants;
+  };
   for (const EffectEvent& e : events) {
     if (e.effect != effect) continue;
     if (!inside && e.to == mode) begin = e.t;
-    if (inside && e.to != mode) intervals.emplace_back(begin, e.t);
+    if (inside && e.to != mode) close(e.t);
     inside = e.to == mode;
   }
-  if (inside) intervals.emplace_back(begin, t_end);
+  if (inside) close(t_end);
   return intervals;
 }
 
@@ -69,18 +76,21 @@ std::vector<std::string> DescribeEffectIntervals(const Model& model, const std::
   std::vector<std::string> lines;
   for (size_t k = 0; k < model.stops().size(); ++k) {
     const int slot = model.stop_effects()[k]->slot();
+    int instants = 0;
     const auto intervals =
-        Intervals(events, slot, JointStop::kContact, model.initial_state().effects[slot].mode, t_end);
+        Intervals(events, slot, JointStop::kContact, model.initial_state().effects[slot].mode, t_end, &instants);
     std::ostringstream line;
     line << "stop " << model.stops()[k].joint << ' ' << model.stops()[k].stop << ": " << intervals.size()
          << " contact interval(s)" << ListIntervals(intervals);
+    if (instants > 0) line << " and " << instants << " of zero length";
     lines.push_back(line.str());
   }
   for (size_t k = 0; k < model.frictions().size(); ++k) {
     const FrictionEffect& friction = *model.friction_effects()[k];
     const int slot = friction.slot();
+    int instants = 0;
     const auto intervals =
-        Intervals(events, slot, FrictionEffect::kSticking, model.initial_state().effects[slot].mode, t_end);
+        Intervals(events, slot, FrictionEffect::kSticking, model.initial_state().effects[slot].mode, t_end, &instants);
     std::ostringstream line;
     line << "friction " << model.frictions()[k].joint << ": ";
     // The regularised law never sticks: its v0 is the regularisation speed the user gave, not a threshold.
@@ -90,6 +100,7 @@ std::vector<std::string> DescribeEffectIntervals(const Model& model, const std::
     line << ", largest slip speed " << state.effects[slot].reference << " m/s, dissipated " << state.effects[slot].work
          << " J";
     if (!regularised) line << ", " << intervals.size() << " sticking interval(s)" << ListIntervals(intervals);
+    if (instants > 0) line << " and " << instants << " momentary stop(s) of zero length";
     lines.push_back(line.str());
   }
   return lines;

@@ -1,0 +1,72 @@
+// An elastic stop on a joint at a beam's tip (docs/theory.md, (C5) and (C6)), through the runner: a rigid forearm
+// falls 0.05 rad onto the elbow's Hertz stop at the tip of a flexible upper arm (test/data/urdf/flex_arm_elbow.urdf,
+// the beam without rotary inertia). The elbow's variable carries the alternating mode of the beam tip's rotation,
+// which moves it by a finite amount however short the step: the landings before the stop (C5) and the budget of
+// the contact's first step (C6) were redone below dt_min ("a stop or friction event could not be stepped across")
+// at the contact radius 1 m (t = 0.1326 s) and 20 m (0.0647 s). At dt_min the contact now begins where it is. (Later,
+// at 0.184 s inside a contact (its budget (C6)) and at 0.077 s (the local error test (T12)) the same joint still asks
+// for steps below dt_min: open; the runs here end before that.)
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+
+#include "../integration/helpers/csv_table.hpp"
+#include "csv_books.hpp"
+#include "runner_output.hpp"
+
+namespace flexmbd {
+namespace elbow_stop_on_beam_test {
+
+// The arm released straight, the shoulder held by its drive or free (`shoulder` its YAML entry); the elbow's lossless
+// Hertz stops at the URDF's <limit>, with the contact radius `radius` [m].
+std::string ArmYaml(const std::string& shoulder, const std::string& radius, const std::string& t_end,
+                    const std::string& csv) {
+  return "beams:\n"
+         "  upper: {length: 1.0, elements: 3, section: {EA: 1.0e8, GA2: 4.0e7, GA3: 4.0e7, GJ: 400.0, EI2: 500.0,\n"
+         "          EI3: 500.0, m: 2.0}}\n"
+         "joints:\n"
+         + shoulder +
+         "  elbow: {backlash: {radius_lower: " + radius + ", radius_upper: " + radius +
+         ", stop: {type: elastic, law: hertz, stiffness: 1.0e7}}}\n"
+         "solver: {t_end: " + t_end + "}\n"
+         "output: {csv: " + csv + "}\n";
+}
+
+// Runs to t_end at default settings and checks the books (T6) on every sample: the stop is lossless and nothing
+// else dissipates, so what the scheme removes is booked as numerical dissipation and the books close to Newton's
+// tolerance (solver.tol, 1e-6) times the energy through them, as in the other runner cases.
+void ExpectRunsWithClosedBooks(const std::string& shoulder, const std::string& radius, const std::string& t_end,
+                               const std::string& stop, const std::string& name) {
+  const std::string csv = testing::TempDir() + name + ".csv";
+  const std::string yaml = ArmYaml(shoulder, radius, t_end, csv);
+  const std::string out = test::RunnerOutput("test/data/urdf/flex_arm_elbow.urdf", yaml, name);
+  EXPECT_NE(out.find("finished at t = " + t_end + " s"), std::string::npos) << out;
+  // The forearm reached the stop it falls onto.
+  EXPECT_EQ(out.find("stop elbow " + stop + ": 0 contact"), std::string::npos) << out;
+  EXPECT_NE(out.find("stop elbow " + stop + ": "), std::string::npos) << out;
+  const test::CsvTable table = test::ReadCsv(csv);
+  ASSERT_FALSE(table.rows.empty());
+  double worst = 0;
+  for (const std::vector<double>& row : table.rows) {
+    const test::CsvBooks books = test::BooksAt(table, row);
+    worst = std::max(worst, std::abs(books.imbalance) / books.throughput);
+  }
+  testing::Test::RecordProperty("books_per_throughput_1e-9", std::to_string(worst * 1e9));
+  EXPECT_LE(worst, 1.0e-6);
+}
+
+TEST(ElbowStopOnBeam, ContactRadiusOneMetreStepsIntoTheSecondContact) {
+  // Gravity turns the forearm toward positive angles, onto the upper stop.
+  ExpectRunsWithClosedBooks("  shoulder: {drive: {law: constant, value: 0.0}}\n", "1.0", "0.14", "upper",
+                            "elbow_stop_radius_1");
+}
+
+TEST(ElbowStopOnBeam, ContactRadiusTwentyMetresStepsIntoTheContact) {
+  // The shoulder free: the whole arm falls, and the forearm, left behind, meets the lower stop.
+  ExpectRunsWithClosedBooks("", "20.0", "0.075", "lower", "elbow_stop_radius_20");
+}
+
+}  // namespace elbow_stop_on_beam_test
+}  // namespace flexmbd
