@@ -143,15 +143,21 @@ ErrorEstimate EstimateLocalError(const Model& model, const State& end) {
     }
   };
   // A damped beam's deformation decays at mu omega^2 / 2, omega^2 = |x_d'''| / |x_d'| for one mode (x_d' taken as
-  // the beam's largest deformation rate): the error a step leaves in it adds up over 1 / that rate, not over the
-  // time left, and is discounted by their ratio (T12b). A mode's local error is a phase error: besides the position
-  // part h^3 x_d''' / 12 its velocity carries h^3 x_d'''' / 12 = h^3 omega^2 x_d'' / 12, counted as the position
-  // error it stands for (divided by omega), so that the entry does not swing with the mode's phase (T12c).
-  const double time_left = std::max(0.0, solver.t_end - end.t);
+  // the beam's largest deformation rate): the error a step leaves in it adds up over 1 / that rate, and is discounted
+  // by its ratio to the horizon over which an undamped error adds up (T12b). The relative tolerance lets that grow by
+  // error_tol times the peak speed per unit time, so the horizon is the time the motion takes to move by the model's
+  // size at its peak speed (by a radian at its peak spin while no node has moved): the damped mode keeps error_tol
+  // of that size; or the time run so far, if longer. Not the time left to t_end: every step, and every sample, then
+  // depended on where the run ends. A mode's local error is a phase error: besides the position part h^3 x_d''' / 12
+  // its velocity carries h^3 x_d'''' / 12 = h^3 omega^2 x_d'' / 12, counted as the position error it stands for
+  // (divided by omega), so that the entry does not swing with the mode's phase (T12c).
+  const double moving = end.peak_speed > 0 ? model.length_scale() / end.peak_speed
+                                           : (end.peak_spin > 0 ? 1.0 / end.peak_spin : 0.0);
+  const double horizon = std::max(end.t - model.initial_state().t, moving);
   auto discounted = [&](const Vec3& whole, const Vec3& deformed, const Vec3& deformed_acceleration, double damping,
                         double peak) {
     const double omega_squared = peak > 0 ? deformed.norm() / peak : 0.0;
-    const double decays = std::max(1.0, 0.5 * damping * omega_squared * time_left);
+    const double decays = std::max(1.0, 0.5 * damping * omega_squared * horizon);
     const double position = (whole - deformed + deformed / decays).norm();
     return std::hypot(position, std::sqrt(omega_squared) * deformed_acceleration.norm() / decays);
   };
