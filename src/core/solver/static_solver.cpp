@@ -214,8 +214,9 @@ StaticResult SolveStatic(const Model& model, SparseSystem* system, State* state)
   while (true) {
     *state = start;
     result = SolveLoadSteps(model, system, released, state);
-    const bool again = result.converged ? ReleasePullingStops(model, *state, &start, &released)
-                                        : result.last.singular && HoldPushedJoints(model, increment_rule, released, &start);
+    const bool again = result.converged
+                           ? ReleasePullingStops(model, *state, &start, &released)
+                           : result.last.singular && HoldPushedJoints(model, increment_rule, released, &start);
     if (!again) break;
   }
   if (result.converged) RefuseOutOfReach(model, initial, *state, &result);
