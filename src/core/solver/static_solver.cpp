@@ -59,10 +59,14 @@ bool HoldPushedJoints(const Model& model, const StaticIncrement& increment_rule,
                       State* start) {
   State released_motion = *start;
   for (NodeState& n : released_motion.nodes) n.v = n.w = Vec3::Zero();
+  // A model with motions that have no inertia (a beam node without rotary inertia) has no accelerations to tell the
+  // loads' direction by: then the nearest rigid stop is closed whichever way it lies, and if it pulls, opened again
+  // and released, and the next nearest closed.
+  bool directed = true;
   try {
     released_motion = WithConsistentMotion(model, released_motion);
   } catch (const SolverError&) {
-    return false;  // no inertia to tell the loads' direction by
+    directed = false;
   }
   const Eigen::VectorXd& accelerations = released_motion.qddot_prev;
   std::vector<int> nearest(model.num_variables(), -1);
@@ -71,8 +75,9 @@ bool HoldPushedJoints(const Model& model, const StaticIncrement& increment_rule,
     const JointStop& stop = *stops[k];
     const int v = stop.variable();
     const double gap = stop.Gap(start->q[v]);
-    if (released[k] || model.driven(v) || start->effects[stop.slot()].mode != JointStop::kOpen ||
-        stop.GapRate(accelerations[v]) >= 0.0 || (!stop.rigid() && gap <= 0.0)) {
+    const bool pushed = directed ? stop.GapRate(accelerations[v]) < 0.0 : stop.rigid();
+    if (released[k] || model.driven(v) || start->effects[stop.slot()].mode != JointStop::kOpen || !pushed ||
+        (!stop.rigid() && gap <= 0.0)) {
       continue;
     }
     if (nearest[v] < 0 || gap < stops[nearest[v]]->Gap(start->q[v])) nearest[v] = static_cast<int>(k);
