@@ -11,10 +11,12 @@
 
 #include <cmath>
 #include <string>
+#include <vector>
 
 #include "../integration/helpers/csv_table.hpp"
 #include "csv_books.hpp"
 #include "runner_output.hpp"
+#include "yaml_text.hpp"
 
 namespace flexmbd {
 namespace elbow_stop_on_beam_test {
@@ -66,6 +68,40 @@ TEST(ElbowStopOnBeam, ContactRadiusOneMetreStepsIntoTheSecondContact) {
 TEST(ElbowStopOnBeam, ContactRadiusTwentyMetresStepsIntoTheContact) {
   // The shoulder free: the whole arm falls, and the forearm, left behind, meets the lower stop.
   ExpectRunsWithClosedBooks("", "20.0", "0.075", "lower", "elbow_stop_radius_20");
+}
+
+// A static analysis of the arm started straight, its shoulder held, the elbow's rigid stops open: the forearm's hinge
+// is at a dead point (gravity gives it no stiffness) and the beam's nodes have no rotary inertia, so the model released
+// from rest has no accelerations to tell the load's direction by. It stopped with "singular iteration matrix after 1
+// Newton iteration(s)"; now the nearest stop is closed, the lower one pulls and is released, and the forearm rests on
+// the upper one (docs/theory.md, "Static increments").
+TEST(ElbowStopOnBeam, StaticAnalysisFromStraightRestsOnTheRigidStopTheForearmFallsTo) {
+  const std::string csv = testing::TempDir() + "elbow_static.csv";
+  std::string yaml = ArmYaml("  shoulder: {drive: {law: constant, value: 0.0}}\n", "1.0", "0.0", csv);
+  yaml = test::Replaced(yaml, "type: elastic, law: hertz, stiffness: 1.0e7", "type: rigid");
+  yaml = test::Replaced(yaml, "solver: {t_end: 0.0}", "solver: {analysis: static}");
+  test::RunnerOutput("test/data/urdf/flex_arm_elbow.urdf", yaml, "elbow_static");
+  const test::CsvTable table = test::ReadCsv(csv);
+  ASSERT_FALSE(table.rows.empty());
+  const std::vector<double>& row = table.rows.back();
+  // On the upper stop at 0.05 rad to the constraint tolerance (1e-11 m of gap at the radius of 1 m).
+  EXPECT_NEAR(row[table.Column("joint.elbow.position")], 0.05, 1.0e-10);
+  EXPECT_EQ(row[table.Column("stop.elbow.upper.in_contact")], 1.0);
+  EXPECT_EQ(row[table.Column("stop.elbow.lower.in_contact")], 0.0);
+  // The stop carries the forearm's weight moment m g d cos(0.05 + theta) about the elbow, theta the beam tip's droop
+  // under its own weight w, the forearm's weight P and that moment M (cantilever, EI 500 N m^2, L 1 m):
+  // theta = w L^3 / (6 EI) + P L^2 / (2 EI) + M L / EI, solved with M by fixed point. Three elements with lumped mass
+  // (B6) and small deflections change theta by less than 1e-4 rad (the droop is 0.021 rad), the torque by less than
+  // tan(0.071) 1e-4 = 7e-6 of it.
+  constexpr double kG = 9.81, kEI = 500.0, kWeight = 1.0 * kG, kArm = 0.25, kBeamWeight = 2.0 * kG;
+  double moment = kWeight * kArm;
+  for (int k = 0; k < 50; ++k) {
+    const double theta = kBeamWeight / (6 * kEI) + kWeight / (2 * kEI) + moment / kEI;
+    moment = kWeight * kArm * std::cos(0.05 + theta);
+  }
+  const double torque = -row[table.Column("stop.elbow.upper.torque")];
+  testing::Test::RecordProperty("torque_relative_error_1e-9", std::to_string((torque / moment - 1) * 1e9));
+  EXPECT_NEAR(torque, moment, 2.0e-5 * moment);
 }
 
 }  // namespace elbow_stop_on_beam_test

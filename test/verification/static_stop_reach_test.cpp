@@ -85,6 +85,46 @@ TEST(StaticStopReach, PendulumJustPastTheHorizontalHangsBelowWithoutPassingItsSt
   }
 }
 
+// Exactly horizontal, gravity's stiffness m g L sin q is zero and the hinge has none: the iteration matrix was singular
+// ("singular iteration matrix after 1 Newton iteration(s)" in load increment 1) unless a rigid stop could be closed.
+// Its upper stop 0.3 rad below, the pendulum rests on it: the contact carries the weight's moment, rho F = m g L cos q.
+// The balance solved by hand with Newton for the stop's law F(a), a = rho (q - 0.3) its approach [m].
+double RestingAngle(double stiffness, double exponent) {
+  double q = 0.3 + 0.01;
+  for (int k = 0; k < 100; ++k) {
+    const double a = kRadius * (q - 0.3);
+    const double residual = kRadius * stiffness * std::pow(a, exponent) - kG * std::cos(q);
+    const double slope = kRadius * kRadius * stiffness * exponent * std::pow(a, exponent - 1) + kG * std::sin(q);
+    q -= residual / slope;
+  }
+  return q;
+}
+
+TEST(StaticStopReach, HorizontalPendulumRestsOnTheStopItsWeightPushesItTo) {
+  struct Case {
+    std::string stop;
+    double stiffness, exponent;  // of the elastic law; 0: rigid
+  };
+  for (const Case& c : {Case{"stop: {type: elastic, law: hertz, stiffness: 1.0e6}", 1.0e6, 1.5},
+                        Case{"stop: {type: elastic, law: linear, stiffness: 1.0e6}", 1.0e6, 1.0},
+                        Case{"stop: {type: rigid}", 0.0, 0.0}}) {
+    const double q = c.stiffness > 0 ? RestingAngle(c.stiffness, c.exponent) : 0.3;
+    test::CsvTable csv;
+    const std::vector<double> row =
+        Equilibrium("horizontal", Yaml(0.0, "lower: -0.3, radius_lower: 0.1, upper: 0.3, radius_upper: 0.1, " + c.stop,
+                                       -kG),
+                    &csv);
+    ASSERT_FALSE(row.empty()) << c.stop;
+    // The approach q - 0.3 to the Newton tolerance, 1e-6 relative on forces (a Hertz approach to 2/3 of that); on
+    // the rigid stop the gap to the constraint tolerance.
+    EXPECT_NEAR(row[csv.Column("joint.pivot.position")], q, c.stiffness > 0 ? kForce * (q - 0.3) : kOnStop) << c.stop;
+    EXPECT_EQ(row[csv.Column("stop.pivot.upper.in_contact")], 1.0) << c.stop;
+    EXPECT_EQ(row[csv.Column("stop.pivot.lower.in_contact")], 0.0) << c.stop;
+    // The resting torque is the weight's moment.
+    EXPECT_NEAR(-row[csv.Column("stop.pivot.upper.torque")], kG * std::cos(q), kForce * kG) << c.stop;
+  }
+}
+
 TEST(StaticStopReach, AnEquilibriumMoreThanATurnAwayIsRefusedWithTheJointNamed) {
   // Without gravity a spring with its rest 7 rad away holds the pendulum there, more than a turn from its start: not
   // the equilibrium nearest to it, refused with exit status 3 (a run that failed) naming the joint and its turn.

@@ -47,39 +47,67 @@ void CloseTouchedRigidStops(const Model& model, double round_off, State* state) 
   }
 }
 
-// A joint that only an open rigid stop can hold (a slider with no spring, pushed along its travel) has no stiffness
-// and its iteration matrix is singular: no increment moves it onto the stop. The stop it rests on is the one its
-// loads push it towards: of the open rigid stops not released on a variable no drive holds, the nearest that the
-// joint, released from rest at the start, accelerates towards, closed as a touched one is (its row g_f = 0 lands the
-// joint on it). One whose force then pulls is opened again (ReleasePullingStops). Returns whether any was closed.
-bool ClosePushedRigidStops(const Model& model, const std::vector<bool>& released, State* start) {
-  State at_rest = *start;
-  for (NodeState& n : at_rest.nodes) n.v = n.w = Vec3::Zero();
-  Eigen::VectorXd accelerations;
+// A joint that only an open stop can hold (a slider with no spring pushed along its travel, a hinge at a dead point
+// such as a horizontal pendulum) has no stiffness, and its iteration matrix is singular: no increment moves it onto
+// the stop. The stop it rests on is the one its loads push it towards: of the open stops not released on a variable
+// no drive holds, the nearest that the joint, released from rest at the start, accelerates towards. A rigid one is
+// closed as a touched one is (its row g_f = 0 lands the joint on it); an elastic one has no row to close, so the
+// model is moved along its motion released from rest until the joint is just past the stop (the increment rule's
+// landing), where the stop's static stiffness holds it. One whose force then pulls is opened again
+// (ReleasePullingStops). Returns whether any was closed or reached.
+bool HoldPushedJoints(const Model& model, const StaticIncrement& increment_rule, const std::vector<bool>& released,
+                      State* start) {
+  State released_motion = *start;
+  for (NodeState& n : released_motion.nodes) n.v = n.w = Vec3::Zero();
+  // A model with motions that have no inertia (a beam node without rotary inertia) has no accelerations to tell the
+  // loads' direction by: then the nearest rigid stop is closed whichever way it lies, and if it pulls, opened again
+  // and released, and the next nearest closed.
+  bool directed = true;
   try {
-    accelerations = WithConsistentMotion(model, at_rest).qddot_prev;
+    released_motion = WithConsistentMotion(model, released_motion);
   } catch (const SolverError&) {
-    return false;  // no inertia to tell the loads' direction by
+    directed = false;
   }
+  const Eigen::VectorXd& accelerations = released_motion.qddot_prev;
   std::vector<int> nearest(model.num_variables(), -1);
   const std::vector<const JointStop*>& stops = model.stop_effects();
   for (size_t k = 0; k < stops.size(); ++k) {
     const JointStop& stop = *stops[k];
     const int v = stop.variable();
-    if (!stop.rigid() || released[k] || model.driven(v) || start->effects[stop.slot()].mode != JointStop::kOpen ||
-        stop.GapRate(accelerations[v]) >= 0.0) {
+    const double gap = stop.Gap(start->q[v]);
+    const bool pushed = directed ? stop.GapRate(accelerations[v]) < 0.0 : stop.rigid();
+    if (released[k] || model.driven(v) || start->effects[stop.slot()].mode != JointStop::kOpen || !pushed ||
+        (!stop.rigid() && gap <= 0.0)) {
       continue;
     }
-    const double gap = stop.Gap(start->q[v]);
     if (nearest[v] < 0 || gap < stops[nearest[v]]->Gap(start->q[v])) nearest[v] = static_cast<int>(k);
   }
-  bool closed = false;
+  bool held = false;
+  // The release motion's time scale [s^2] that takes the farthest pushed elastic stop's joint twice its gap: the
+  // landing ends the move just past the first stop met.
+  double move = 0;
   for (int k : nearest) {
     if (k < 0) continue;
-    start->effects[stops[k]->slot()].mode = JointStop::kContact;
-    closed = true;
+    const JointStop& stop = *stops[k];
+    held = true;
+    if (stop.rigid()) {
+      start->effects[stop.slot()].mode = JointStop::kContact;
+      continue;
+    }
+    const int v = stop.variable();
+    move = std::max(move, -2.0 * stop.Gap(start->q[v]) / stop.GapRate(accelerations[v]));
   }
-  return closed;
+  if (move > 0) {
+    Eigen::VectorXd increment = Eigen::VectorXd::Zero(model.num_unknowns());
+    for (int k = 0; k < model.num_nodes(); ++k) {
+      increment.segment<3>(model.node_unknown(k)) = move * released_motion.nodes[k].a_prev;
+      increment.segment<3>(model.node_unknown(k) + 3) = move * released_motion.nodes[k].alpha_prev;
+    }
+    for (int v = 0; v < model.num_variables(); ++v) increment[model.variable_unknown(v)] = move * accelerations[v];
+    // No residual: a move along the loads' own motion is downhill, and is only bounded in its turns.
+    increment_rule.Apply(Eigen::VectorXd::Zero(model.num_unknowns()), increment, released, start);
+  }
+  return held;
 }
 
 // Opens the rigid stops that hold the equilibrium with a contact force that pulls (the load takes the joint off the
@@ -186,12 +214,14 @@ StaticResult SolveStatic(const Model& model, SparseSystem* system, State* state)
   CloseTouchedRigidStops(model, RoundOffFloor(model.length_scale()), &start);
   // Each closed stop either holds (a contact force >= 0) or is opened and the equilibrium solved again without it.
   std::vector<bool> released(model.stop_effects().size(), false);
+  const StaticIncrement increment_rule(model);
   StaticResult result;
   while (true) {
     *state = start;
     result = SolveLoadSteps(model, system, released, state);
-    const bool again = result.converged ? ReleasePullingStops(model, *state, &start, &released)
-                                        : result.last.singular && ClosePushedRigidStops(model, released, &start);
+    const bool again = result.converged
+                           ? ReleasePullingStops(model, *state, &start, &released)
+                           : result.last.singular && HoldPushedJoints(model, increment_rule, released, &start);
     if (!again) break;
   }
   if (result.converged) RefuseOutOfReach(model, initial, *state, &result);
