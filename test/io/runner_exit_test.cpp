@@ -307,4 +307,19 @@ TEST(RunnerExit, MoreModesThanTheModelHasAreAllPrintedWithAWarning) {
             "flexmbd_run: warning: solver.eigen.modes: 50 asked for, the model has 1; all 1 printed\n");
 }
 
+TEST(RunnerExit, JointPastTheEndOfABeamExitsWithTwoAndSaysSo) {
+  // test/data/urdf/beam_arm.urdf hinges its tip 1 m out along the beam 'arm'; here the beam is 0.5 m long.
+  const std::string yaml = WriteFile(
+      "short_arm.yaml",
+      "beams: {arm: {length: 0.5, elements: 2, order: 3, section: {EA: 1.0e7, GA2: 4.0e6, GA3: 4.0e6, GJ: 50.0, "
+      "EI2: 80.0, EI3: 100.0, m: 2.5}}}\nsolver: {t_end: 0.01}\n");
+  const RunOutcome out = RunRunner("--urdf " + Data("urdf/beam_arm.urdf") + " --config " + yaml);
+  EXPECT_EQ(out.exit_status, kBadInputExit);
+  EXPECT_EQ(out.stderr_text, "flexmbd_run: " + Data("urdf/beam_arm.urdf") + " + " + yaml +
+                                 ": joint 'tip_hinge': x = 1 m on beam 'arm' is past its end (length 0.5 m, 2 "
+                                 "element(s) of order 3: nodes 0..6 every 0.08333333333333333 m, the nearest node 6 "
+                                 "at 0.5 m); expected a node position [m]: 0, 0.08333333333333333, "
+                                 "0.16666666666666666, 0.25, 0.3333333333333333, 0.4166666666666667, 0.5\n");
+}
+
 }  // namespace runner_exit_test
