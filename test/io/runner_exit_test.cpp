@@ -307,6 +307,41 @@ TEST(RunnerExit, MoreModesThanTheModelHasAreAllPrintedWithAWarning) {
             "flexmbd_run: warning: solver.eigen.modes: 50 asked for, the model has 1; all 1 printed\n");
 }
 
+// A pendulum on a revolute hinge whose URDF <limit> is +-1.5 rad: a user typed degrees under its radian keys (explore
+// D5), and the run went ahead.
+std::string LimitedHingeCase(const std::string& name, const std::string& joint_yaml) {
+  const std::string urdf = WriteFile(
+      "limited_hinge.urdf",
+      "<robot name=\"r\"><link name=\"world\"/><link name=\"arm\"><inertial><origin xyz=\"0 0 -1\"/>"
+      "<mass value=\"1\"/><inertia ixx=\"0.01\" ixy=\"0\" ixz=\"0\" iyy=\"0.01\" iyz=\"0\" izz=\"0.01\"/>"
+      "</inertial></link><joint name=\"hinge\" type=\"revolute\"><parent link=\"world\"/><child link=\"arm\"/>"
+      "<axis xyz=\"0 1 0\"/><limit lower=\"-1.5\" upper=\"1.5\" effort=\"1\" velocity=\"1\"/></joint></robot>");
+  return "--urdf " + urdf + " --config " +
+         WriteFile(name, "joints: {hinge: " + joint_yaml + "}\nsolver: {t_end: 0.01}\n");
+}
+
+TEST(RunnerExit, InitialPositionOutsideTheUrdfLimitExitsWithTwoAndNamesTheDegreeKey) {
+  const RunOutcome out = RunRunner(LimitedHingeCase("initial_30.yaml", "{initial: {position: 30}}"));
+  EXPECT_EQ(out.exit_status, kBadInputExit);
+  EXPECT_EQ(out.stderr_text, "flexmbd_run: " + testing::TempDir() +
+                                 "initial_30.yaml: joints.hinge.initial.position: 30 [rad] is outside the URDF <limit> "
+                                 "[-1.5, 1.5] [rad] of joint 'hinge'; expected an initial position within it (or "
+                                 "backlash stops, which bound the motion instead); if 30 is in degrees, write "
+                                 "position_deg: 30\n");
+}
+
+TEST(RunnerExit, StopOutsideTheUrdfLimitIsAWarningAndTheRunGoesOn) {
+  const RunOutcome out = RunRunner(LimitedHingeCase("stop_30.yaml", "{backlash: {lower: -1.0, upper: 30}}"));
+  EXPECT_EQ(out.exit_status, 0) << out.stderr_text;
+  EXPECT_EQ(out.stderr_text, "flexmbd_run: warning: " + testing::TempDir() +
+                                 "stop_30.yaml: joints.hinge.backlash.upper: 30 [rad] is outside the URDF <limit> "
+                                 "[-1.5, 1.5] [rad] of joint 'hinge': this stop, not the <limit>, bounds the motion; "
+                                 "if 30 is in degrees, write upper_deg: 30\n");
+  const RunOutcome inside = RunRunner(LimitedHingeCase("stop_30_deg.yaml", "{backlash: {lower: -1.0, upper_deg: 30}}"));
+  EXPECT_EQ(inside.exit_status, 0) << inside.stderr_text;
+  EXPECT_EQ(inside.stderr_text, "");
+}
+
 TEST(RunnerExit, JointPastTheEndOfABeamExitsWithTwoAndSaysSo) {
   // test/data/urdf/beam_arm.urdf hinges its tip 1 m out along the beam 'arm'; here the beam is 0.5 m long.
   const std::string yaml = WriteFile(
