@@ -342,6 +342,16 @@ TEST(RunnerExit, StopOutsideTheUrdfLimitIsAWarningAndTheRunGoesOn) {
   EXPECT_EQ(inside.stderr_text, "");
 }
 
+TEST(RunnerExit, SineDriveWithoutAFrequencyExitsWithTwoAndNamesTheKey) {
+  // The frequency defaulted to 0 Hz: the drive held the hinge at amplitude sin(phase) = 0 for the whole run.
+  const RunOutcome out =
+      RunRunner(LimitedHingeCase("sine_no_frequency.yaml", "{drive: {law: sine, amplitude_deg: 20}}"));
+  EXPECT_EQ(out.exit_status, kBadInputExit);
+  EXPECT_EQ(out.stderr_text, "flexmbd_run: " + testing::TempDir() +
+                                 "sine_no_frequency.yaml: joints.hinge.drive: missing key 'frequency'; expected a "
+                                 "frequency > 0 [Hz] (a sine without it is a constant: law: constant)\n");
+}
+
 TEST(RunnerExit, JointPastTheEndOfABeamExitsWithTwoAndSaysSo) {
   // test/data/urdf/beam_arm.urdf hinges its tip 1 m out along the beam 'arm'; here the beam is 0.5 m long.
   const std::string yaml = WriteFile(
