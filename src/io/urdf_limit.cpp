@@ -10,7 +10,7 @@ namespace flexmbd {
 namespace io {
 namespace {
 // A position on the <limit> within this fraction of max(1, |bound|) counts as on it: values are typed by hand or
-// are a drive's f(0), which only the time function's rounding separates from the bound it was written to reach.
+// are a drive's values, which only the time function's rounding separates from the bound it was written to reach.
 constexpr double kLimitTolerance = 1.0e-9;
 
 const double kRadiansPerDegree = M_PI / 180.0;
@@ -43,21 +43,19 @@ std::string DegreesHint(const UnitField& field, double position, const JointSpec
   if (field.unit != "rad" || !WithinLimit(position * kRadiansPerDegree, joint)) return "";
   const std::string& path = field.field.path();
   const std::string key = path.substr(path.find_last_of('.') + 1);
-  if (key == "drive") return "";  // a time function has its own _deg keys
   return "; if " + field.field.Text() + " is in degrees, write " + key + "_deg: " + field.field.Text();
 }
 }  // namespace
 
-void CheckInitialWithinUrdfLimit(const UnitField& source, double position, const JointSpec& joint, int variable) {
-  if (!LimitApplies(joint, variable) || !joint.effects[variable].stops.empty() || WithinLimit(position, joint)) return;
-  const bool drive = !joint.effects[variable].drives.empty();
-  const std::string value = drive ? "the drive's value at t = 0, " + FormatNumber(position) + " [" +
-                                        SiUnit(source) + "], is"
-                                  : WrittenValue(source, position) + " is";
-  source.field.Fail(value + " outside " + LimitText(joint, SiUnit(source)) + "; expected " +
-                    (drive ? "a drive that starts" : "an initial position") +
-                    " within it (or backlash stops, which bound the motion instead)" +
-                    DegreesHint(source, position, joint));
+void WarnInitialOutsideUrdfLimit(const UnitField& position_field, double position, const JointSpec& joint,
+                                 int variable, std::vector<std::string>* warnings) {
+  const VariableEffectsSpec& effects = joint.effects[variable];
+  if (!LimitApplies(joint, variable) || !effects.stops.empty() || !effects.drives.empty()) return;
+  if (WithinLimit(position, joint)) return;
+  warnings->push_back(position_field.field.Message(
+      WrittenValue(position_field, position) + " is outside " + LimitText(joint, SiUnit(position_field)) +
+      ": without stops (backlash) nothing holds the joint to its <limit>" +
+      DegreesHint(position_field, position, joint)));
 }
 
 void WarnStopOutsideUrdfLimit(const UnitField& stop, double position, const JointSpec& joint, int variable,

@@ -240,12 +240,15 @@ void ReadVariable(const std::vector<Field>& sources, int variable, JointSpec* jo
   if (friction.present()) effects.frictions = {ReadFriction(friction, units)};
   const Field initial = Pick(sources, "initial");
   ReadInitial(initial, drive, units, variable, joint);
-  if (drive.present()) WarnDriveLeavingUrdfLimit(drive, run.t_end, *joint, variable, units.position, run.warnings);
   const std::optional<UnitField> source = InitialPositionSource(initial, drive, units);
   if (!source) return;
   const double position = joint->initial_position[variable];
   CheckResolvable(source->field, position, units.position);
-  CheckInitialWithinUrdfLimit(*source, position, *joint, variable);
+  if (drive.present()) {
+    WarnDriveLeavingUrdfLimit(drive, run.t_end, *joint, variable, units.position, run.warnings);
+  } else {
+    WarnInitialOutsideUrdfLimit(*source, position, *joint, variable, run.warnings);
+  }
 }
 
 std::vector<Field> ReadVariableList(const Field& field, const JointSpec& joint) {
