@@ -320,25 +320,28 @@ std::string LimitedHingeCase(const std::string& name, const std::string& joint_y
          WriteFile(name, "joints: {hinge: " + joint_yaml + "}\nsolver: {t_end: 0.01}\n");
 }
 
-TEST(RunnerExit, InitialPositionOutsideTheUrdfLimitIsAWarningNamingTheDegreeKey) {
-  const RunOutcome out = RunRunner(LimitedHingeCase("initial_30.yaml", "{initial: {position: 30}}"));
+// The limited hinge with `joint_yaml` runs (exit 0) and stderr holds the one line "flexmbd_run: warning: <yaml>: " +
+// `warning` (empty `warning`: nothing on stderr).
+void ExpectRunWithWarning(const std::string& yaml_name, const std::string& joint_yaml, const std::string& warning) {
+  const RunOutcome out = RunRunner(LimitedHingeCase(yaml_name, joint_yaml));
   EXPECT_EQ(out.exit_status, 0) << out.stderr_text;
-  EXPECT_EQ(out.stderr_text, "flexmbd_run: warning: " + testing::TempDir() +
-                                 "initial_30.yaml: joints.hinge.initial.position: 30 [rad] is outside the URDF <limit> "
-                                 "[-1.5, 1.5] [rad] of joint 'hinge': without stops (backlash) nothing holds the joint "
-                                 "to its <limit>; if 30 is in degrees, write position_deg: 30\n");
+  EXPECT_EQ(out.stderr_text,
+            warning.empty() ? "" : "flexmbd_run: warning: " + testing::TempDir() + yaml_name + ": " + warning + "\n");
+}
+
+TEST(RunnerExit, InitialPositionOutsideTheUrdfLimitIsAWarningNamingTheDegreeKey) {
+  ExpectRunWithWarning("initial_30.yaml", "{initial: {position: 30}}",
+                       "joints.hinge.initial.position: 30 [rad] is outside the URDF <limit> [-1.5, 1.5] [rad] of "
+                       "joint 'hinge': without stops (backlash) nothing holds the joint to its <limit>; if 30 is in "
+                       "degrees, write position_deg: 30");
 }
 
 TEST(RunnerExit, StopOutsideTheUrdfLimitIsAWarningAndTheRunGoesOn) {
-  const RunOutcome out = RunRunner(LimitedHingeCase("stop_30.yaml", "{backlash: {lower: -1.0, upper: 30}}"));
-  EXPECT_EQ(out.exit_status, 0) << out.stderr_text;
-  EXPECT_EQ(out.stderr_text, "flexmbd_run: warning: " + testing::TempDir() +
-                                 "stop_30.yaml: joints.hinge.backlash.upper: 30 [rad] is outside the URDF <limit> "
-                                 "[-1.5, 1.5] [rad] of joint 'hinge': this stop, not the <limit>, bounds the motion; "
-                                 "if 30 is in degrees, write upper_deg: 30\n");
-  const RunOutcome inside = RunRunner(LimitedHingeCase("stop_30_deg.yaml", "{backlash: {lower: -1.0, upper_deg: 30}}"));
-  EXPECT_EQ(inside.exit_status, 0) << inside.stderr_text;
-  EXPECT_EQ(inside.stderr_text, "");
+  ExpectRunWithWarning("stop_30.yaml", "{backlash: {lower: -1.0, upper: 30}}",
+                       "joints.hinge.backlash.upper: 30 [rad] is outside the URDF <limit> [-1.5, 1.5] [rad] of joint "
+                       "'hinge': this stop, not the <limit>, bounds the motion; if 30 is in degrees, write "
+                       "upper_deg: 30");
+  ExpectRunWithWarning("stop_30_deg.yaml", "{backlash: {lower: -1.0, upper_deg: 30}}", "");
 }
 
 TEST(RunnerExit, SineDriveWithoutAFrequencyExitsWithTwoAndNamesTheKey) {
