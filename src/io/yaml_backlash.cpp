@@ -1,6 +1,7 @@
 #include <algorithm>
 
 #include "flexmbd/io/message_text.hpp"
+#include "flexmbd/io/urdf_limit.hpp"
 #include "flexmbd/io/yaml_sections.hpp"
 
 namespace flexmbd {
@@ -56,13 +57,17 @@ void ReadRetraction(const Field& field, const VariableUnits& units, StopSpec::Re
 }
 
 // One backlash block: its lower and/or upper stop.
-std::vector<StopSpec> ReadBlock(const Field& block, const JointSpec& joint, const VariableUnits& units,
-                                const std::string& suffix) {
+std::vector<StopSpec> ReadBlock(const Field& block, const JointSpec& joint, int variable, const VariableUnits& units,
+                                const std::string& suffix, std::vector<std::string>* warnings) {
   CheckKeys(block, kBacklashKeys);
   const Quantity position{"a stop position", Bound::kAny, units.position};
   double lower = joint.limit_lower, upper = joint.limit_upper;
   const bool has_lower = OverlayMeasure(block, "lower", position, units.measure, &lower);
   const bool has_upper = OverlayMeasure(block, "upper", position, units.measure, &upper);
+  for (const auto& [key, value] : {std::make_pair("lower", lower), std::make_pair("upper", upper)}) {
+    const std::optional<UnitField> given = FindUnitField(block, key, units.position, units.measure);
+    if (given) WarnStopOutsideUrdfLimit(*given, value, joint, variable, warnings);
+  }
   const bool from_urdf = !has_lower && !has_upper;
   if (from_urdf && !joint.has_limits) {
     block.Fail("gives no stop position and joint '" + joint.name +
@@ -105,12 +110,14 @@ std::vector<StopSpec> ReadBlock(const Field& block, const JointSpec& joint, cons
 }
 }  // namespace
 
-std::vector<StopSpec> ReadBacklash(const Field& backlash, const JointSpec& joint, const VariableUnits& units) {
-  if (!backlash.node().IsSequence()) return ReadBlock(backlash, joint, units, "");
+std::vector<StopSpec> ReadBacklash(const Field& backlash, const JointSpec& joint, int variable,
+                                   const VariableUnits& units, std::vector<std::string>* warnings) {
+  if (!backlash.node().IsSequence()) return ReadBlock(backlash, joint, variable, units, "", warnings);
   std::vector<StopSpec> stops;
   const std::vector<Field> blocks = ListEntries(backlash, "a backlash block or a list of them");
   for (size_t k = 0; k < blocks.size(); ++k) {
-    const std::vector<StopSpec> block = ReadBlock(blocks[k], joint, units, k == 0 ? "" : "." + std::to_string(k));
+    const std::vector<StopSpec> block =
+        ReadBlock(blocks[k], joint, variable, units, k == 0 ? "" : "." + std::to_string(k), warnings);
     stops.insert(stops.end(), block.begin(), block.end());
   }
   return stops;

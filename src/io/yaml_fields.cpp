@@ -107,10 +107,12 @@ std::string Field::Describe() const {
   return (node_.IsSequence() ? "a list " : "a map ") + Text();
 }
 
-void Field::Fail(const std::string& what) const {
+std::string Field::Message(const std::string& what) const {
   // keys and values in the path and the text are the user's: a newline in one must not break the line
-  throw ConfigError(QuoteForMessage(file_ + ": " + (path_.empty() ? "" : path_ + ": ") + what));
+  return QuoteForMessage(file_ + ": " + (path_.empty() ? "" : path_ + ": ") + what);
 }
+
+void Field::Fail(const std::string& what) const { throw ConfigError(Message(what)); }
 
 std::string Expected(const Quantity& quantity) {
   return quantity.name + BoundText(quantity.bound) + (quantity.unit.empty() ? "" : " [" + quantity.unit + "]");

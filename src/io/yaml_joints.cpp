@@ -4,6 +4,7 @@
 #include "flexmbd/common/error.hpp"
 #include "flexmbd/io/joint_axes.hpp"
 #include "flexmbd/io/message_text.hpp"
+#include "flexmbd/io/urdf_limit.hpp"
 #include "flexmbd/io/yaml_sections.hpp"
 #include "flexmbd/joints/joint_kinematics.hpp"
 #include "flexmbd/math/time_function.hpp"
@@ -188,11 +189,15 @@ void ReadInitial(const Field& initial, const Field& drive, const VariableUnits& 
   joint->position_set[variable] = joint->velocity_set[variable] = true;
 }
 
-void CheckResolvable(const Field& initial, const Field& drive, double position, const std::string& unit) {
+// The field that sets a variable's initial position: its drive, or initial.position or position_deg; none if the
+// position is the URDF's zero.
+std::optional<UnitField> InitialPositionSource(const Field& initial, const Field& drive, const VariableUnits& units) {
+  if (drive.present()) return UnitField{drive, 1.0, units.position};
+  return FindUnitField(initial, "position", units.position, units.measure);
+}
+
+void CheckResolvable(const Field& source, double position, const std::string& unit) {
   if (std::abs(position) <= kLargestInitialPosition) return;
-  const Field source = drive.present()                        ? drive
-                       : initial.Child("position").present() ? initial.Child("position")
-                                                              : initial.Child("position_deg");
   source.Fail("an initial position of " + FormatNumber(position) + " [" + unit + "] is beyond what the solver " +
               "resolves; expected an initial position within +-" + FormatNumber(kLargestInitialPosition) + " [" +
               unit + "]");
@@ -211,8 +216,15 @@ void CheckNotSetOnClosure(const std::vector<Field>& sources, const JointSpec& jo
   }
 }
 
+// What a variable's values are checked against besides their own fields: the end of the motion the run follows (a
+// drive's path up to it) and where the warnings go.
+struct RunBounds {
+  double t_end;  ///< [s]
+  std::vector<std::string>* warnings;
+};
+
 // Effects and initial motion of one variable, each key taken from whichever of `sources` gives it.
-void ReadVariable(const std::vector<Field>& sources, int variable, JointSpec* joint) {
+void ReadVariable(const std::vector<Field>& sources, int variable, JointSpec* joint, const RunBounds& run) {
   CheckNotSetOnClosure(sources, *joint);
   const VariableUnits units = UnitsOf(*joint, variable);
   VariableEffectsSpec& effects = joint->effects[variable];
@@ -223,12 +235,20 @@ void ReadVariable(const std::vector<Field>& sources, int variable, JointSpec* jo
   const Field drive = Pick(sources, "drive");
   if (drive.present()) effects.drives = {ReadTimeFunction(drive, units.position, units.measure)};
   const Field backlash = Pick(sources, "backlash");
-  if (backlash.present()) effects.stops = ReadBacklash(backlash, *joint, units);
+  if (backlash.present()) effects.stops = ReadBacklash(backlash, *joint, variable, units, run.warnings);
   const Field friction = Pick(sources, "friction");
   if (friction.present()) effects.frictions = {ReadFriction(friction, units)};
   const Field initial = Pick(sources, "initial");
   ReadInitial(initial, drive, units, variable, joint);
-  CheckResolvable(initial, drive, joint->initial_position[variable], units.position);
+  const std::optional<UnitField> source = InitialPositionSource(initial, drive, units);
+  if (!source) return;
+  const double position = joint->initial_position[variable];
+  CheckResolvable(source->field, position, units.position);
+  if (drive.present()) {
+    WarnDriveLeavingUrdfLimit(drive, run.t_end, *joint, variable, units.position, run.warnings);
+  } else {
+    WarnInitialOutsideUrdfLimit(*source, position, *joint, variable, run.warnings);
+  }
 }
 
 std::vector<Field> ReadVariableList(const Field& field, const JointSpec& joint) {
@@ -258,18 +278,18 @@ void CheckShorthand(const Field& field, const JointSpec& joint, const std::vecto
   }
 }
 
-void ReadVariables(const Field& field, JointSpec* joint) {
+void ReadVariables(const Field& field, JointSpec* joint, const RunBounds& run) {
   const std::vector<Field> entries = ReadVariableList(field, *joint);
   CheckShorthand(field, *joint, entries);
   for (int i = 0; i < NumJointVariables(joint->type); ++i) {
     std::vector<Field> sources;
     if (i == 0) sources.push_back(field);
     if (static_cast<size_t>(i) < entries.size()) sources.push_back(entries[i]);
-    if (!sources.empty()) ReadVariable(sources, i, joint);
+    if (!sources.empty()) ReadVariable(sources, i, joint, run);
   }
 }
 
-void ReadJoint(const Field& field, JointSpec* joint) {
+void ReadJoint(const Field& field, JointSpec* joint, const RunBounds& run) {
   CheckKeys(field, kJointKeys);
   if (joint->closes_loop) {
     for (const char* key : {"type", "axis", "axis2", "pitch"}) {
@@ -281,7 +301,7 @@ void ReadJoint(const Field& field, JointSpec* joint) {
   } else {
     ReadJointGeometry(field, joint);
   }
-  ReadVariables(field, joint);
+  ReadVariables(field, joint, run);
 }
 }  // namespace
 
@@ -297,9 +317,12 @@ void ReadJointGeometry(const Field& field, JointSpec* joint) {
 }
 
 void ReadJoints(const Field& joints, UrdfModel* model) {
+  // a static or eigen-analysis takes the drives at t = 0 only
+  const SolverSpec& solver = model->spec.solver;
+  const double run_end = solver.analysis == SolverSpec::Analysis::kDynamic ? solver.t_end : 0.0;
   for (const std::string& name : MapKeys(joints, "a map from URDF joint names to joint settings")) {
     const Field field = joints.Child(name);
-    ReadJoint(field, FindJoint(field, name, model));
+    ReadJoint(field, FindJoint(field, name, model), RunBounds{run_end, &model->spec.warnings});
   }
 }
 

@@ -14,9 +14,9 @@ void ApplyYamlOverlay(const YAML::Node& params, const std::string& params_name, 
   const Field root(params, params_name);
   CheckKeys(root, YamlSectionNames());
   ReadBeams(root.Child("beams"), model);
+  ReadSolver(root.Child("solver"), &model->spec.solver);  // t_end bounds the drives' paths (ReadJoints)
   ReadClosures(root.Child("closures"), model);
   ReadJoints(root.Child("joints"), model);
-  ReadSolver(root.Child("solver"), &model->spec.solver);
   ReadOutput(root.Child("output"), model->spec.solver.t_end, &model->spec.output);
   ReadBeamStations(root.Child("output"), *model, &model->spec.output);
   ReadLoads(root.Child("loads"), *model, &model->spec.loads);

@@ -27,7 +27,7 @@ const ScalarKey kScalarKeys[] = {
     {"amplitude", &TimeFunctionSpec::amplitude, KeyUnit::kValue, Bound::kAny, "an amplitude"},
     {"start", &TimeFunctionSpec::start, KeyUnit::kTime, Bound::kAny, "a start time"},
     {"duration", &TimeFunctionSpec::duration, KeyUnit::kTime, Bound::kPositive, "a duration"},
-    {"frequency", &TimeFunctionSpec::frequency, KeyUnit::kFrequency, Bound::kNonNegative, "a frequency"},
+    {"frequency", &TimeFunctionSpec::frequency, KeyUnit::kFrequency, Bound::kPositive, "a frequency"},
     {"phase", &TimeFunctionSpec::phase, KeyUnit::kAngle, Bound::kAny, "a phase"},
 };
 
@@ -131,6 +131,16 @@ void ReadTable(const Field& map, const std::string& unit, const Measure& measure
                        std::to_string(f->times.size()) + "; expected one value per time");
   }
 }
+
+// A sine without its amplitude or its frequency is a constant, which a forgotten key would give without a word.
+void RequireSineKeys(const Field& map, const std::string& unit, const Measure& measure) {
+  const std::string constant = " (a sine without it is a constant: law: constant)";
+  if (!FindUnitField(map, "amplitude", unit, measure)) {
+    map.Fail("missing key 'amplitude'" + std::string(measure.angular ? " (or amplitude_deg)" : "") +
+             "; expected the sine's amplitude" + (unit.empty() ? "" : " [" + unit + "]") + constant);
+  }
+  RequireKey(map, "frequency", "a frequency > 0 [Hz]" + constant);
+}
 }  // namespace
 
 TimeFunctionSpec ReadTimeFunction(const Field& map, const std::string& unit, const Measure& measure) {
@@ -143,6 +153,7 @@ TimeFunctionSpec ReadTimeFunction(const Field& map, const std::string& unit, con
     ReadTable(map, unit, measure, &f);
     return f;
   }
+  if (law.kind == Kind::kSine) RequireSineKeys(map, unit, measure);
   for (const ScalarKey& key : kScalarKeys) {
     if (std::find(law.keys.begin(), law.keys.end(), key.name) != law.keys.end())
       ReadScalarKey(map, key, unit, measure, &f);

@@ -1,5 +1,7 @@
 #include "flexmbd/ros/node_case.hpp"
 
+#include <ros/console.h>
+
 #include <algorithm>
 
 #include "flexmbd/common/error.hpp"
@@ -67,6 +69,7 @@ NodeCase LoadNodeCase(const ::ros::NodeHandle& node, const ::ros::NodeHandle& pr
   const UrdfSource urdf = ReadUrdf(node, settings);
   ModelSpec spec =
       LoadModelSpecFromStrings(urdf.xml, urdf.name, ReadExtensionParameters(private_node), private_node.getNamespace());
+  for (const std::string& warning : spec.warnings) ROS_WARN_STREAM("flexmbd: " << warning);
   if (spec.solver.analysis == SolverSpec::Analysis::kEigen) {
     throw ConfigError(private_node.getNamespace() +
                       ": solver.analysis: eigen is not a run the node can publish; expected dynamic or static "

@@ -310,6 +310,9 @@ int main(int argc, char** argv) {
   }
   try {
     flexmbd::ModelSpec spec = flexmbd::LoadModelSpec(args.urdf, args.config);
+    for (const std::string& warning : spec.warnings) {
+      std::fprintf(stderr, "flexmbd_run: warning: %s\n", warning.c_str());
+    }
     if (!args.csv.empty()) spec.output.csv = args.csv;
     if (!args.bag.empty()) spec.output.bag = args.bag;
     const flexmbd::Model model = flexmbd::BuildModel(spec);

@@ -72,6 +72,17 @@ TEST(NodeExit, MisspeltNodeSettingExitsWithTwoListingTheSettings) {
                      "or a section of the case (beams, joints, solver, output, loads, aero, closures, docs/config.md)");
 }
 
+TEST(NodeExit, StopOutsideTheUrdfLimitIsLoggedAsAWarningAndTheRunEndsWithZero) {
+  // Reference: docs/config.md, "URDF mapping": the loader's warning (the runner prints it on stderr), as ROS_WARN.
+  NodeProcess node("flexmbd_stop_warning", {});
+  EXPECT_EQ(node.WaitForExit(kTimeout), std::optional<int>(0)) << node.Output();
+  EXPECT_TRUE(Contains(node.Output(), "flexmbd: /flexmbd_stop_warning: joints.elbow.backlash.upper: 30 [rad] is "
+                                      "outside the URDF <limit> [-3.14, 3.14] [rad] of joint 'elbow': this stop, not "
+                                      "the <limit>, bounds the motion; if 30 is in degrees, write upper_deg: 30"))
+      << node.Output();
+  EXPECT_TRUE(Contains(node.Output(), "[ WARN]")) << node.Output();
+}
+
 TEST(NodeExit, MissingUrdfFileExitsWithTwoNamingTheFile) {
   ExpectBadInputExit("flexmbd_missing_urdf", {"_urdf_file:=/nonexistent/arm.urdf"},
                      "cannot open URDF file '/nonexistent/arm.urdf': No such file or directory");

@@ -15,13 +15,8 @@ namespace flexmbd {
 namespace backlash_config_test {
 using test::LoadInline;
 
-// A hinge about y with a URDF <limit> of [-0.5, 0.7] rad, a continuous hub and a slide along x.
-const std::string kUrdf = test::WorldUrdf({"arm", "hub", "block"}, R"(
-  <joint name="hinge" type="revolute"><parent link="world"/><child link="arm"/><axis xyz="0 1 0"/>
-    <limit lower="-0.5" upper="0.7" effort="1" velocity="1"/></joint>
-  <joint name="spin" type="continuous"><parent link="world"/><child link="hub"/><axis xyz="0 0 1"/></joint>
-  <joint name="slide" type="prismatic"><parent link="world"/><child link="block"/><axis xyz="1 0 0"/>
-    <limit lower="-1" upper="1" effort="1" velocity="1"/></joint>)");
+// A hinge about y with a URDF <limit> of [-0.5, 0.7] rad, a continuous hub and a slide along x within [-1, 1] m.
+const std::string kUrdf = test::LimitedJointsUrdf();
 
 ModelSpec Load(const std::string& yaml) { return LoadInline(kUrdf, yaml); }
 

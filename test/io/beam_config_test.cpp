@@ -58,6 +58,32 @@ TEST(BeamConfig, JointNotOnANodeListsTheNodes) {
   EXPECT_NE(message.find("0.5"), std::string::npos) << message;
 }
 
+// The tip hinge of beam_arm.urdf moved to x = `x` on the 1 m beam of kArmYaml with `elements` cubic elements.
+std::string TipHingeAtError(const std::string& x, int elements) {
+  std::string moved = test::ReadDataText("urdf/beam_arm.urdf");
+  moved.replace(moved.find("xyz=\"1.0 0 0\""), 13, "xyz=\"" + x + " 0 0\"");
+  std::string yaml = kArmYaml;
+  yaml.replace(yaml.find("elements: 2"), 11, "elements: " + std::to_string(elements));
+  return ConfigErrorOf([&] {
+    BuildModel(LoadModelSpecFromStrings(moved, "beam_arm.urdf", YAML::Load(yaml), "arm.yaml"));
+  });
+}
+
+TEST(BeamConfig, JointBeforeTheRootOfALongBeamGivesTheNodeSpacing) {
+  // 10 cubic elements: 31 nodes every 1/30 m, too many to list.
+  EXPECT_EQ(TipHingeAtError("-0.2", 10),
+            "beam_arm.urdf + arm.yaml: joint 'tip_hinge': x = -0.2 m on beam 'arm' is before its root (length 1 m, 10 "
+            "element(s) of order 3: nodes 0..30 every 0.03333333333333333 m, the nearest node 0 at 0 m); expected a "
+            "node position [m] k * 1 / 30 for k = 0..30");
+}
+
+TEST(BeamConfig, JointBetweenNodesNamesTheNearest) {
+  EXPECT_NE(TipHingeAtError("0.52", 2).find("x = 0.52 m on beam 'arm' is not at a node (length 1 m, 2 element(s) of "
+                                            "order 3: nodes 0..6 every 0.16666666666666666 m, the nearest node 3 at "
+                                            "0.5 m)"),
+            std::string::npos);
+}
+
 TEST(BeamConfig, NegativeSectionStiffnessNamesTheField) {
   std::string yaml = kArmYaml;
   yaml.replace(yaml.find("EI3: 100.0"), 10, "EI3: -1.0");

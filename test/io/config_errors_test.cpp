@@ -369,6 +369,16 @@ TEST(ConfigErrors, KeyOfAnotherLawIsRejected) {
       "pendulum.yaml: joints.B1.drive.amplitude: does not apply to law 'constant'; it takes: law, value, value_deg");
 }
 
+TEST(ConfigErrors, SineWithoutItsAmplitudeOrFrequencyIsRejected) {
+  // Both defaulted to 0, which made the sine a constant without a word.
+  EXPECT_CONFIG_ERROR(Pendulum("joints: {B1: {drive: {law: sine, frequency: 2}}}"),
+                      "pendulum.yaml: joints.B1.drive: missing key 'amplitude' (or amplitude_deg); expected the "
+                      "sine's amplitude [rad] (a sine without it is a constant: law: constant)");
+  EXPECT_CONFIG_ERROR(Pendulum("joints: {B1: {drive: {law: sine, amplitude_deg: 10, frequency: 0}}}"),
+                      "pendulum.yaml: joints.B1.drive.frequency: 0 is zero; expected a frequency > 0 [Hz]");
+  EXPECT_NO_THROW(Pendulum("joints: {B1: {drive: {law: sine, amplitude: 0, frequency: 2}}}"));
+}
+
 TEST(ConfigErrors, NonPositiveRampDurationIsRejected) {
   EXPECT_CONFIG_ERROR(Pendulum("joints: {B1: {drive: {law: cosine_ramp, value: 1, duration: 0}}}"),
                       "pendulum.yaml: joints.B1.drive.duration: 0 is zero; expected a duration > 0 [s]");

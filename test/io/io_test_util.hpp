@@ -50,6 +50,17 @@ inline std::string HingeUrdf(const std::string& axis) {
                              "<child link=\"link\"/><axis xyz=\"" + axis + "\"/></joint>");
 }
 
+/// WorldUrdf with a hinge about y limited to [-0.5, 0.7] rad ("arm"), a continuous hub about z ("hub") and a slide
+/// along x limited to [-1, 1] m ("block"), each from the world: joints with and without a URDF <limit>.
+inline std::string LimitedJointsUrdf() {
+  return WorldUrdf({"arm", "hub", "block"}, R"(
+  <joint name="hinge" type="revolute"><parent link="world"/><child link="arm"/><axis xyz="0 1 0"/>
+    <limit lower="-0.5" upper="0.7" effort="1" velocity="1"/></joint>
+  <joint name="spin" type="continuous"><parent link="world"/><child link="hub"/><axis xyz="0 0 1"/></joint>
+  <joint name="slide" type="prismatic"><parent link="world"/><child link="block"/><axis xyz="1 0 0"/>
+    <limit lower="-1" upper="1" effort="1" velocity="1"/></joint>)");
+}
+
 /// The message of the ConfigError that `load` throws, or a note that it threw none.
 inline std::string ConfigErrorOf(const std::function<void()>& load) {
   try {

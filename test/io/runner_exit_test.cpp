@@ -307,4 +307,66 @@ TEST(RunnerExit, MoreModesThanTheModelHasAreAllPrintedWithAWarning) {
             "flexmbd_run: warning: solver.eigen.modes: 50 asked for, the model has 1; all 1 printed\n");
 }
 
+// A pendulum on a revolute hinge whose URDF <limit> is +-1.5 rad: a user typed degrees under its radian keys (explore
+// D5), and the run went ahead.
+std::string LimitedHingeCase(const std::string& name, const std::string& joint_yaml) {
+  const std::string urdf = WriteFile(
+      "limited_hinge.urdf",
+      "<robot name=\"r\"><link name=\"world\"/><link name=\"arm\"><inertial><origin xyz=\"0 0 -1\"/>"
+      "<mass value=\"1\"/><inertia ixx=\"0.01\" ixy=\"0\" ixz=\"0\" iyy=\"0.01\" iyz=\"0\" izz=\"0.01\"/>"
+      "</inertial></link><joint name=\"hinge\" type=\"revolute\"><parent link=\"world\"/><child link=\"arm\"/>"
+      "<axis xyz=\"0 1 0\"/><limit lower=\"-1.5\" upper=\"1.5\" effort=\"1\" velocity=\"1\"/></joint></robot>");
+  return "--urdf " + urdf + " --config " +
+         WriteFile(name, "joints: {hinge: " + joint_yaml + "}\nsolver: {t_end: 0.01}\n");
+}
+
+// The limited hinge with `joint_yaml` runs (exit 0) and stderr holds the one line "flexmbd_run: warning: <yaml>: " +
+// `warning` (empty `warning`: nothing on stderr).
+void ExpectRunWithWarning(const std::string& yaml_name, const std::string& joint_yaml, const std::string& warning) {
+  const RunOutcome out = RunRunner(LimitedHingeCase(yaml_name, joint_yaml));
+  EXPECT_EQ(out.exit_status, 0) << out.stderr_text;
+  EXPECT_EQ(out.stderr_text,
+            warning.empty() ? "" : "flexmbd_run: warning: " + testing::TempDir() + yaml_name + ": " + warning + "\n");
+}
+
+TEST(RunnerExit, InitialPositionOutsideTheUrdfLimitIsAWarningNamingTheDegreeKey) {
+  ExpectRunWithWarning("initial_30.yaml", "{initial: {position: 30}}",
+                       "joints.hinge.initial.position: 30 [rad] is outside the URDF <limit> [-1.5, 1.5] [rad] of "
+                       "joint 'hinge': without stops (backlash) nothing holds the joint to its <limit>; if 30 is in "
+                       "degrees, write position_deg: 30");
+}
+
+TEST(RunnerExit, StopOutsideTheUrdfLimitIsAWarningAndTheRunGoesOn) {
+  ExpectRunWithWarning("stop_30.yaml", "{backlash: {lower: -1.0, upper: 30}}",
+                       "joints.hinge.backlash.upper: 30 [rad] is outside the URDF <limit> [-1.5, 1.5] [rad] of joint "
+                       "'hinge': this stop, not the <limit>, bounds the motion; if 30 is in degrees, write "
+                       "upper_deg: 30");
+  ExpectRunWithWarning("stop_30_deg.yaml", "{backlash: {lower: -1.0, upper_deg: 30}}", "");
+}
+
+TEST(RunnerExit, SineDriveWithoutAFrequencyExitsWithTwoAndNamesTheKey) {
+  // The frequency defaulted to 0 Hz: the drive held the hinge at amplitude sin(phase) = 0 for the whole run.
+  const RunOutcome out =
+      RunRunner(LimitedHingeCase("sine_no_frequency.yaml", "{drive: {law: sine, amplitude_deg: 20}}"));
+  EXPECT_EQ(out.exit_status, kBadInputExit);
+  EXPECT_EQ(out.stderr_text, "flexmbd_run: " + testing::TempDir() +
+                                 "sine_no_frequency.yaml: joints.hinge.drive: missing key 'frequency'; expected a "
+                                 "frequency > 0 [Hz] (a sine without it is a constant: law: constant)\n");
+}
+
+TEST(RunnerExit, JointPastTheEndOfABeamExitsWithTwoAndSaysSo) {
+  // test/data/urdf/beam_arm.urdf hinges its tip 1 m out along the beam 'arm'; here the beam is 0.5 m long.
+  const std::string yaml = WriteFile(
+      "short_arm.yaml",
+      "beams: {arm: {length: 0.5, elements: 2, order: 3, section: {EA: 1.0e7, GA2: 4.0e6, GA3: 4.0e6, GJ: 50.0, "
+      "EI2: 80.0, EI3: 100.0, m: 2.5}}}\nsolver: {t_end: 0.01}\n");
+  const RunOutcome out = RunRunner("--urdf " + Data("urdf/beam_arm.urdf") + " --config " + yaml);
+  EXPECT_EQ(out.exit_status, kBadInputExit);
+  EXPECT_EQ(out.stderr_text, "flexmbd_run: " + Data("urdf/beam_arm.urdf") + " + " + yaml +
+                                 ": joint 'tip_hinge': x = 1 m on beam 'arm' is past its end (length 0.5 m, 2 "
+                                 "element(s) of order 3: nodes 0..6 every 0.08333333333333333 m, the nearest node 6 "
+                                 "at 0.5 m); expected a node position [m]: 0, 0.08333333333333333, "
+                                 "0.16666666666666666, 0.25, 0.3333333333333333, 0.4166666666666667, 0.5\n");
+}
+
 }  // namespace runner_exit_test

@@ -270,5 +270,30 @@ TEST(TimeFunction, BreakpointsAreWhereTheValueOrItsFirstTwoRatesJump) {
   EXPECT_TRUE(Breakpoints(TimeFunctionSpec()).empty());
 }
 
+void ExpectRange(const ValueRange& range, double least, double t_least, double greatest, double t_greatest) {
+  EXPECT_NEAR(range.least, least, kHandValue);
+  EXPECT_NEAR(range.t_least, t_least, kHandValue);
+  EXPECT_NEAR(range.greatest, greatest, kHandValue);
+  EXPECT_NEAR(range.t_greatest, t_greatest, kHandValue);
+}
+
+TEST(TimeFunction, RangeOfASineIsItsOffsetPlusOrMinusItsAmplitudeWhereItsArgumentIsPiOverTwoPlusKPi) {
+  // Reference: 0.2 + 1.5 sin(1.5 pi (t - 0.5) + 0.4) peaks at 1.7 where the argument is pi/2, dips to -1.3 where it is
+  // 3 pi/2, and holds 0.2 + 1.5 sin(0.4) before its start.
+  const double w = 1.5 * M_PI;
+  ExpectRange(RangeOver(Sine(), 0.0, 10.0), -1.3, 0.5 + (1.5 * M_PI - 0.4) / w, 1.7, 0.5 + (0.5 * M_PI - 0.4) / w);
+  // a window that ends before the first peak: the sine rises from its start, the least is the value held before it
+  ExpectRange(RangeOver(Sine(), 0.0, 0.6), 0.2 + 1.5 * std::sin(0.4), 0.0, 0.2 + 1.5 * std::sin(0.1 * w + 0.4), 0.6);
+}
+
+TEST(TimeFunction, RangeOfRampsAndTablesIsTakenAtTheirBreakpointsOrTheWindowsEnds) {
+  // Reference: the hand values of the tests above (0.5 -> 2.5 over [1, 3]; a rate of 2.5 reached over [1, 3]).
+  ExpectRange(RangeOver(Ramp(Kind::kLinearRamp), 0.0, 2.0), 0.5, 0.0, 1.5, 2.0);
+  ExpectRange(RangeOver(Ramp(Kind::kCosineRamp), 0.0, 10.0), 0.5, 0.0, 2.5, 3.0);
+  ExpectRange(RangeOver(Ramp(Kind::kRateRamp), 0.0, 5.0), 0.5, 0.0, 0.5 + 2.5 * (5.0 - 1.0 - 1.0), 5.0);
+  ExpectRange(RangeOver(Table(), 0.0, 4.0), 1.0, 0.0, 3.0, 1.0);
+  ExpectRange(RangeOver(Table(), 2.0, 2.0), 2.5, 2.0, 2.5, 2.0);
+}
+
 }  // namespace time_function_test
 }  // namespace flexmbd

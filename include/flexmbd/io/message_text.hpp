@@ -1,18 +1,16 @@
 #pragma once
 /// @file
-/// Small text helpers for the loader's error messages: number formatting, name lists and "did you mean"
-/// suggestions by edit distance.
+/// Small text helpers for the loader's error messages: number formatting (FormatNumber from number_text.hpp),
+/// name lists and "did you mean" suggestions by edit distance.
 
 #include <string>
 #include <vector>
 
+#include "flexmbd/common/number_text.hpp"
 #include "flexmbd/model/model_spec.hpp"
 
 namespace flexmbd {
 namespace io {
-
-/// Shortest decimal text that reads back as exactly `value` ("-3", "0.1", "1e-07").
-std::string FormatNumber(double value);
 
 /// `text` with control characters written as escapes (\n, \t, \x01), so that a message stays one line.
 std::string QuoteForMessage(const std::string& text);

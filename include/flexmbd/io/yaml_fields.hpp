@@ -42,7 +42,10 @@ class Field {
   /// The value with its type, for type errors ("'soft'", "a list [1, 2]", "an empty value").
   std::string Describe() const;
 
-  /// Throws ConfigError("<file>: <path>: <what>").
+  /// "<file>: <path>: <what>" on one line: the text of an error (Fail) or of a warning (ModelSpec::warnings).
+  std::string Message(const std::string& what) const;
+
+  /// Throws ConfigError(Message(what)).
   [[noreturn]] void Fail(const std::string& what) const;
 
  private:

@@ -23,9 +23,10 @@ struct VariableUnits {
 };
 VariableUnits UnitsOf(const JointSpec& joint, int variable);
 
-/// `backlash:` of one joint variable: a map (a lower and/or an upper stop), or a list of such maps; stop
-/// positions from the URDF <limit> when a block gives neither.
-std::vector<StopSpec> ReadBacklash(const Field& backlash, const JointSpec& joint, const VariableUnits& units);
+/// `backlash:` of `variable` of `joint`: a map (a lower and/or an upper stop), or a list of such maps; stop
+/// positions from the URDF <limit> when a block gives neither. A stop given outside the <limit> adds a warning.
+std::vector<StopSpec> ReadBacklash(const Field& backlash, const JointSpec& joint, int variable,
+                                   const VariableUnits& units, std::vector<std::string>* warnings);
 
 /// `friction:` of one joint variable: Coulomb friction with sticking (or the regularised law).
 FrictionSpec ReadFriction(const Field& friction, const VariableUnits& units);
@@ -38,7 +39,8 @@ void ReadJointGeometry(const Field& field, JointSpec* joint);
 /// may configure their effects); their child side is set once the bodies are placed (CloseLoops).
 void ReadClosures(const Field& closures, UrdfModel* model);
 
-/// `joints:` a map from URDF joint names to joint settings (type, axes, pitch, effects, initial motion).
+/// `joints:` a map from URDF joint names to joint settings (type, axes, pitch, effects, initial motion), checked
+/// against the URDF <limit>s (urdf_limit.hpp) with drives up to solver.t_end (solver read first).
 void ReadJoints(const Field& joints, UrdfModel* model);
 
 /// The link names under `beams:` (read before the URDF, which needs to know which links are beams).

@@ -37,4 +37,14 @@ std::optional<RateJump> RateJumpNear(const TimeFunctionSpec& f, double t, double
 /// none), a sine's start, a table's abscissae. The steps of a run land on them (docs/theory.md, "Breakpoints").
 std::vector<double> Breakpoints(const TimeFunctionSpec& f);
 
+/// The least and greatest values of f over an interval, and the first instants they are taken at.
+struct ValueRange {
+  double least = 0.0, greatest = 0.0;      ///< f's unit
+  double t_least = 0.0, t_greatest = 0.0;  ///< [s]
+};
+
+/// The range of f over [t0, t1] (t0 <= t1): f is monotone between its breakpoints, so its extremes lie at those, at the
+/// interval's ends, or, for a sine, where its argument is pi/2 + k pi.
+ValueRange RangeOver(const TimeFunctionSpec& f, double t0, double t1);
+
 }  // namespace flexmbd

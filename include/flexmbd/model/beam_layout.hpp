@@ -40,6 +40,10 @@ std::vector<LoadSpec> NodalLoads(const LoadSpec& distributed, const std::vector<
 /// Index of the station at distance s from the root, or -1 if none is within tolerance of it.
 int StationAt(const std::vector<double>& stations, double s, double length);
 
+/// Why `x` [m] along `beam` is no node of it, for a message: "x = 1.5 m on beam 'arm' is past its end (...)", with
+/// the beam's length, its node layout and the nearest node, and the positions expected.
+std::string OffNodeText(const BeamSpec& beam, double x);
+
 /// Checks a beam's data; throws ConfigError naming the beam, the field and the expected form.
 void ValidateBeam(const std::string& source_prefix, const BeamSpec& beam);
 

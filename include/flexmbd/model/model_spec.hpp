@@ -335,6 +335,9 @@ struct ModelSpec {
   std::vector<CustomElementSpec> custom_elements;
   SolverSpec solver;
   OutputSpec output;
+  /// What the loader accepted but doubts (a stop outside the URDF <limit>), one line each naming the file and
+  /// field; the runner prints them to stderr, the node as ROS_WARN.
+  std::vector<std::string> warnings;
 };
 
 /// Number of relative-motion variables of a joint type.

@@ -87,9 +87,15 @@ EnergyTally StateEnergy(const Model& model, const State& state);
 /// The sample at a state; efforts and reactions come from the multipliers evaluated in `ctx`.
 OutputSample MakeSample(const Model& model, const State& state, const StepContext& ctx, double dt, int iterations);
 
-/// The sample at time t in [a.t, b.t] between two samples: linear, except beam stations' displacements (cubic Hermite
-/// from their end velocities) and rotations (on SO(3), at a constant rate from a's to b's) (docs/theory.md, "Station
-/// outputs").
+/// The sample at time t in [a.t, b.t] between two samples: linear (MixLinearQuantities), except the joint variables
+/// and beam stations' displacements (cubic Hermite from their end velocities), stations' rotations (on SO(3), at a
+/// constant rate from a's to b's) (docs/theory.md, "Station outputs"), contacts (the nearer sample's) and friction
+/// (the step's forces, b's).
 OutputSample Interpolate(const OutputSample& a, const OutputSample& b, double t);
+
+/// Sets in *s the quantities of a sample that Interpolate takes linear in time, (1 - u) a + u b: velocities, efforts,
+/// reactions, energies, stations' loads, strains and velocities, aero sections', strips' and rotors' values. The
+/// rest of *s (positions, stations' displacements and rotations, contacts, friction) is left as it is.
+void MixLinearQuantities(const OutputSample& a, const OutputSample& b, double u, OutputSample* s);
 
 }  // namespace flexmbd

@@ -115,4 +115,29 @@ std::vector<double> Breakpoints(const TimeFunctionSpec& f) {
   return {};
 }
 
+ValueRange RangeOver(const TimeFunctionSpec& f, double t0, double t1) {
+  std::vector<double> instants = {t0, t1};
+  for (double t : Breakpoints(f)) {
+    if (t > t0 && t < t1) instants.push_back(t);
+  }
+  if (f.kind == TimeFunctionSpec::Kind::kSine && f.frequency > 0.0) {
+    // The first extremes after the sine starts in the interval: a greatest and a least (three for the round-off of the
+    // first instant, which may fall just before `from`); later ones repeat their values.
+    const double from = std::max(t0, f.start), w = 2.0 * M_PI * f.frequency;
+    const double first = std::ceil((w * (from - f.start) + f.phase - 0.5 * M_PI) / M_PI);
+    for (double k = first; k < first + 3.0; k += 1.0) {
+      const double t = f.start + (0.5 * M_PI + k * M_PI - f.phase) / w;
+      if (t >= from && t <= t1) instants.push_back(t);
+    }
+  }
+  std::sort(instants.begin(), instants.end());
+  ValueRange range{Evaluate(f, instants.front()), Evaluate(f, instants.front()), instants.front(), instants.front()};
+  for (double t : instants) {
+    const double value = Evaluate(f, t);
+    if (value < range.least) range = {value, range.greatest, t, range.t_greatest};
+    if (value > range.greatest) range = {range.least, value, range.t_least, t};
+  }
+  return range;
+}
+
 }  // namespace flexmbd

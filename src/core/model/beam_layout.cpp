@@ -8,11 +8,15 @@
 #include <Eigen/Eigenvalues>
 
 #include "flexmbd/common/error.hpp"
+#include "flexmbd/common/number_text.hpp"
 
 namespace flexmbd {
 namespace {
 // Stations closer than this fraction of the beam length are the same point (round-off of URDF origins).
 constexpr double kStationTolerance = 1.0e-9;
+
+// Most node positions a message lists; a longer beam's are given by their spacing.
+constexpr size_t kListedNodes = 12;
 
 // Integral over [-1, 1] of the Lagrange shape function of node k (equally spaced nodes), by Gauss-Legendre
 // with enough points to be exact for its degree.
@@ -97,6 +101,26 @@ int StationAt(const std::vector<double>& stations, double s, double length) {
     if (std::abs(stations[k] - s) <= kStationTolerance * length) return static_cast<int>(k);
   }
   return -1;
+}
+
+std::string OffNodeText(const BeamSpec& beam, double x) {
+  const std::vector<double> stations = BeamStations(beam);
+  const int last = static_cast<int>(stations.size()) - 1;
+  const double spacing = beam.length / last;
+  const int nearest = static_cast<int>(std::min<double>(last, std::max(0.0, std::round(x / spacing))));
+  const std::string where = x > beam.length ? "is past its end" : x < 0.0 ? "is before its root" : "is not at a node";
+  std::string positions;
+  if (stations.size() <= kListedNodes) {
+    for (double s : stations) positions += (positions.empty() ? ": " : ", ") + FormatNumber(s);
+  } else {
+    positions = " k * " + FormatNumber(beam.length) + " / " + std::to_string(last) + " for k = 0.." +
+                std::to_string(last);
+  }
+  return "x = " + FormatNumber(x) + " m on beam '" + beam.name + "' " + where + " (length " +
+         FormatNumber(beam.length) + " m, " + std::to_string(beam.elements) + " element(s) of order " +
+         std::to_string(beam.order) + ": nodes 0.." + std::to_string(last) + " every " + FormatNumber(spacing) +
+         " m, the nearest node " + std::to_string(nearest) + " at " + FormatNumber(stations[nearest]) +
+         " m); expected a node position [m]" + positions;
 }
 
 void ValidateBeam(const std::string& prefix, const BeamSpec& beam) {

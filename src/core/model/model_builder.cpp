@@ -220,14 +220,7 @@ Model BuildModel(const ModelSpec& spec) {
     if (beam == beam_index.end()) throw ConfigError(Prefix(spec) + what + ": no body or beam '" + link + "'");
     const BeamInfo& info = model.beams_[beam->second];
     const int k = StationAt(info.stations, p_B.x(), info.stations.back());
-    if (k < 0) {
-      std::ostringstream msg;
-      msg << Prefix(spec) << what << ": x = " << p_B.x() << " m on beam '" << link
-          << "' is not at a node; expected one of the node positions";
-      for (double s : info.stations) msg << " " << s;
-      msg << " [m]";
-      throw ConfigError(msg.str());
-    }
+    if (k < 0) throw ConfigError(Prefix(spec) + what + ": " + OffNodeText(spec.beams[beam->second], p_B.x()));
     *node = info.nodes[k];
     *p_N = Vec3(0.0, p_B.y(), p_B.z());
   };

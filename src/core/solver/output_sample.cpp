@@ -111,20 +111,49 @@ OutputSample MakeSample(const Model& model, const State& state, const StepContex
   return s;
 }
 
+void MixLinearQuantities(const OutputSample& a, const OutputSample& b, double u, OutputSample* s) {
+  auto mix = [u](const auto& x, const auto& y) { return ((1.0 - u) * x + u * y).eval(); };
+  auto blend = [u](double x, double y) { return (1.0 - u) * x + u * y; };
+  s->velocity = mix(a.velocity, b.velocity);
+  s->effort = mix(a.effort, b.effort);
+  for (size_t k = 0; k < s->reaction_force_W.size(); ++k) {
+    s->reaction_force_W[k] = mix(a.reaction_force_W[k], b.reaction_force_W[k]);
+    s->reaction_moment[k] = mix(a.reaction_moment[k], b.reaction_moment[k]);
+  }
+  s->kinetic = blend(a.kinetic, b.kinetic);
+  s->potential = blend(a.potential, b.potential);
+  s->external_work = blend(a.external_work, b.external_work);
+  s->dissipated = blend(a.dissipated, b.dissipated);
+  s->numerical_dissipation = blend(a.numerical_dissipation, b.numerical_dissipation);
+  for (size_t k = 0; k < s->beam_stations.size(); ++k) {
+    const BeamStationSample &x = a.beam_stations[k], &y = b.beam_stations[k];
+    BeamStationSample& z = s->beam_stations[k];
+    z.load = mix(x.load, y.load);
+    z.strain = mix(x.strain, y.strain);
+    z.velocity = mix(x.velocity, y.velocity);
+  }
+  for (size_t k = 0; k < s->aero_sections.size(); ++k) {
+    s->aero_sections[k] = Mix(a.aero_sections[k], b.aero_sections[k], u);
+  }
+  for (size_t k = 0; k < s->strip_stations.size(); ++k) {
+    s->strip_stations[k] = Mix(a.strip_stations[k], b.strip_stations[k], u);
+  }
+  for (size_t k = 0; k < s->aero_rotors.size(); ++k) {
+    const AeroRotorSample &x = a.aero_rotors[k], &y = b.aero_rotors[k];
+    s->aero_rotors[k] = {blend(x.inflow, y.inflow),         blend(x.thrust, y.thrust),
+                         blend(x.inflow_cos, y.inflow_cos), blend(x.inflow_sin, y.inflow_sin),
+                         blend(x.moment_cos, y.moment_cos), blend(x.moment_sin, y.moment_sin)};
+  }
+}
+
 OutputSample Interpolate(const OutputSample& a, const OutputSample& b, double t) {
   const double span = b.t - a.t;
   const double u = span > 0 ? (t - a.t) / span : 1.0;
-  auto mix = [u](const auto& x, const auto& y) { return ((1.0 - u) * x + u * y).eval(); };
   auto blend = [u](double x, double y) { return (1.0 - u) * x + u * y; };
   OutputSample s = b;
   s.t = t;
+  MixLinearQuantities(a, b, u, &s);
   s.position = HermiteAt(a.position, a.velocity, b.position, b.velocity, span, u);
-  s.velocity = mix(a.velocity, b.velocity);
-  s.effort = mix(a.effort, b.effort);
-  for (size_t k = 0; k < s.reaction_force_W.size(); ++k) {
-    s.reaction_force_W[k] = mix(a.reaction_force_W[k], b.reaction_force_W[k]);
-    s.reaction_moment[k] = mix(a.reaction_moment[k], b.reaction_moment[k]);
-  }
   // Contacts are events, not smooth signals: the nearer sample's records stand.
   if (u < 0.5) s.stops = a.stops;
   // Inside a step friction has the step's forces (b's) and is stuck where it is stuck at both ends.
@@ -137,29 +166,13 @@ OutputSample Interpolate(const OutputSample& a, const OutputSample& b, double t)
       z.work = blend(x.work, y.work);
     }
   }
-  s.kinetic = blend(a.kinetic, b.kinetic);
-  s.potential = blend(a.potential, b.potential);
-  s.external_work = blend(a.external_work, b.external_work);
-  s.dissipated = blend(a.dissipated, b.dissipated);
-  s.numerical_dissipation = blend(a.numerical_dissipation, b.numerical_dissipation);
   for (size_t k = 0; k < s.beam_stations.size(); ++k) {
     const BeamStationSample &x = a.beam_stations[k], &y = b.beam_stations[k];
     BeamStationSample& z = s.beam_stations[k];
-    z.load = mix(x.load, y.load);
-    z.strain = mix(x.strain, y.strain);
     z.displacement = HermiteAt(x.displacement, x.velocity, y.displacement, y.velocity, span, u);
-    z.velocity = mix(x.velocity, y.velocity);
     // Linear in the rotation vector crossed its +-pi branch cut between the samples (a spinning blade read ~0 for pi).
     const Mat3 R_a = Exp(x.rotation);
     z.rotation = Log(Exp(u * Log(Exp(y.rotation) * R_a.transpose())) * R_a);
-  }
-  for (size_t k = 0; k < s.aero_sections.size(); ++k) s.aero_sections[k] = Mix(a.aero_sections[k], b.aero_sections[k], u);
-  for (size_t k = 0; k < s.strip_stations.size(); ++k) s.strip_stations[k] = Mix(a.strip_stations[k], b.strip_stations[k], u);
-  for (size_t k = 0; k < s.aero_rotors.size(); ++k) {
-    const AeroRotorSample &x = a.aero_rotors[k], &y = b.aero_rotors[k];
-    s.aero_rotors[k] = {blend(x.inflow, y.inflow),         blend(x.thrust, y.thrust),
-                        blend(x.inflow_cos, y.inflow_cos), blend(x.inflow_sin, y.inflow_sin),
-                        blend(x.moment_cos, y.moment_cos), blend(x.moment_sin, y.moment_sin)};
   }
   return s;
 }

@@ -50,29 +50,19 @@ OutputSample StartSample(const Model& model, const State& state, double h) {
   SparseSystem system(model);
   std::vector<EffectState> modes = state.effects;
   const double step = kVanishingStepFraction * h;
-  OutputSample single = VanishingStepSample(model, &system, state, step, &modes);
-  OutputSample twice = VanishingStepSample(model, &system, state, 2.0 * step, &modes);
-  // Richardson: the mean forces over the two steps, 2 single - twice (Interpolate at -1 step lengths for the columns it
-  // mixes), are those of a step of length 0 (exact for forces linear in time, such as a ramp's); the state's own
-  // quantities are the same in both and stay exact (2 x - x = x). Interpolate takes the joint variables and the
-  // stations' displacements along the motion (the cubic through the ends' rates, which these unit times make no
-  // step's) and rotations, and the stops' and friction's forces from one end: those are set here.
-  single.t = 1.0;
-  twice.t = 2.0;
-  OutputSample start = Interpolate(single, twice, 0.0);
-  start.t = state.t;
-  start.position = single.position;
+  const OutputSample single = VanishingStepSample(model, &system, state, step, &modes);
+  const OutputSample twice = VanishingStepSample(model, &system, state, 2.0 * step, &modes);
+  // Richardson: the mean forces over the two steps, 2 single - twice (the line through them at u = -1), are those of
+  // a step of length 0 (exact for forces linear in time, such as a ramp's); the state's own quantities are the same in
+  // both and stay exact (2 x - x = x). The positions, stations' displacements and rotations, and the contacts' and
+  // friction's states are single's; the stops' and friction's forces are extrapolated as the others.
+  OutputSample start = single;
+  MixLinearQuantities(single, twice, -1.0, &start);
   auto extrapolated = [](const auto& now, const auto& later) -> std::decay_t<decltype(now)> { return 2.0 * now - later; };
-  start.beam_stations = single.beam_stations;
-  for (size_t k = 0; k < start.beam_stations.size(); ++k) {
-    start.beam_stations[k].load = extrapolated(single.beam_stations[k].load, twice.beam_stations[k].load);
-  }
-  start.stops = single.stops;
   for (size_t k = 0; k < start.stops.size(); ++k) {
     start.stops[k].force = extrapolated(single.stops[k].force, twice.stops[k].force);
     start.stops[k].torque = extrapolated(single.stops[k].torque, twice.stops[k].torque);
   }
-  start.friction = single.friction;
   for (size_t k = 0; k < start.friction.size(); ++k) {
     start.friction[k].torque = extrapolated(single.friction[k].torque, twice.friction[k].torque);
     start.friction[k].normal_force = extrapolated(single.friction[k].normal_force, twice.friction[k].normal_force);
