@@ -51,6 +51,13 @@ class FrictionEffect : public ModalEffect {
   bool LocatesEventsFromEndRates() const override { return true; }
   void Commit(const StepContext& ctx, const State& end, EffectState* effect) const override;
 
+  /// The mode across an impulse (a jump of a drive's rate) of a joint stuck before it, from the limiting step
+  /// `stuck` of the velocity projection solved with the joint stuck: its forces are the impulses over the step's
+  /// size. Stuck while the sticking impulse stays within mu_s rho times the normal impulse (Coulomb's law for
+  /// impulses), else sliding the way the impulse pushes it; the trial mode where the row is left out (F8).
+  int ModeAcrossImpulse(const StepContext& stuck) const;
+  /// Enters `mode` after an impulse: the force of a stick before it is no base for locating a breakaway (F3').
+  static void EnterAfterImpulse(int mode, EffectState* effect);
   /// The initial mode for a starting rate: sliding in its direction, sticking at rest.
   static int InitialMode(double qdot) { return qdot > 0 ? kSlidingPositive : qdot < 0 ? kSlidingNegative : kSticking; }
   /// The sticking threshold v0 in force at a state: min(1%, 100 error_tol) of the largest slip speed seen (at least

@@ -240,6 +240,18 @@ int FrictionEffect::ReviseMode(const StepContext& ctx) const {
   return Direction(mode) * EndRate(ctx, variable_) < 0 && slow ? kSticking : mode;
 }
 
+int FrictionEffect::ModeAcrossImpulse(const StepContext& stuck) const {
+  if (!Constrained(stuck)) return TrialMode(stuck);
+  const double lambda = (*stuck.lambda)[stick_multiplier_];
+  if (std::abs(lambda) <= StaticBound(*stuck.lambda, *stuck.start)) return kSticking;
+  return lambda > 0 ? kSlidingPositive : kSlidingNegative;
+}
+
+void FrictionEffect::EnterAfterImpulse(int mode, EffectState* effect) {
+  effect->mode = mode;
+  effect->steady_force = effect->steady_excess_before = std::numeric_limits<double>::quiet_NaN();
+}
+
 double FrictionEffect::KineticForce(const State& state) const { return BoundAt(spec_.mu_k, state.lambda, state); }
 
 double FrictionEffect::StaticBound(const Eigen::VectorXd& lambda, const State& start) const {
