@@ -134,5 +134,25 @@ TEST(FrictionImpulse, ArmWhoseShoulderStartsAtARateUnderAStuckElbowRunsToItsEnd)
   }
 }
 
+// A set-point commanded at 0.5 s (the node's ~position_command) on the shoulder held at 0: the lag's rate jumps to
+// (s - q) / tau = 6 rad/s there, the same impulse on the stuck elbow; the run reaches its end with the elbow slid.
+TEST(FrictionImpulse, SetpointCommandedOverAStuckElbowRunsToItsEnd) {
+  std::string text = ArmYaml("{mu_s: 0.3, mu_k: 0.2, radius: 0.02, preload: 20.0}");
+  const std::string ramp = "{law: linear_ramp, value: " + std::to_string(kRate) + ", start: 0.5, duration: 1.0}";
+  text.replace(text.find(ramp), ramp.size(), "{law: constant, value: 0.0}");
+  const std::string yaml = testing::TempDir() + "friction_impulse_setpoint.yaml";
+  std::ofstream(yaml) << text;
+  const Model model = BuildModel(LoadModelSpec(std::string(FLEXMBD_SOURCE_DIR) + "/test/data/urdf/two_link_arm.urdf", yaml));
+  Simulation simulation(model);
+  simulation.SolveStaticStart();
+  const auto ignore = [](const OutputSample&) {};
+  simulation.Begin(ignore);
+  simulation.AdvanceTo(kJump, model.solver().t_end, ignore);
+  simulation.SetSetpoint(model.FindVariable("B1"), 0.6, 0.1);
+  ASSERT_NO_THROW(simulation.AdvanceTo(model.solver().t_end, model.solver().t_end, ignore));
+  EXPECT_DOUBLE_EQ(simulation.state().t, model.solver().t_end);
+  EXPECT_GT(simulation.state().effects[model.friction_effects()[0]->slot()].work, 0.0);
+}
+
 }  // namespace friction_impulse_test
 }  // namespace flexmbd
