@@ -94,8 +94,10 @@ class FrictionEffect : public ModalEffect {
   // The friction force on q over the step ctx: the sticking multiplier, the law's force, or 0 where friction acts
   // not (held, static) [N m or N].
   double AppliedForce(const StepContext& ctx) const;
-  // Energy the friction dissipates over the step ctx [J].
-  double StepDissipation(const StepContext& ctx) const;
+  // The work done against the friction force over the step ctx, -Q dq [J]. Coulomb friction never does positive work,
+  // and the part of this below zero is the scheme's: a mode or a mean force held over a step in which the slip
+  // stopped or turned (F9). Only the part above zero is the friction's dissipation.
+  double StepWorkAgainst(const StepContext& ctx) const;
   // N and dN/d(joint position multipliers) from the multipliers and the motion axis in W.
   double NormalForce(const Vec3& lambda, const Vec3& axis_W, Vec3* d_dlambda) const;
   Vec3 AxisW(const State& state) const;
