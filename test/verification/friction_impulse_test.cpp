@@ -33,6 +33,23 @@ std::string ArmYaml(const std::string& friction) {
          "\nsolver: {t_end: 1.0, gravity: [0.0, 0.0, -9.81], static_first: true}\noutput: {rate_hz: 0}\n";
 }
 
+// The arm of two_link_arm.urdf with this YAML.
+Model ArmModel(const std::string& yaml_text) {
+  const std::string yaml = testing::TempDir() + "friction_impulse.yaml";
+  std::ofstream(yaml) << yaml_text;
+  return BuildModel(LoadModelSpec(std::string(FLEXMBD_SOURCE_DIR) + "/test/data/urdf/two_link_arm.urdf", yaml));
+}
+
+// Runs `simulation` to t, from its static start first if `start`.
+void StartAndRunTo(Simulation* simulation, double t, bool start = true) {
+  const auto ignore = [](const OutputSample&) {};
+  if (start) {
+    simulation->SolveStaticStart();
+    simulation->Begin(ignore);
+  }
+  simulation->AdvanceTo(t, simulation->model().solver().t_end, ignore);
+}
+
 // The second arm's impulsive motion from rest when the first turns at w1 about y at shoulder and elbow angles q1, q2,
 // with friction of mu_s, mu_k on a race of radius rho at the elbow (the joint's reaction impulse P = m v_c is its
 // normal impulse). Its angular momentum about the elbow, H(w2) = I w2 + m (r d2 x v_c(w2)) . y, is the friction's
@@ -65,15 +82,10 @@ TEST(FrictionImpulse, StuckElbowTakesTheShouldersRateJumpByCoulombsLawForImpulse
   };
   for (const Case& c : {Case{0.3, 0.2, FrictionEffect::kSlidingPositive}, Case{1.0, 0.8, FrictionEffect::kSticking}}) {
     SCOPED_TRACE(c.mu_s);
-    const std::string yaml = testing::TempDir() + "friction_impulse.yaml";
-    std::ofstream(yaml) << ArmYaml("{mu_s: " + std::to_string(c.mu_s) + ", mu_k: " + std::to_string(c.mu_k) +
-                                   ", radius: 1.0, preload: 20.0}");
-    const Model model = BuildModel(LoadModelSpec(std::string(FLEXMBD_SOURCE_DIR) + "/test/data/urdf/two_link_arm.urdf", yaml));
+    const Model model = ArmModel(ArmYaml("{mu_s: " + std::to_string(c.mu_s) + ", mu_k: " + std::to_string(c.mu_k) +
+                                         ", radius: 1.0, preload: 20.0}"));
     Simulation simulation(model);
-    simulation.SolveStaticStart();
-    const auto ignore = [](const OutputSample&) {};
-    simulation.Begin(ignore);
-    simulation.AdvanceTo(kJump, model.solver().t_end, ignore);
+    StartAndRunTo(&simulation, kJump);
     State state = simulation.state();
     ASSERT_DOUBLE_EQ(state.t, kJump);
     const int shoulder = model.FindVariable("B1"), elbow = model.FindVariable("B2");
@@ -140,16 +152,11 @@ TEST(FrictionImpulse, SetpointCommandedOverAStuckElbowRunsToItsEnd) {
   std::string text = ArmYaml("{mu_s: 0.3, mu_k: 0.2, radius: 0.02, preload: 20.0}");
   const std::string ramp = "{law: linear_ramp, value: " + std::to_string(kRate) + ", start: 0.5, duration: 1.0}";
   text.replace(text.find(ramp), ramp.size(), "{law: constant, value: 0.0}");
-  const std::string yaml = testing::TempDir() + "friction_impulse_setpoint.yaml";
-  std::ofstream(yaml) << text;
-  const Model model = BuildModel(LoadModelSpec(std::string(FLEXMBD_SOURCE_DIR) + "/test/data/urdf/two_link_arm.urdf", yaml));
+  const Model model = ArmModel(text);
   Simulation simulation(model);
-  simulation.SolveStaticStart();
-  const auto ignore = [](const OutputSample&) {};
-  simulation.Begin(ignore);
-  simulation.AdvanceTo(kJump, model.solver().t_end, ignore);
+  StartAndRunTo(&simulation, kJump);
   simulation.SetSetpoint(model.FindVariable("B1"), 0.6, 0.1);
-  ASSERT_NO_THROW(simulation.AdvanceTo(model.solver().t_end, model.solver().t_end, ignore));
+  ASSERT_NO_THROW(StartAndRunTo(&simulation, model.solver().t_end, false));
   EXPECT_DOUBLE_EQ(simulation.state().t, model.solver().t_end);
   EXPECT_GT(simulation.state().effects[model.friction_effects()[0]->slot()].work, 0.0);
 }
