@@ -51,6 +51,13 @@ class FrictionEffect : public ModalEffect {
   bool LocatesEventsFromEndRates() const override { return true; }
   void Commit(const StepContext& ctx, const State& end, EffectState* effect) const override;
 
+  /// The mode across an impulse (a jump of a drive's rate) of a joint stuck before it, from the limiting step
+  /// `stuck` of the velocity projection solved with the joint stuck: its forces are the impulses over the step's
+  /// size. Stuck while the sticking impulse stays within mu_s rho times the normal impulse (Coulomb's law for
+  /// impulses), else sliding the way the impulse pushes it; the trial mode where the row is left out (F8).
+  int ModeAcrossImpulse(const StepContext& stuck) const;
+  /// Enters `mode` after an impulse: the force of a stick before it is no base for locating a breakaway (F3').
+  static void EnterAfterImpulse(int mode, EffectState* effect);
   /// The initial mode for a starting rate: sliding in its direction, sticking at rest.
   static int InitialMode(double qdot) { return qdot > 0 ? kSlidingPositive : qdot < 0 ? kSlidingNegative : kSticking; }
   /// The sticking threshold v0 in force at a state: min(1%, 100 error_tol) of the largest slip speed seen (at least
@@ -87,8 +94,10 @@ class FrictionEffect : public ModalEffect {
   // The friction force on q over the step ctx: the sticking multiplier, the law's force, or 0 where friction acts
   // not (held, static) [N m or N].
   double AppliedForce(const StepContext& ctx) const;
-  // Energy the friction dissipates over the step ctx [J].
-  double StepDissipation(const StepContext& ctx) const;
+  // The work done against the friction force over the step ctx, -Q dq [J]. Coulomb friction never does positive work,
+  // and the part of this below zero is the scheme's: a mode or a mean force held over a step in which the slip
+  // stopped or turned (F9). Only the part above zero is the friction's dissipation.
+  double StepWorkAgainst(const StepContext& ctx) const;
   // N and dN/d(joint position multipliers) from the multipliers and the motion axis in W.
   double NormalForce(const Vec3& lambda, const Vec3& axis_W, Vec3* d_dlambda) const;
   Vec3 AxisW(const State& state) const;

@@ -128,7 +128,8 @@ struct EnergyTally {
 struct StepWork {
   double external = 0;    ///< by applied loads, drives and commanded efforts [J]
   double dissipated = 0;  ///< by dampers, friction, contact and structural damping (>= 0) [J]
-  double numerical = 0;   ///< by the integrator's dissipation in elastic elements (>= 0) [J]
+  double numerical = 0;   ///< by the integrator's dissipation in elastic elements (>= 0), and the scheme's share of a
+                          ///< frictional step's work, where the friction's would be negative (<= 0, docs/theory.md (F9)) [J]
 };
 
 /// Most local unknowns an element with rate parts may have: a cubic beam's 4 nodes.

@@ -49,9 +49,10 @@ struct EffectState {
   /// repeats the other constraint rows, which then hold it: the row is left out and friction applies no force
   /// (docs/theory.md (F7)).
   bool held_by_constraints = false;
-  /// The velocity projection after a step that led here held this effect at rest in its mode (a rigid contact that
-  /// came to rest, docs/theory.md (C2a')), and it has kept that mode since: a rigid stop's contact steps from such a
-  /// start close the gap the contact began with.
+  /// The velocity projection after a step that led here held this effect at rest in its mode (an effect whose
+  /// ComesToRest says so: a rigid contact that came to rest, docs/theory.md (C2a')), and it has kept that mode since
+  /// (the integrator sets it and clears it where the mode changes): a rigid stop's contact steps from such a start
+  /// close the gap the contact began with.
   bool held_at_rest = false;
 };
 

@@ -199,13 +199,15 @@ double FrictionEffect::AppliedForce(const StepContext& ctx) const {
   return sticking ? -(*ctx.lambda)[stick_multiplier_] : Evaluate(ctx).force;
 }
 
-double FrictionEffect::StepDissipation(const StepContext& ctx) const {
+double FrictionEffect::StepWorkAgainst(const StepContext& ctx) const {
   const VariableStep& q = (*ctx.variables)[variable_];
   return -AppliedForce(ctx) * (q.q_f - q.q_i);
 }
 
 void FrictionEffect::AddStepWork(const StepContext& ctx, StepWork* work) const {
-  work->dissipated += StepDissipation(ctx);
+  const double against = StepWorkAgainst(ctx);
+  work->dissipated += std::max(against, 0.0);
+  work->numerical += std::min(against, 0.0);  // the scheme's: the mode held over the step (F9)
 }
 
 int FrictionEffect::ReviseMode(const StepContext& ctx) const {
@@ -238,6 +240,18 @@ int FrictionEffect::ReviseMode(const StepContext& ctx) const {
   // within it to locate, and the joint slides the way it moves. (A slower one is judged as a capture below.)
   if (!slow && Direction(mode) * qdot_i < 0) return InitialMode(qdot_i);
   return Direction(mode) * EndRate(ctx, variable_) < 0 && slow ? kSticking : mode;
+}
+
+int FrictionEffect::ModeAcrossImpulse(const StepContext& stuck) const {
+  if (!Constrained(stuck)) return TrialMode(stuck);
+  const double lambda = (*stuck.lambda)[stick_multiplier_];
+  if (std::abs(lambda) <= StaticBound(*stuck.lambda, *stuck.start)) return kSticking;
+  return lambda > 0 ? kSlidingPositive : kSlidingNegative;
+}
+
+void FrictionEffect::EnterAfterImpulse(int mode, EffectState* effect) {
+  effect->mode = mode;
+  effect->steady_force = effect->steady_excess_before = std::numeric_limits<double>::quiet_NaN();
 }
 
 double FrictionEffect::KineticForce(const State& state) const { return BoundAt(spec_.mu_k, state.lambda, state); }
@@ -318,7 +332,7 @@ StepLimit FrictionEffect::Limit(const StepContext& ctx, const State& end) const 
 }
 
 void FrictionEffect::Commit(const StepContext& ctx, const State& end, EffectState* effect) const {
-  effect->work += StepDissipation(ctx);
+  effect->work += std::max(StepWorkAgainst(ctx), 0.0);
   const bool steady = Constrained(ctx) && ctx.start->effects[slot()].mode == kSticking;
   const double no_force = std::numeric_limits<double>::quiet_NaN();
   const double force_before = ctx.start->effects[slot()].steady_force;

@@ -259,7 +259,6 @@ void RigidStop::Commit(const StepContext& ctx, const State& end, EffectState* ef
   if (effect->mode == kContact && ctx.start->effects[slot()].mode != kContact) {
     effect->reference = std::max(effect->reference, -GapRate(ctx.start->qdot[variable()]));
   }
-  if (effect->mode != kContact) effect->held_at_rest = false;
   JointStop::Commit(ctx, end, effect);
 }
 

@@ -342,7 +342,12 @@ bool EnergyDecayingIntegrator::CommitEffects(State* end, StepLimit* limit) const
     limit->Merge(own);
   }
   end->effects = modes_;
-  for (const ModalEffect* effect : model_.modal_effects()) effect->Commit(ctx, *end, &end->effects[effect->slot()]);
+  for (const ModalEffect* effect : model_.modal_effects()) {
+    EffectState& own = end->effects[effect->slot()];
+    effect->Commit(ctx, *end, &own);
+    // Held at rest by a projection in the mode it has kept since: a mode left ends it.
+    if (own.mode != ctx.start->effects[effect->slot()].mode) own.held_at_rest = false;
+  }
   if (!SameModes(modes_, end->effects)) system_->set_factorisation_key(std::numeric_limits<double>::quiet_NaN());
   return end_rate_event;
 }

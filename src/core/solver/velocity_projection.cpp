@@ -1,5 +1,6 @@
 #include "flexmbd/solver/velocity_projection.hpp"
 
+#include <algorithm>
 #include <limits>
 
 #include "flexmbd/model/model.hpp"
@@ -11,6 +12,11 @@
 
 namespace flexmbd {
 namespace {
+// True when `friction` has a sticking row and is stuck in `state`.
+bool StuckIn(const State& state, const FrictionEffect& friction) {
+  return friction.has_sticking_row() && state.effects[friction.slot()].mode == FrictionEffect::kSticking;
+}
+
 // The limiting steps are this fraction of the last step and twice it: small enough that the forces' share of
 // their mean velocities (h a / 2) is extrapolated away to O(h^2), large enough that the positions they move stay
 // far above the constraint tolerance.
@@ -62,6 +68,30 @@ bool VelocityProjection::SolveLimitingStep(const State& state, double h, MeanMot
   return true;
 }
 
+bool VelocityProjection::HoldStuckJoints(const State& state) {
+  // Released, a joint stuck at rest would slide the way its round-off rate points.
+  bool any = false;
+  for (const FrictionEffect* friction : model_.friction_effects()) {
+    if (!StuckIn(state, *friction)) continue;
+    modes_[friction->slot()].mode = FrictionEffect::kSticking;
+    any = true;
+  }
+  return any;
+}
+
+bool VelocityProjection::JudgeStuckJoints(const State& state, double h) {
+  if (flexmbd::SolveLimitingStep(model_, system_, &builder_, state, h) == nullptr) return false;
+  bool revised = false;
+  for (const FrictionEffect* friction : model_.friction_effects()) {
+    if (!StuckIn(state, *friction)) continue;
+    const int mode = friction->ModeAcrossImpulse(builder_.context());
+    revised = revised || mode != modes_[friction->slot()].mode;
+    modes_[friction->slot()].mode = mode;
+  }
+  if (revised) redundancy_.Mark(state, &modes_);
+  return true;
+}
+
 bool VelocityProjection::Apply(State* state, const std::vector<bool>& held) {
   return Project(state, held, kLimitingStepFraction * state->h_prev, nullptr, Removed::kNumerical);
 }
@@ -78,21 +108,30 @@ bool VelocityProjection::ApplyAtDriveJump(State* state, const Eigen::VectorXd& b
       !Project(&projected, nothing_held, kLimitingStepFraction * h, &after, Removed::kDrivesWork)) {
     return false;
   }
+  // The jump is an impulse: a joint stuck before it stays stuck, or slides, as Coulomb's law for impulses says (F8).
+  for (const FrictionEffect* friction : model_.friction_effects()) {
+    if (StuckIn(*state, *friction)) {
+      FrictionEffect::EnterAfterImpulse(modes_[friction->slot()].mode, &projected.effects[friction->slot()]);
+    }
+  }
   *state = std::move(projected);
   return true;
 }
 
 bool VelocityProjection::Project(State* state, const std::vector<bool>& held, double h,
                                  const Eigen::VectorXd* drive_rates, Removed removed) {
-  std::vector<EffectState> modes = state->effects;
+  modes_ = state->effects;
   for (const ModalEffect* effect : model_.modal_effects()) {
-    if (!held[effect->slot()]) modes[effect->slot()].mode = effect->ReleasedMode(*state);
+    if (!held[effect->slot()]) modes_[effect->slot()].mode = effect->ReleasedMode(*state);
   }
-  redundancy_.Mark(*state, &modes);
-  builder_.set_effect_modes(&modes);
+  // At a jump of the drives' rates the frictions stuck before it are judged (F8).
+  const bool judge = drive_rates != nullptr && HoldStuckJoints(*state);
+  redundancy_.Mark(*state, &modes_);
+  builder_.set_effect_modes(&modes_);
   builder_.set_drive_rates(drive_rates);
   MeanMotion single, twice;
-  const bool converged = SolveLimitingStep(*state, h, &single) && SolveLimitingStep(*state, 2.0 * h, &twice);
+  const bool converged = (!judge || JudgeStuckJoints(*state, h)) && SolveLimitingStep(*state, h, &single) &&
+                         SolveLimitingStep(*state, 2.0 * h, &twice);
   builder_.set_drive_rates(nullptr);
   if (!converged) return false;
   // Richardson extrapolation to h = 0 of the mean velocities and of the constraint impulses' work.
@@ -107,9 +146,13 @@ bool VelocityProjection::Project(State* state, const std::vector<bool>& held, do
   // projection dissipates.
   auto kept = [](double single_step, double double_step) { return 0.5 * (2.0 * single_step - double_step); };
   const double external = kept(single.work.external, twice.work.external);
-  const double dissipated = kept(single.work.dissipated, twice.work.dissipated);
+  double dissipated = kept(single.work.dissipated, twice.work.dissipated);
   for (size_t k = 0; k < state->effects.size(); ++k) {
-    state->effects[k].work += kept(single.effect_dissipation[k], twice.effect_dissipation[k]);
+    // Extrapolated from two steps that move by O(h) with finite forces (no impulse), an effect's work O(h^2) comes
+    // out below zero; what it keeps of an impulse's is not. The part below zero is the projection's (F9).
+    const double share = kept(single.effect_dissipation[k], twice.effect_dissipation[k]);
+    state->effects[k].work += std::max(share, 0.0);
+    dissipated -= std::min(share, 0.0);
   }
   const double kinetic_removed = kinetic_before - StateEnergy(model_, *state).kinetic;
   state->dissipated_physical += dissipated;
