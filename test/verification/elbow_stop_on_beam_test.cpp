@@ -104,5 +104,21 @@ TEST(ElbowStopOnBeam, StaticAnalysisFromStraightRestsOnTheRigidStopTheForearmFal
   EXPECT_NEAR(torque, moment, 2.0e-5 * moment);
 }
 
+// The same static analysis with the elbow's Hertz stops: an elastic stop has no row to close, and without the
+// accelerations the load cannot tell which stop the forearm rests on. It ended with the bare "singular iteration
+// matrix"; the runner's failure (exit 3) now names the joint, why nothing holds it and what to do.
+TEST(ElbowStopOnBeam, StaticAnalysisOnElasticStopsWithoutInertiaNamesTheJointAndWhatToDo) {
+  std::string yaml = ArmYaml("  shoulder: {drive: {law: constant, value: 0.0}}\n", "1.0", "0.0",
+                             testing::TempDir() + "elbow_static_elastic.csv");
+  yaml = test::Replaced(yaml, "solver: {t_end: 0.0}", "solver: {analysis: static}");
+  const std::string out = test::RunnerOutput("test/data/urdf/flex_arm_elbow.urdf", yaml, "elbow_static_elastic", 3);
+  EXPECT_NE(out.find("joint elbow has no stiffness, nothing holds it; only its elastic stops could"),
+            std::string::npos)
+      << out;
+  for (const char* remedy : {"m_ii", "use rigid stops", "start the joint on the stop", "dynamic analysis"}) {
+    EXPECT_NE(out.find(remedy), std::string::npos) << remedy << " not in: " << out;
+  }
+}
+
 }  // namespace elbow_stop_on_beam_test
 }  // namespace flexmbd

@@ -33,6 +33,7 @@ struct NewtonReport {
   double force_residual = 0;       ///< relative, at the last evaluation
   double constraint_residual = 0;  ///< [m or rad]
   int worst_unknown = -1;          ///< row with the largest scaled residual
+  int singular_unknown = -1;       ///< when singular: the unknown with the zero pivot, if the factorisation found it
   /// theta / (1 - theta) of the last contraction measured on one factorisation; NaN if none was measured
   double contraction_factor = std::numeric_limits<double>::quiet_NaN();
 };

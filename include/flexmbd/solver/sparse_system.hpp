@@ -50,6 +50,9 @@ class SparseSystem {
   double factorisation_key() const { return factorisation_key_; }
   void set_factorisation_key(double key) { factorisation_key_ = key; }
   bool has_factorisation() const;
+  /// The unknown (column) whose pivot was zero in the last factorisation that failed as singular; -1 if none was
+  /// found (the factorisation succeeded, or the solve was what failed).
+  int singular_unknown() const;
 
   /// Time spent in assembly, factorisation and solve since construction [s].
   struct Timing {

@@ -23,6 +23,9 @@ struct StaticResult {
   int turned_variable = -1;
   double turn = 0;
   int passed_stop = -1;
+  /// Set when the iteration matrix was singular at a joint variable (its zero pivot) that only an open elastic stop
+  /// could hold, in a model without the inertia to tell which stop the load pushes it onto.
+  int undirected_variable = -1;
 };
 
 /// Solves for equilibrium at time state->t starting from *state; velocities are set to zero. An increment turns a

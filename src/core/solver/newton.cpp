@@ -94,6 +94,7 @@ NewtonReport SolveNewton(const Model& model, SparseSystem* system, double tol, i
     if (!std::isfinite(check.force) || !std::isfinite(check.constraint)) return report;
     if (!system->Solve(&increment, refresh)) {
       report.singular = true;
+      report.singular_unknown = system->singular_unknown();
       return report;
     }
     const double size = increment.head(n_kinematic).cwiseAbs().maxCoeff();

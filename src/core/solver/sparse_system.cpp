@@ -168,6 +168,11 @@ bool SparseSystem::Factorise() {
 
 bool SparseSystem::has_factorisation() const { return klu_->numeric != nullptr; }
 
+int SparseSystem::singular_unknown() const {
+  const int column = klu_->common.singular_col;
+  return klu_->common.status == KLU_SINGULAR && column >= 0 && column < n_ ? column : -1;
+}
+
 bool SparseSystem::Solve(Eigen::VectorXd* dx, bool refactorise) {
   auto start = std::chrono::steady_clock::now();
   const bool factorised = (refactorise || klu_->numeric == nullptr) ? Factorise() : true;

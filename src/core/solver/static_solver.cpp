@@ -55,19 +55,25 @@ void CloseTouchedRigidStops(const Model& model, double round_off, State* state) 
 // model is moved along its motion released from rest until the joint is just past the stop (the increment rule's
 // landing), where the stop's static stiffness holds it. One whose force then pulls is opened again
 // (ReleasePullingStops). Returns whether any was closed or reached.
+// The motion of the model released from rest at `start` into *motion; false if it has none: a model with motions
+// that have no inertia (a beam node without rotary inertia) has no accelerations to tell the loads' direction by.
+bool ReleaseFromRest(const Model& model, const State& start, State* motion) {
+  *motion = start;
+  for (NodeState& n : motion->nodes) n.v = n.w = Vec3::Zero();
+  try {
+    *motion = WithConsistentMotion(model, *motion);
+  } catch (const SolverError&) {
+    return false;
+  }
+  return true;
+}
+
 bool HoldPushedJoints(const Model& model, const StaticIncrement& increment_rule, const std::vector<bool>& released,
                       State* start) {
-  State released_motion = *start;
-  for (NodeState& n : released_motion.nodes) n.v = n.w = Vec3::Zero();
-  // A model with motions that have no inertia (a beam node without rotary inertia) has no accelerations to tell the
-  // loads' direction by: then the nearest rigid stop is closed whichever way it lies, and if it pulls, opened again
-  // and released, and the next nearest closed.
-  bool directed = true;
-  try {
-    released_motion = WithConsistentMotion(model, released_motion);
-  } catch (const SolverError&) {
-    directed = false;
-  }
+  // Without accelerations the nearest rigid stop is closed whichever way it lies, and if it pulls, opened again and
+  // released, and the next nearest closed.
+  State released_motion;
+  const bool directed = ReleaseFromRest(model, *start, &released_motion);
   const Eigen::VectorXd& accelerations = released_motion.qddot_prev;
   std::vector<int> nearest(model.num_variables(), -1);
   const std::vector<const JointStop*>& stops = model.stop_effects();
@@ -160,6 +166,19 @@ void MarkPressedElasticStops(const Model& model, State* state) {
   }
 }
 
+// The joint variable a singular iteration matrix left undetermined (its zero pivot) when only an open elastic stop
+// could hold it and the model released from rest has no accelerations to tell which one it rests on; else -1.
+int UndirectedVariable(const Model& model, const State& start, const NewtonReport& last) {
+  const int v = last.singular_unknown - model.variable_unknown(0);
+  if (last.singular_unknown < 0 || v < 0 || v >= model.num_variables() || model.driven(v)) return -1;
+  const std::vector<const JointStop*>& stops = model.stop_effects();
+  const bool elastic = std::any_of(stops.begin(), stops.end(), [&](const JointStop* stop) {
+    return stop->variable() == v && !stop->rigid() && start.effects[stop->slot()].mode == JointStop::kOpen;
+  });
+  State released_motion;
+  return elastic && !ReleaseFromRest(model, start, &released_motion) ? v : -1;
+}
+
 StaticResult SolveLoadSteps(const Model& model, SparseSystem* system, const std::vector<bool>& released,
                             State* state) {
   StepContextBuilder builder(model);
@@ -225,6 +244,7 @@ StaticResult SolveStatic(const Model& model, SparseSystem* system, State* state)
     if (!again) break;
   }
   if (result.converged) RefuseOutOfReach(model, initial, *state, &result);
+  if (result.last.singular) result.undirected_variable = UndirectedVariable(model, start, result.last);
   return result;
 }
 
@@ -248,6 +268,14 @@ std::string DescribeStaticFailure(const Model& model, const StaticResult& result
        << " (load factor " << static_cast<double>(result.load_steps) / solver.load_steps << "): ";
   if (result.last.singular) {
     text << "singular iteration matrix after " << result.last.iterations << " Newton iteration(s)";
+    if (result.undirected_variable >= 0) {
+      text << ": joint " << model.variable_names()[result.undirected_variable]
+           << " has no stiffness, nothing holds it; only its elastic stops could, and the load cannot tell which one "
+              "it rests on, as the model has no inertia to release it with (a beam node without rotary inertia); "
+              "give the beam rotary inertia (section m_ii), use rigid stops, start the joint on the stop, or run a "
+              "dynamic analysis";
+      return text.str();
+    }
   } else {
     text << "Newton did not converge in " << result.last.iterations << " iterations (solver.max_iterations "
          << solver.max_iterations << ")";
