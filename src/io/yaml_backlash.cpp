@@ -115,6 +115,8 @@ std::vector<StopSpec> ReadBacklash(const Field& backlash, const JointSpec& joint
   if (!backlash.node().IsSequence()) return ReadBlock(backlash, joint, variable, units, "", warnings);
   std::vector<StopSpec> stops;
   const std::vector<Field> blocks = ListEntries(backlash, "a backlash block or a list of them");
+  // An empty list would give the joint no stops while the key says it has some.
+  if (blocks.empty()) backlash.Fail("[] gives no stops; expected a backlash block or a list of them (no key: no stops)");
   for (size_t k = 0; k < blocks.size(); ++k) {
     const std::vector<StopSpec> block =
         ReadBlock(blocks[k], joint, variable, units, k == 0 ? "" : "." + std::to_string(k), warnings);

@@ -379,6 +379,13 @@ TEST(ConfigErrors, SineWithoutItsAmplitudeOrFrequencyIsRejected) {
   EXPECT_NO_THROW(Pendulum("joints: {B1: {drive: {law: sine, amplitude: 0, frequency: 2}}}"));
 }
 
+TEST(ConfigErrors, EmptyBacklashListIsRejected) {
+  // It meant no stops without a word, though the key asks for them.
+  EXPECT_CONFIG_ERROR(Pendulum("joints: {B1: {backlash: []}}"),
+                      "pendulum.yaml: joints.B1.backlash: [] gives no stops; expected a backlash block or a list of "
+                      "them (no key: no stops)");
+}
+
 TEST(ConfigErrors, NonPositiveRampDurationIsRejected) {
   EXPECT_CONFIG_ERROR(Pendulum("joints: {B1: {drive: {law: cosine_ramp, value: 1, duration: 0}}}"),
                       "pendulum.yaml: joints.B1.drive.duration: 0 is zero; expected a duration > 0 [s]");
