@@ -11,6 +11,7 @@
 #include <sstream>
 #include <string>
 
+#include "flexmbd/io/text_file.hpp"
 #include "../integration/helpers/file_size_limit.hpp"
 #include "cut_csv.hpp"
 
@@ -228,6 +229,29 @@ TEST(RunnerExit, CsvOnADiskFillingUpMidRunExitsWithThreeKeepingWholeRows) {
   {
     const flexmbd::test::FileSizeLimit cap(100000);
     out = RunRunner(DoublePendulumCase() + " --csv " + csv);
+  }
+  EXPECT_EQ(out.exit_status, kRunFailedExit);
+  EXPECT_EQ(std::count(out.stderr_text.begin(), out.stderr_text.end(), '\n'), 1) << out.stderr_text;
+  EXPECT_EQ(out.stderr_text.find("flexmbd_run: output.csv: writing '" + csv + "' failed (File too large); the file "
+                                 "holds its header row and the first "),
+            0u)
+      << out.stderr_text;
+  flexmbd::test::ExpectWholeRowsAsClaimed(csv, out.stderr_text);
+}
+
+TEST(RunnerExit, CsvFailingOnTheWriterThreadOfTwoSolverThreadsExitsWithThreeKeepingWholeRows) {
+  // With solver.threads 2 the runner writes the samples on a thread of its own: the failure comes from there, is
+  // reported once, and the file keeps whole rows, as on one thread (the test above).
+  std::string yaml = flexmbd::ReadTextFile(std::string(FLEXMBD_SOURCE_DIR) + "/config/double_pendulum/double_pendulum.yaml",
+                                           "YAML");
+  yaml.replace(yaml.find("\nsolver:\n"), 9, "\nsolver:\n  threads: 2\n");
+  const std::string config = WriteFile("double_pendulum_two_threads.yaml", yaml);
+  const std::string csv = testing::TempDir() + "capped_run_two_threads.csv";
+  RunOutcome out;
+  {
+    const flexmbd::test::FileSizeLimit cap(100000);
+    out = RunRunner("--urdf " + std::string(FLEXMBD_SOURCE_DIR) + "/config/double_pendulum/double_pendulum.urdf --config " +
+                    config + " --csv " + csv);
   }
   EXPECT_EQ(out.exit_status, kRunFailedExit);
   EXPECT_EQ(std::count(out.stderr_text.begin(), out.stderr_text.end(), '\n'), 1) << out.stderr_text;
