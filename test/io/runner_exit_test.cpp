@@ -11,6 +11,7 @@
 #include <sstream>
 #include <string>
 
+#include "flexmbd/io/text_file.hpp"
 #include "../integration/helpers/file_size_limit.hpp"
 #include "cut_csv.hpp"
 
@@ -221,13 +222,16 @@ TEST(RunnerExit, CsvOnAFullDeviceExitsWithThreeInOneLineNamingTheFile) {
             "flexmbd_run: output.csv: writing '/dev/full' failed (No space left on device); the file holds nothing\n");
 }
 
-TEST(RunnerExit, CsvOnADiskFillingUpMidRunExitsWithThreeKeepingWholeRows) {
-  // A 100 kB cap on the runner's files (RLIMIT_FSIZE, inherited) stops the CSV at about a sixth of the run.
-  const std::string csv = testing::TempDir() + "capped_run.csv";
+// Runs the double pendulum (`config`: its YAML's path) with a 100 kB cap on the runner's files (RLIMIT_FSIZE,
+// inherited), which stops the CSV at about a sixth of the run: exit status 3, one line naming the file and the
+// rows it holds, and whole rows as many as it says.
+void ExpectCappedCsvKeepsWholeRows(const std::string& config, const std::string& csv_name) {
+  const std::string csv = testing::TempDir() + csv_name;
   RunOutcome out;
   {
     const flexmbd::test::FileSizeLimit cap(100000);
-    out = RunRunner(DoublePendulumCase() + " --csv " + csv);
+    out = RunRunner("--urdf " + std::string(FLEXMBD_SOURCE_DIR) + "/config/double_pendulum/double_pendulum.urdf --config " +
+                    config + " --csv " + csv);
   }
   EXPECT_EQ(out.exit_status, kRunFailedExit);
   EXPECT_EQ(std::count(out.stderr_text.begin(), out.stderr_text.end(), '\n'), 1) << out.stderr_text;
@@ -236,6 +240,20 @@ TEST(RunnerExit, CsvOnADiskFillingUpMidRunExitsWithThreeKeepingWholeRows) {
             0u)
       << out.stderr_text;
   flexmbd::test::ExpectWholeRowsAsClaimed(csv, out.stderr_text);
+}
+
+TEST(RunnerExit, CsvOnADiskFillingUpMidRunExitsWithThreeKeepingWholeRows) {
+  ExpectCappedCsvKeepsWholeRows(std::string(FLEXMBD_SOURCE_DIR) + "/config/double_pendulum/double_pendulum.yaml",
+                                "capped_run.csv");
+}
+
+TEST(RunnerExit, CsvFailingOnTheWriterThreadOfTwoSolverThreadsExitsWithThreeKeepingWholeRows) {
+  // With solver.threads 2 the runner writes the samples on a thread of its own: the failure comes from there, is
+  // reported once, and the file keeps whole rows, as on one thread (the test above).
+  std::string yaml = flexmbd::ReadTextFile(std::string(FLEXMBD_SOURCE_DIR) + "/config/double_pendulum/double_pendulum.yaml",
+                                           "YAML");
+  yaml.replace(yaml.find("\nsolver:\n"), 9, "\nsolver:\n  threads: 2\n");
+  ExpectCappedCsvKeepsWholeRows(WriteFile("double_pendulum_two_threads.yaml", yaml), "capped_run_two_threads.csv");
 }
 
 TEST(RunnerExit, CheckLoadsTheCaseAndExitsZeroWithoutRunning) {

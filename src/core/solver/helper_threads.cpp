@@ -5,11 +5,14 @@
 
 namespace flexmbd {
 namespace {
-// How long a helper spins for the next Wake before it sleeps. A simplified Newton iteration (a KLU solve and a
-// residual) takes 50-100 us on the published antenna, a refactorisation about 200 us: this catches the residual
-// assemblies of the simplified iterations without holding a core through a factorisation
-// (bench/README.md, "Element evaluation on two threads, a persistent pool").
-constexpr std::chrono::microseconds kSpin{100};
+// How long a helper waits for the next Wake, yielding its core, before it sleeps. Longer than the gaps between the
+// assemblies of a run (a refactorisation of the published antenna takes about 200 us, a step's end and its samples
+// less), so that a helper seldom sleeps in a run: waking one costs the caller a system call and, as the scheduler
+// tends to put the woken thread on the waker's core, often the caller's core itself (1,500 more involuntary context
+// switches of the calling thread in case 0 with a 100 us spin). Yielding instead of spinning hard hands the core to
+// any other runnable thread, so that on a loaded machine the waiting helper takes nothing from other jobs
+// (bench/README.md, "Helpers that yield while they wait").
+constexpr std::chrono::microseconds kSpin{2000};
 }  // namespace
 
 HelperThreads::HelperThreads(int count, std::function<void()> task) : task_(std::move(task)) {
@@ -40,6 +43,7 @@ long HelperThreads::WaitForWake(long seen) {
   while (std::chrono::steady_clock::now() < spin_end) {
     if (wakes_.load() != seen) return wakes_.load();
     if (stopping_.load()) return -1;
+    std::this_thread::yield();
   }
   std::unique_lock<std::mutex> lock(mutex_);
   sleeping_.fetch_add(1);

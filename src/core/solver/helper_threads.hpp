@@ -1,8 +1,9 @@
 #pragma once
 // Threads kept for the life of their owner that run one fixed task each time they are woken (the parallel
 // element evaluation, parallel_assembly.hpp). A woken helper that finds nothing left to do returns at once; after
-// a task it spins for a short while before it sleeps, since a Newton iteration's next assembly often follows
-// within tens of microseconds, far below the latency of waking a sleeping thread.
+// a task it waits for the next, yielding its core, for a few milliseconds before it sleeps, since a Newton
+// iteration's next assembly follows within tens to hundreds of microseconds, and waking a sleeping thread costs
+// about as much and may take the caller's core.
 
 #include <atomic>
 #include <condition_variable>
