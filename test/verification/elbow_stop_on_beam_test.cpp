@@ -4,8 +4,8 @@
 // which moves it by a finite amount however short the step: the landings before the stop (C5) and the budget of
 // the contact's first step (C6) were redone below dt_min ("a stop or friction event could not be stepped across")
 // at the contact radius 1 m (t = 0.1326 s) and 20 m (0.0647 s). At dt_min the contact now begins where it is. (Later,
-// at 0.184 s inside a contact (its budget (C6)) and at 0.077 s (the local error test (T12)) the same joint still asks
-// for steps below dt_min: open; the runs here end before that.)
+// at 0.184 s inside a contact (its budget (C6)) and at 0.077 s (the local error test (T12)) the same joint asked
+// for steps below dt_min; both radii now run to 1 s, docs/theory.md "Algebraic rotations".)
 
 #include <gtest/gtest.h>
 
@@ -68,6 +68,21 @@ TEST(ElbowStopOnBeam, ContactRadiusOneMetreStepsIntoTheSecondContact) {
 TEST(ElbowStopOnBeam, ContactRadiusTwentyMetresStepsIntoTheContact) {
   // The shoulder free: the whole arm falls, and the forearm, left behind, meets the lower stop.
   ExpectRunsWithClosedBooks("", "20.0", "0.075", "lower", "elbow_stop_radius_20");
+}
+
+// The same arms to 1 s at default settings (52 contacts with the upper stop at 1 m; 18 and 3 at 20 m).
+// The tip node's rotation, which no rotary inertia holds, is algebraic: the midpoint equations leave it an
+// alternating error (1e-7 to 6e-7 rad) that moves the elbow by a finite amount however short the step. It stopped the
+// runs at 0.184 s (radius 1 m, the budget (C6) of a contact's first step read the error as a change of rate) and at
+// 0.077 s (20 m, the onset's error (C6')); the local error test (T12) read it as a third derivative and held the steps
+// near 1e-5 s after the first impact (4,956 steps to 0.141 s, 571 now).
+TEST(ElbowStopOnBeam, ContactRadiusOneMetreRunsToOneSecondAtDefaultSettings) {
+  ExpectRunsWithClosedBooks("  shoulder: {drive: {law: constant, value: 0.0}}\n", "1.0", "1", "upper",
+                            "elbow_stop_radius_1_to_1s");
+}
+
+TEST(ElbowStopOnBeam, ContactRadiusTwentyMetresRunsToOneSecondAtDefaultSettings) {
+  ExpectRunsWithClosedBooks("", "20.0", "1", "lower", "elbow_stop_radius_20_to_1s");
 }
 
 // A static analysis of the arm started straight, its shoulder held, the elbow's rigid stops open: the forearm's hinge

@@ -13,6 +13,7 @@
 /// A stop with a retraction rule stops acting at the first separation after a named variable's speed
 /// exceeds a threshold and engages again below another.
 
+#include <array>
 #include <string>
 
 #include "flexmbd/effects/contact_law.hpp"
@@ -123,8 +124,10 @@ class ElasticStop : public JointStop {
   /// onset of a contact, resolves it (C6); with fixed steps the contact rule (C6) bounds every contact step.
   /// @param length_scale the model's size [m], which sets the least stiffness a static iteration gives the stop in
   /// contact (StaticStiffness).
+  /// @param algebraic the variable moves with an algebraic rotation (Model::moves_with_algebraic_rotation): the rules
+  /// of the contact's steps read its rates freed of that rotation's alternating error.
   ElasticStop(const StopSpec& spec, int variable, int variable_unknown, int slot, const SolverSpec& solver,
-              double length_scale);
+              double length_scale, bool algebraic);
   bool rigid() const override { return false; }
   /// The stiffness dF/da [N/m] a static Newton iteration takes at the signed approach a [m] (docs/theory.md, "Static
   /// increments"): V''(a), touching or pressed at least the law's at an approach of kTouchApproach times the model's
@@ -156,7 +159,8 @@ class ElasticStop : public JointStop {
   struct StepForce {
     double a_i = 0, a_f = 0;     ///< signed approaches -g [m] (negative: open)
     double elastic = 0;          ///< discrete gradient of V [N]
-    double force = 0;            ///< with the Hunt-Crossley factor [N]
+    double damped = 0;           ///< with the Hunt-Crossley factor [N]
+    double force = 0;            ///< with the scheme's dissipation too [N]
     double d_dq_f = 0;           ///< d force / d q_f
     double d_dqdot_f = 0;        ///< d force / d qdot_f (end point only)
     double reference_speed = 0;  ///< v_in used [m/s]
@@ -165,17 +169,27 @@ class ElasticStop : public JointStop {
   double Approach(double q) const { return std::max(0.0, -Gap(q)); }  ///< [m], 0 when open
   // v_in of a step: the memory when in contact at its start, else the approach speed at its start.
   double ReferenceSpeed(const StepContext& ctx) const;
+  // The joint's rates as the contact's rules read them: the mean rate of the step ctx, those of the three steps before
+  // it (newest first) and the rate at its start. On a variable that moves with an algebraic rotation they are freed of
+  // that rotation's alternating error, which moves the joint by a finite amount however short the step (docs/theory.md,
+  // "Algebraic rotations"); elsewhere they are the mean rates and the start's end rate.
+  struct JudgedRates {
+    double step = 0;
+    std::array<double, 3> before{};
+    double start = 0;
+  };
+  JudgedRates Rates(const StepContext& ctx) const;
   // The joint's motion before the contact that is at most one step old in ctx, from mean rates (C6).
   struct Onset {
     int step = -1;            ///< the step in which the gap closed: 0 this one, 1 the one before; -1: none known
     double rate = 0;          ///< the joint's rate at that step's start [rad/s or m/s]
     double acceleration = 0;  ///< and its acceleration then [rad/s^2 or m/s^2]
   };
-  Onset ContactOnset(const StepContext& ctx) const;
+  Onset ContactOnset(const StepContext& ctx, const JudgedRates& rates) const;
   // The change of the joint's rate over the step ctx, from mean rates (C6).
-  double MeanRateChange(const StepContext& ctx, const Onset& onset) const;
+  double MeanRateChange(const StepContext& ctx, const Onset& onset, const JudgedRates& rates) const;
   // The joint's local error over the step ctx at the onset of a contact, against its tolerance (C6).
-  double OnsetError(const StepContext& ctx, const Onset& onset) const;
+  double OnsetError(const StepContext& ctx, const Onset& onset, const JudgedRates& rates) const;
   // The landing (C5), the onset's error (C6') and the budget (C6) on the step ctx, before Limit floors a retry at
   // dt_min.
   StepLimit ContactLimit(const StepContext& ctx, const State& end) const;
@@ -183,6 +197,7 @@ class ElasticStop : public JointStop {
   ContactLaw law_;
   int steps_per_contact_;
   double touch_stiffness_;  ///< least static stiffness in contact [N/m] (StaticStiffness)
+  bool algebraic_;          ///< the variable moves with an algebraic rotation
 };
 
 }  // namespace flexmbd

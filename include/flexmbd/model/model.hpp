@@ -106,6 +106,12 @@ class Model {
   const std::vector<BeamInfo>& beams() const { return beams_; }
   /// Index in beams() of the beam a node belongs to, or -1 (a body, or a beam's centre-of-mass node).
   int beam_of_node(int node) const { return node_beams_[node]; }
+  /// True for a beam node without rotary inertia (section m_ii 0, no centre-of-mass offset): the section's moments
+  /// alone hold its rotation, an algebraic variable, which the midpoint equations leave with an alternating error
+  /// (docs/theory.md, "Algebraic rotations").
+  bool rotation_is_algebraic(int node) const { return algebraic_rotations_[node]; }
+  /// True for a variable of a joint on such a node: the variable carries that node's alternating error.
+  bool moves_with_algebraic_rotation(int variable) const { return on_algebraic_rotations_[variable]; }
   /// The stations of output.beam_stations, beam by beam (in name order), then in the order given.
   const std::vector<BeamStationInfo>& beam_stations() const { return beam_stations_; }
   const std::vector<StopInfo>& stops() const { return stops_; }
@@ -156,6 +162,8 @@ class Model {
   std::vector<BodyInfo> bodies_;
   std::vector<BeamInfo> beams_;
   std::vector<int> node_beams_;  ///< beam_of_node, per node
+  std::vector<bool> algebraic_rotations_;    ///< rotation_is_algebraic, per node
+  std::vector<bool> on_algebraic_rotations_;  ///< moves_with_algebraic_rotation, per variable
   std::vector<BeamStationInfo> beam_stations_;
   std::vector<StopInfo> stops_;
   std::vector<const JointStop*> stop_effects_;

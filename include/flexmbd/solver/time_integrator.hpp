@@ -77,6 +77,12 @@ Rate MeanRateThirdDerivative(const Rate& newest, const Rate& middle, const Rate&
   return ((newest - middle) / span_newer - (middle - oldest) / span_older) / (0.5 * (span_newer + span_older));
 }
 
+/// The alternating error at the end of the newest of three steps (sizes h, newest first) of a motion whose ends carry
+/// +-x in turn: a motion with a constant second derivative over the steps, so shifted, has the mean rates `newest`,
+/// `middle`, `oldest` = its rates at the midpoints plus 2x/h_0, -2x/h_1, 2x/h_2; solved for x (docs/theory.md,
+/// "Algebraic rotations"). On a smooth motion it is of the order of the local error (T12).
+double AlternatingOffset(double newest, double middle, double oldest, const std::array<double, 3>& h);
+
 /// The largest step that begins with a jump of `acceleration_jump` in a joint variable's acceleration [rad/s^2 or
 /// m/s^2] and has no error history (docs/theory.md, (F3'')): where the estimate (T12), run across the jump with equal
 /// steps, would find the error acceptable, |jump| h^2 / 24 = floor + error_tol h peak_rate (the variable's own peak

@@ -303,11 +303,12 @@ StopSample RigidStop::Sample(const State& state, const StepContext&) const {
 }
 
 ElasticStop::ElasticStop(const StopSpec& spec, int variable, int variable_unknown, int slot, const SolverSpec& solver,
-                         double length_scale)
+                         double length_scale, bool algebraic)
     : JointStop(spec, variable, slot, solver),
       law_(spec),
       steps_per_contact_(spec.steps_per_contact),
-      touch_stiffness_(law_.Stiffness(kTouchApproach * length_scale)) {
+      touch_stiffness_(law_.Stiffness(kTouchApproach * length_scale)),
+      algebraic_(algebraic) {
   unknowns_ = {variable_unknown};
 }
 
@@ -325,8 +326,29 @@ double ElasticStop::StaticPosition(double q, double dq) const {
 double ElasticStop::ReferenceSpeed(const StepContext& ctx) const {
   const VariableStep& q = (*ctx.variables)[variable()];
   const double remembered = ctx.start->effects[slot()].reference;
-  const double speed = Approach(q.q_i) > 0 ? remembered : -GapRate(q.qdot_i);
+  const double speed = Approach(q.q_i) > 0 ? remembered : -GapRate(Rates(ctx).start);
   return std::max(speed, kMinReferenceSpeed);
+}
+
+ElasticStop::JudgedRates ElasticStop::Rates(const StepContext& ctx) const {
+  const VariableStep& q = (*ctx.variables)[variable()];
+  const State& start = *ctx.start;
+  JudgedRates rates;
+  rates.step = (q.q_f - q.q_i) / ctx.h;
+  rates.start = q.qdot_i;
+  for (size_t k = 0; k < rates.before.size(); ++k) {
+    rates.before[k] = start.mean_qdot[k].size() > variable() ? start.mean_qdot[k][variable()] : 0.0;
+  }
+  if (!algebraic_ || start.history_steps < 3) return rates;
+  // The step ends carry an alternating error +-x (x at this step's start): the mean rates of the steps before carry
+  // 2x/h, -2x/h, 2x/h, and this step, whose midpoint equations turn it around, -2x/h.
+  const std::array<double, 3>& h = start.recent_h;
+  const double x = AlternatingOffset(rates.before[0], rates.before[1], rates.before[2], h);
+  rates.step += 2 * x / ctx.h;
+  for (size_t k = 0; k < rates.before.size(); ++k) rates.before[k] -= (k % 2 == 0 ? 2 : -2) * x / h[k];
+  // The end rates carry the mode's velocity, 4x/h a step and more: the start's rate from the freed mean rates.
+  rates.start = rates.before[0] + 0.5 * h[0] * MeanRateDerivative(rates.before[0], rates.before[1], h[0], h[1]);
+  return rates;
 }
 
 ElasticStop::StepForce ElasticStop::Evaluate(const StepContext& ctx) const {
@@ -348,7 +370,7 @@ ElasticStop::StepForce ElasticStop::Evaluate(const StepContext& ctx) const {
     // approaches. At the end point the Hunt-Crossley factor reads the end rate, which gives the damping part.
     const double factor = ctx.mode == AnalysisMode::kEndPoint ? 1.0 + chi * -GapRate(q.qdot_f) : 1.0;
     if (factor <= 0) return f;
-    f.force = f.elastic * factor;
+    f.force = f.damped = f.elastic * factor;
     const double stiffness = ctx.mode == AnalysisMode::kStatic ? StaticStiffness(f.a_f) : 2.0 * d_elastic;
     f.d_dq_f = stiffness * factor * da_dq;
     f.d_dqdot_f = ctx.mode == AnalysisMode::kEndPoint ? f.elastic * chi * da_dq : 0.0;
@@ -357,8 +379,17 @@ ElasticStop::StepForce ElasticStop::Evaluate(const StepContext& ctx) const {
   // Hunt-Crossley factor, never pulling (it stays positive over an exact impact: 1 - alpha_e e > 0).
   const double factor = 1.0 + chi * (f.a_f - f.a_i) / ctx.h;
   if (factor <= 0 || f.elastic == 0) return f;
-  f.force = f.elastic * factor;
+  f.damped = f.elastic * factor;
   f.d_dq_f = (d_elastic * factor + f.elastic * chi / ctx.h) * da_dq;
+  // The energy-decaying scheme's dissipation of the stop's stretch, as springs and beams have it ("High-frequency
+  // damping and rho_inf"): alpha times the law's stiffness at the step's start approach (at touch from an open gap:
+  // the linear law's k, Hertz's 0) times the approach's change less the lagged one. Its work is >= 0 where the
+  // variable's alpha is on (the scheme's check); the force still never pulls.
+  const double stiffness = q.alpha * law_.Stiffness(std::max(f.a_i, 0.0));
+  const double scheme = stiffness * (f.a_f - f.a_i + GapRate(q.dq_lagged));
+  f.force = std::max(f.damped + scheme, 0.0);
+  if (f.force > 0) f.d_dq_f += stiffness * da_dq;
+  else f.d_dq_f = 0;
   return f;
 }
 
@@ -386,10 +417,11 @@ void ElasticStop::AddEnergy(const State& state, const Vec3&, EnergyTally* tally)
 
 void ElasticStop::AddStepWork(const StepContext& ctx, StepWork* work) const {
   const StepForce f = Evaluate(ctx);
-  work->dissipated += (f.force - f.elastic) * (f.a_f - f.a_i);
+  work->dissipated += (f.damped - f.elastic) * (f.a_f - f.a_i);
+  work->numerical += (f.force - f.damped) * (f.a_f - f.a_i);
 }
 
-ElasticStop::Onset ElasticStop::ContactOnset(const StepContext& ctx) const {
+ElasticStop::Onset ElasticStop::ContactOnset(const StepContext& ctx, const JudgedRates& rates) const {
   Onset onset;
   const State& start = *ctx.start;
   const VariableStep& q = (*ctx.variables)[variable()];
@@ -401,7 +433,7 @@ ElasticStop::Onset ElasticStop::ContactOnset(const StepContext& ctx) const {
   // The two steps before that one were free of the contact: their mean rates, which carry no alternating mode of the
   // end rates (T12), give the joint's acceleration then and its rate at the start of the step that closed the gap.
   if (step < 0 || start.history_steps < step + 2) return onset;
-  const double near = start.mean_qdot[step][variable()], far = start.mean_qdot[step + 1][variable()];
+  const double near = rates.before[step], far = rates.before[step + 1];
   const double h_near = start.recent_h[step];
   onset.step = step;
   onset.acceleration = MeanRateDerivative(near, far, h_near, start.recent_h[step + 1]);
@@ -409,10 +441,9 @@ ElasticStop::Onset ElasticStop::ContactOnset(const StepContext& ctx) const {
   return onset;
 }
 
-double ElasticStop::MeanRateChange(const StepContext& ctx, const Onset& onset) const {
-  const VariableStep& q = (*ctx.variables)[variable()];
+double ElasticStop::MeanRateChange(const StepContext& ctx, const Onset& onset, const JudgedRates& rates) const {
   const State& start = *ctx.start;
-  const double rate = (q.q_f - q.q_i) / ctx.h;
+  const double rate = rates.step;
   // In the step that closes the gap the rate changes from the one the motion before brought it to: the mean rate is
   // the mean of the end rates. (The difference of this step's mean rate from the previous one's, scaled from their
   // span to this step, spreads a change that happens in this step over a previous step that may be far longer: a
@@ -423,12 +454,11 @@ double ElasticStop::MeanRateChange(const StepContext& ctx, const Onset& onset) c
   // (h + h_prev)/2, scaled to one step: unlike end rates they carry no alternating mode of the trapezoidal
   // relation (docs/theory.md, (T12)), which after a stick-slip transition can be as large as the budget whatever
   // the step.
-  if (start.mean_qdot[0].size() == 0) return 2.0 * (rate - q.qdot_i);  // the first step
-  return (rate - start.mean_qdot[0][variable()]) * ctx.h / (0.5 * (ctx.h + start.h_prev));
+  if (start.mean_qdot[0].size() == 0) return 2.0 * (rate - rates.start);  // the first step
+  return (rate - rates.before[0]) * ctx.h / (0.5 * (ctx.h + start.h_prev));
 }
 
-double ElasticStop::OnsetError(const StepContext& ctx, const Onset& onset) const {
-  const VariableStep& q = (*ctx.variables)[variable()];
+double ElasticStop::OnsetError(const StepContext& ctx, const Onset& onset, const JudgedRates& judged) const {
   const State& start = *ctx.start;
   // The estimate (T12) on the mean rates of this step and the two before it, where the steps before the contact
   // are replaced by steps of the contact's own pace (the size of the step that closed the gap), their rates those
@@ -436,7 +466,7 @@ double ElasticStop::OnsetError(const StepContext& ctx, const Onset& onset) const
   // steps that may be a hundred times longer, and lets a step that crosses the whole contact pass.
   std::array<double, 3> h;
   std::array<double, 3> rates;
-  rates[0] = (q.q_f - q.q_i) / ctx.h;
+  rates[0] = judged.step;
   if (onset.step == 0) {
     h = {ctx.h, ctx.h, ctx.h};
     rates[1] = onset.rate - 0.5 * ctx.h * onset.acceleration;
@@ -444,7 +474,7 @@ double ElasticStop::OnsetError(const StepContext& ctx, const Onset& onset) const
   } else {
     const double h_closing = start.recent_h[0];
     h = {ctx.h, h_closing, h_closing};
-    rates[1] = start.mean_qdot[0][variable()];
+    rates[1] = judged.before[0];
     rates[2] = onset.rate - 0.5 * h_closing * onset.acceleration;
   }
   const double error = ctx.h * ctx.h * ctx.h * std::abs(MeanRateThirdDerivative(rates[0], rates[1], rates[2], h)) / 12;
@@ -456,8 +486,9 @@ StepLimit ElasticStop::Limit(const StepContext& ctx, const State& end) const {
   // Like the landing (C5), the rules of a step that begins open ask for no step shorter than dt_min, and one at dt_min
   // stands: the alternating mode a joint on a beam node carries changes its rate by a finite amount however short the
   // step, and its contact's first step, judged by the budget (C6) on that change, was cut below any dt_min. Inside a
-  // contact a step below dt_min is a contact too fast for it, and the run stops saying so.
-  if (Gap((*ctx.variables)[variable()].q_i) < 0) return limit;
+  // contact a step below dt_min is a contact too fast for it, and the run stops saying so; except on a variable that
+  // moves with an algebraic rotation, whose rules inside a contact see what is left of that error at every step size.
+  if (Gap((*ctx.variables)[variable()].q_i) < 0 && !algebraic_) return limit;
   if (limit.retry < ctx.h) {
     limit.retry = ctx.h > solver_.dt_min ? std::max(limit.retry, solver_.dt_min) : kInfinity;
   }
@@ -469,11 +500,12 @@ StepLimit ElasticStop::ContactLimit(const StepContext& ctx, const State& end) co
   StepLimit limit = JointStop::Limit(ctx, end);
   const StepForce f = Evaluate(ctx);
   if (f.a_i <= 0 && f.a_f <= 0) return limit;  // no contact in this step
-  const Onset onset = ContactOnset(ctx);
+  const JudgedRates rates = Rates(ctx);
+  const Onset onset = ContactOnset(ctx, rates);
   // Resolve the impact in steps_per_contact steps: over an impact the approach speed turns from v_in to
   // -e v_in along about half a period, changing by at most pi v_in / N per step of 1/N of it.
   const double budget = kPi * f.reference_speed / steps_per_contact_;
-  const double change = std::abs(GapRate(MeanRateChange(ctx, onset)));
+  const double change = std::abs(GapRate(MeanRateChange(ctx, onset, rates)));
   // A step that starts far from the stop, over which the approach speed changes by more than its start value, is
   // only redone to land just before the stop (C5): the speed at its start says nothing of the impact's, which sizes
   // the contact's steps from there. (Judged by it, a joint released at rest in its gap, whose first step crossed
@@ -486,8 +518,8 @@ StepLimit ElasticStop::ContactLimit(const StepContext& ctx, const State& end) co
   // With adaptive steps the local error test judges the first steps of a contact on the contact's own pace, as
   // (T12) judges the steps after them.
   if (solver_.adaptive && onset.step >= 0) {
-    const double error = OnsetError(ctx, onset);
-    const double factor = StepController::BoundedSizeFactor(error);
+    const double error = OnsetError(ctx, onset, rates);
+      const double factor = StepController::BoundedSizeFactor(error);
     if (error > 1) limit.retry = std::min(limit.retry, factor * ctx.h);
     else limit.next = std::min(limit.next, factor * ctx.h);
   }
@@ -514,7 +546,7 @@ void ElasticStop::Commit(const StepContext& ctx, const State& end, EffectState* 
   const StepForce f = Evaluate(ctx);
   if (effect->mode != kRetracted) effect->mode = f.a_f > 0 ? kContact : kOpen;
   if (f.a_i <= 0 && f.a_f > 0) effect->reference = f.reference_speed;
-  effect->work += (f.force - f.elastic) * (f.a_f - f.a_i);
+  effect->work += (f.damped - f.elastic) * (f.a_f - f.a_i);
   JointStop::Commit(ctx, end, effect);
 }
 

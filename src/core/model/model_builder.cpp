@@ -207,6 +207,13 @@ Model BuildModel(const ModelSpec& spec) {
   for (size_t b = 0; b < model.beams_.size(); ++b) {
     for (int node : model.beams_[b].nodes) model.node_beams_[node] = static_cast<int>(b);
   }
+  // A beam node's rotation is algebraic where nothing gives it inertia: no m_ii on its own lumped mass, no lumped mass
+  // off the axis (whose m |c|^2 is rotary inertia about the node).
+  model.algebraic_rotations_.assign(model.num_nodes_, false);
+  for (const RigidBody* body : model.rigid_bodies_) {
+    model.algebraic_rotations_[body->node()] = model.node_beams_[body->node()] >= 0 && body->inertia().isZero(0.0);
+  }
+  for (const OffsetMass& offset : offset_masses) model.algebraic_rotations_[offset.beam_node] = false;
 
   // The node a link-frame point belongs to, and the point relative to that node (node frame).
   auto locate = [&](const std::string& what, const std::string& link, const Vec3& p_B, int* node, Vec3* p_N) {
@@ -279,6 +286,7 @@ Model BuildModel(const ModelSpec& spec) {
   state.commands.resize(model.num_variables_);
   state.drive_rates = Eigen::VectorXd::Zero(model.num_variables_);
   model.driven_.assign(model.num_variables_, false);
+  model.on_algebraic_rotations_.assign(model.num_variables_, false);
 
   int variable = 0, multiplier = 0;
   VariableEffectsBuilder effect_builder(&model, first_variable_of);
@@ -291,6 +299,11 @@ Model BuildModel(const ModelSpec& spec) {
         attachment(joint.name, joint.child, joint.p_CJ, joint.R_CJ), kinematics, variable,
         model.variable_unknown(variable), multiplier, model.multiplier_unknown(multiplier));
     const int n_con = element->num_constraints();
+    bool on_algebraic = false;
+    for (const Joint::Attachment* side : {&element->parent(), &element->child()}) {
+      on_algebraic = on_algebraic || (side->node >= 0 && model.algebraic_rotations_[side->node]);
+    }
+    for (int k = 0; k < n_var; ++k) model.on_algebraic_rotations_[variable + k] = on_algebraic;
     model.joints_.push_back(element.get());
     model.elements_.push_back(std::move(element));
     for (int c = 0; c < n_con; ++c) {

@@ -116,7 +116,7 @@ void VariableEffectsBuilder::AddStop(const std::string& where, int v, StopSpec s
     ++*multiplier;
   } else {
     element = std::make_unique<ElasticStop>(stop, v, model_.variable_unknown(v), slot, model_.solver(),
-                                            model_.length_scale());
+                                            model_.length_scale(), model_.moves_with_algebraic_rotation(v));
   }
   const double q_initial = model_.initial_state_.q[v];
   if (element->Gap(q_initial) < -kInitialConstraintTolerance) {
