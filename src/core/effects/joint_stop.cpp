@@ -519,7 +519,7 @@ StepLimit ElasticStop::ContactLimit(const StepContext& ctx, const State& end) co
   // (T12) judges the steps after them.
   if (solver_.adaptive && onset.step >= 0) {
     const double error = OnsetError(ctx, onset, rates);
-      const double factor = StepController::BoundedSizeFactor(error);
+    const double factor = StepController::BoundedSizeFactor(error);
     if (error > 1) limit.retry = std::min(limit.retry, factor * ctx.h);
     else limit.next = std::min(limit.next, factor * ctx.h);
   }
