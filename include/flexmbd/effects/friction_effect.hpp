@@ -76,6 +76,9 @@ class FrictionEffect : public ModalEffect {
   bool has_sticking_row() const { return stick_multiplier_ >= 0; }
   /// The joint's rigid stops (their slots in State::effects), which hold q while in contact.
   void set_rigid_stop_slots(std::vector<int> slots) { rigid_stop_slots_ = std::move(slots); }
+  /// The model's rigid stops on other variables (their slots): a contact one of them begins in a step is an impact,
+  /// which can turn this joint's slip within the step however short it is (docs/theory.md (F2)).
+  void set_impact_stop_slots(std::vector<int> slots) { impact_stop_slots_ = std::move(slots); }
   /// The kinetic friction force mu_k rho N (or the constant torque) with the joint's reactions at `state`: what
   /// friction applies against a slide either way, so it jumps by twice this where the slide reverses [N m or N].
   double KineticForce(const State& state) const;
@@ -123,6 +126,8 @@ class FrictionEffect : public ModalEffect {
   // True when a rigid stop of the joint is in contact in these effect modes (a step's trial modes or a state's),
   // or the joint sticks in them with its sticking row left out as a repeat of the other constraints (F7).
   bool Held(const std::vector<EffectState>& effects) const;
+  // True when a rigid stop of another variable begins a contact in this step (an impact).
+  bool ImpactInStep(const StepContext& ctx) const;
   // The slip speed at the end of the step ctx that F4 captures and F5 bands judge [m/s]: the larger of the end
   // rate's and the mean rates' extrapolated to the end, u + (u - u_prev) h / (h + h_prev), u = dq / h at the
   // mid-step. After a step that left an unresolved mode's end rate, v_f = 2 u - v_i may be small while the
@@ -148,6 +153,7 @@ class FrictionEffect : public ModalEffect {
   int stick_multiplier_;       ///< -1 when the law has none
   int local_joint_multipliers_;  ///< local index of the joint's first position multiplier
   std::vector<int> rigid_stop_slots_;
+  std::vector<int> impact_stop_slots_;
 };
 
 }  // namespace flexmbd

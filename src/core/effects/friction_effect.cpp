@@ -99,6 +99,12 @@ bool FrictionEffect::Held(const std::vector<EffectState>& effects) const {
                      [&](int slot) { return effects[slot].mode == JointStop::kContact; });
 }
 
+bool FrictionEffect::ImpactInStep(const StepContext& ctx) const {
+  return std::any_of(impact_stop_slots_.begin(), impact_stop_slots_.end(), [&](int slot) {
+    return (*ctx.effects)[slot].mode == JointStop::kContact && ctx.start->effects[slot].mode != JointStop::kContact;
+  });
+}
+
 bool FrictionEffect::BreakingAway(const StepContext& ctx) const {
   return ctx.start->effects[slot()].mode == kSticking && TrialMode(ctx) != kSticking;
 }
@@ -314,8 +320,11 @@ StepLimit FrictionEffect::Limit(const StepContext& ctx, const State& end) const 
       return limit;
     }
   }
-  if (Direction(TrialMode(ctx)) * v_f < 0 && !BreakingAway(ctx)) {
-    // Redo the step to end just before the slip stops (linear in the rate), where it can stick gently.
+  // Redo the step to end just before the slip stops (linear in the rate), where it can stick gently; not where an
+  // impact elsewhere turns it: a rigid stop's contact step reverses the motion whatever its length, and the landings
+  // fell below any dt_min (a free four-bar's sliding rocker when its crank struck its stop, explore6). The step keeps
+  // the slide's mode, and the next one starts sliding the way the joint then moves (ReviseMode).
+  if (Direction(TrialMode(ctx)) * v_f < 0 && !BreakingAway(ctx) && !ImpactInStep(ctx)) {
     limit.retry = kEventLanding * ctx.h * std::abs(v_i) / (std::abs(v_i) + std::abs(v_f));
     return limit;
   }

@@ -323,6 +323,7 @@ Model BuildModel(const ModelSpec& spec) {
     }
     variable += n_var;
   }
+  effect_builder.LinkImpactStops();
 
   for (const OffsetMass& offset : offset_masses) {
     JointSpec fixed;

@@ -131,6 +131,18 @@ void VariableEffectsBuilder::AddStop(const std::string& where, int v, StopSpec s
   model_.elements_.push_back(std::move(element));
 }
 
+void VariableEffectsBuilder::LinkImpactStops() {
+  for (const auto& element : model_.elements_) {
+    auto* friction = dynamic_cast<FrictionEffect*>(element.get());
+    if (friction == nullptr) continue;
+    std::vector<int> others;
+    for (const JointStop* stop : model_.stop_effects_) {
+      if (stop->rigid() && stop->variable() != friction->variable()) others.push_back(stop->slot());
+    }
+    friction->set_impact_stop_slots(std::move(others));
+  }
+}
+
 void VariableEffectsBuilder::AddFriction(const std::string& where, const JointSpec& joint, int v,
                                          const FrictionSpec& friction, int* multiplier) {
   ValidateFriction(where, friction, joint.type);

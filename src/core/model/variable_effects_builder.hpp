@@ -28,6 +28,10 @@ class VariableEffectsBuilder {
   void Add(const std::string& where, const JointSpec& joint, int v, const VariableEffectsSpec& effects,
            int* multiplier);
 
+  /// After every joint's effects: tells each friction the rigid stops on the other variables, whose impacts can turn
+  /// its joint's slip within any step (FrictionEffect::set_impact_stop_slots).
+  void LinkImpactStops();
+
  private:
   void AddDrive(const std::string& where, int v, const TimeFunctionSpec& law, int* multiplier);
   void AddHold(const std::string& where, int v, const VariableEffectsSpec& effects, int* multiplier);

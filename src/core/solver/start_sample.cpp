@@ -3,6 +3,7 @@
 #include <type_traits>
 #include <vector>
 
+#include "flexmbd/effects/joint_stop.hpp"
 #include "flexmbd/effects/modal_effect.hpp"
 #include "flexmbd/model/model.hpp"
 #include "flexmbd/solver/sparse_system.hpp"
@@ -39,8 +40,12 @@ OutputSample VanishingStepSample(const Model& model, SparseSystem* system, const
     }
     if (!revised) break;
   }
+  // The stops read the modes the step took: a joint that a load presses onto a stop it touches at rest is in contact
+  // from the start, its force the step's multiplier (the state itself has the stop open). A joint's friction keeps
+  // the state's mode: `sticking` says whether it is stuck at the instant, and one at rest that breaks away is.
   State with_forces = state;
   with_forces.lambda = *ctx->lambda;
+  for (const JointStop* stop : model.stop_effects()) with_forces.effects[stop->slot()].mode = (*modes)[stop->slot()].mode;
   return MakeSample(model, with_forces, *ctx, 0.0, 0);
 }
 }  // namespace
@@ -59,9 +64,14 @@ OutputSample StartSample(const Model& model, const State& state, double h) {
   OutputSample start = single;
   MixLinearQuantities(single, twice, -1.0, &start);
   auto extrapolated = [](const auto& now, const auto& later) -> std::decay_t<decltype(now)> { return 2.0 * now - later; };
+  // A stop never pulls (docs/theory.md (C2)), so its force at the start is >= 0; the line can cross zero where the force
+  // is not linear in the step: an elastic stop touched at rest has forces that grow as h^2 from 0, extrapolated to
+  // -2 c h^2 (-2.5e-5 N for a slider pressed by 5 N onto a stop of 1e5 N/m). Its error is that O(h^2) term.
   for (size_t k = 0; k < start.stops.size(); ++k) {
-    start.stops[k].force = extrapolated(single.stops[k].force, twice.stops[k].force);
-    start.stops[k].torque = extrapolated(single.stops[k].torque, twice.stops[k].torque);
+    const double force = extrapolated(single.stops[k].force, twice.stops[k].force);
+    const bool pulls = force < 0.0;
+    start.stops[k].force = pulls ? 0.0 : force;
+    start.stops[k].torque = pulls ? 0.0 : extrapolated(single.stops[k].torque, twice.stops[k].torque);
   }
   for (size_t k = 0; k < start.friction.size(); ++k) {
     start.friction[k].torque = extrapolated(single.friction[k].torque, twice.friction[k].torque);
