@@ -56,6 +56,19 @@ void ReadRetraction(const Field& field, const VariableUnits& units, StopSpec::Re
   }
 }
 
+// Why the URDF <limit> gives `variable` of `joint` no stops, or "" where it does: it bounds variable 0, in the unit of
+// the URDF's type (LeaveOutLimitOfAnotherUnit).
+std::string WhyNoLimit(const JointSpec& joint, int variable, const VariableUnits& units) {
+  const std::string joint_name = "joint '" + joint.name + "'";
+  if (joint.limit_of_another_unit) {
+    return "the URDF <limit> of " + joint_name + " is not in " + units.position + ", the unit of " +
+           units.measure.description;
+  }
+  if (!joint.has_limits) return joint_name + " has no URDF <limit>";
+  if (variable != 0) return "the URDF <limit> of " + joint_name + " bounds variable 0, not " + units.measure.description;
+  return "";
+}
+
 // One backlash block: its lower and/or upper stop.
 std::vector<StopSpec> ReadBlock(const Field& block, const JointSpec& joint, int variable, const VariableUnits& units,
                                 const std::string& suffix, std::vector<std::string>* warnings) {
@@ -69,9 +82,9 @@ std::vector<StopSpec> ReadBlock(const Field& block, const JointSpec& joint, int 
     if (given) WarnStopOutsideUrdfLimit(*given, value, joint, variable, warnings);
   }
   const bool from_urdf = !has_lower && !has_upper;
-  if (from_urdf && !joint.has_limits) {
-    block.Fail("gives no stop position and joint '" + joint.name +
-               "' has no URDF <limit>; expected lower and/or upper (or lower_deg, upper_deg)");
+  const std::string no_limit = WhyNoLimit(joint, variable, units);
+  if (from_urdf && !no_limit.empty()) {
+    block.Fail("gives no stop position and " + no_limit + "; expected lower and/or upper (or lower_deg, upper_deg)");
   }
   if ((from_urdf || (has_lower && has_upper)) && !(lower < upper)) {
     block.Fail("lower " + FormatNumber(lower) + " is not below upper " + FormatNumber(upper) + " [" + units.position +

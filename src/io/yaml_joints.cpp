@@ -299,7 +299,9 @@ void ReadJoint(const Field& field, JointSpec* joint, const RunBounds& run) {
       }
     }
   } else {
+    const JointType urdf_type = joint->type;
     ReadJointGeometry(field, joint);
+    LeaveOutLimitOfAnotherUnit(field.Child("type"), urdf_type, joint, run.warnings);
   }
   ReadVariables(field, joint, run);
 }
