@@ -75,12 +75,11 @@ std::vector<StopSpec> ReadBlock(const Field& block, const JointSpec& joint, int 
   CheckKeys(block, kBacklashKeys);
   const Quantity position{"a stop position", Bound::kAny, units.position};
   double lower = joint.limit_lower, upper = joint.limit_upper;
-  const bool has_lower = OverlayMeasure(block, "lower", position, units.measure, &lower);
-  const bool has_upper = OverlayMeasure(block, "upper", position, units.measure, &upper);
-  for (const auto& [key, value] : {std::make_pair("lower", lower), std::make_pair("upper", upper)}) {
-    const std::optional<UnitField> given = FindUnitField(block, key, units.position, units.measure);
-    if (given) WarnStopOutsideUrdfLimit(*given, value, joint, variable, warnings);
-  }
+  const std::optional<UnitField> given_lower = OverlayMeasure(block, "lower", position, units.measure, &lower);
+  const std::optional<UnitField> given_upper = OverlayMeasure(block, "upper", position, units.measure, &upper);
+  if (given_lower) WarnStopOutsideUrdfLimit(*given_lower, lower, joint, variable, warnings);
+  if (given_upper) WarnStopOutsideUrdfLimit(*given_upper, upper, joint, variable, warnings);
+  const bool has_lower = given_lower.has_value(), has_upper = given_upper.has_value();
   const bool from_urdf = !has_lower && !has_upper;
   const std::string no_limit = WhyNoLimit(joint, variable, units);
   if (from_urdf && !no_limit.empty()) {
