@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "flexmbd/io/message_text.hpp"
+#include "flexmbd/io/yaml_sections.hpp"
 #include "flexmbd/math/time_function.hpp"
 
 namespace flexmbd {
@@ -46,6 +47,22 @@ std::string DegreesHint(const UnitField& field, double position, const JointSpec
   return "; if " + field.field.Text() + " is in degrees, write " + key + "_deg: " + field.field.Text();
 }
 }  // namespace
+
+void LeaveOutLimitOfAnotherUnit(const Field& type, JointType urdf_type, JointSpec* joint,
+                                std::vector<std::string>* warnings) {
+  if (!joint->has_limits || NumJointVariables(joint->type) == 0) return;
+  // A URDF <limit> is read on revolute and prismatic joints only (urdf_reader.cpp).
+  const std::string limit_unit = urdf_type == JointType::kRevolute ? "rad" : "m";
+  const std::string unit = UnitsOf(*joint, 0).position;
+  if (unit == limit_unit) return;
+  warnings->push_back(type.Message(
+      "the URDF's " + std::string(JointTypeName(urdf_type)) + " joint '" + joint->name + "' made " +
+      JointTypeName(joint->type) + ": its <limit> [" + FormatNumber(joint->limit_lower) + ", " +
+      FormatNumber(joint->limit_upper) + "] is in " + limit_unit + ", variable 0 of a " + JointTypeName(joint->type) +
+      " joint in " + unit + "; the <limit> is left out (no stops from it, no values checked against it)"));
+  joint->has_limits = false;
+  joint->limit_of_another_unit = true;
+}
 
 void WarnInitialOutsideUrdfLimit(const UnitField& position_field, double position, const JointSpec& joint,
                                  int variable, std::vector<std::string>* warnings) {

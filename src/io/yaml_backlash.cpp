@@ -56,22 +56,34 @@ void ReadRetraction(const Field& field, const VariableUnits& units, StopSpec::Re
   }
 }
 
+// Why the URDF <limit> gives `variable` of `joint` no stops, or "" where it does: it bounds variable 0, in the unit of
+// the URDF's type (LeaveOutLimitOfAnotherUnit).
+std::string WhyNoLimit(const JointSpec& joint, int variable, const VariableUnits& units) {
+  const std::string joint_name = "joint '" + joint.name + "'";
+  if (joint.limit_of_another_unit) {
+    return "the URDF <limit> of " + joint_name + " is not in " + units.position + ", the unit of " +
+           units.measure.description;
+  }
+  if (!joint.has_limits) return joint_name + " has no URDF <limit>";
+  if (variable != 0) return "the URDF <limit> of " + joint_name + " bounds variable 0, not " + units.measure.description;
+  return "";
+}
+
 // One backlash block: its lower and/or upper stop.
 std::vector<StopSpec> ReadBlock(const Field& block, const JointSpec& joint, int variable, const VariableUnits& units,
                                 const std::string& suffix, std::vector<std::string>* warnings) {
   CheckKeys(block, kBacklashKeys);
   const Quantity position{"a stop position", Bound::kAny, units.position};
   double lower = joint.limit_lower, upper = joint.limit_upper;
-  const bool has_lower = OverlayMeasure(block, "lower", position, units.measure, &lower);
-  const bool has_upper = OverlayMeasure(block, "upper", position, units.measure, &upper);
-  for (const auto& [key, value] : {std::make_pair("lower", lower), std::make_pair("upper", upper)}) {
-    const std::optional<UnitField> given = FindUnitField(block, key, units.position, units.measure);
-    if (given) WarnStopOutsideUrdfLimit(*given, value, joint, variable, warnings);
-  }
+  const std::optional<UnitField> given_lower = OverlayMeasure(block, "lower", position, units.measure, &lower);
+  const std::optional<UnitField> given_upper = OverlayMeasure(block, "upper", position, units.measure, &upper);
+  if (given_lower) WarnStopOutsideUrdfLimit(*given_lower, lower, joint, variable, warnings);
+  if (given_upper) WarnStopOutsideUrdfLimit(*given_upper, upper, joint, variable, warnings);
+  const bool has_lower = given_lower.has_value(), has_upper = given_upper.has_value();
   const bool from_urdf = !has_lower && !has_upper;
-  if (from_urdf && !joint.has_limits) {
-    block.Fail("gives no stop position and joint '" + joint.name +
-               "' has no URDF <limit>; expected lower and/or upper (or lower_deg, upper_deg)");
+  const std::string no_limit = WhyNoLimit(joint, variable, units);
+  if (from_urdf && !no_limit.empty()) {
+    block.Fail("gives no stop position and " + no_limit + "; expected lower and/or upper (or lower_deg, upper_deg)");
   }
   if ((from_urdf || (has_lower && has_upper)) && !(lower < upper)) {
     block.Fail("lower " + FormatNumber(lower) + " is not below upper " + FormatNumber(upper) + " [" + units.position +

@@ -283,13 +283,13 @@ std::optional<UnitField> FindUnitField(const Field& map, const std::string& key,
   return std::nullopt;
 }
 
-bool OverlayMeasure(const Field& map, const std::string& key, Quantity quantity, const Measure& measure,
-                    double* value) {
+std::optional<UnitField> OverlayMeasure(const Field& map, const std::string& key, Quantity quantity,
+                                        const Measure& measure, double* value) {
   const std::optional<UnitField> found = FindUnitField(map, key, quantity.unit, measure);
-  if (!found) return false;
+  if (!found) return std::nullopt;
   quantity.unit = found->unit;
   *value = ReadNumber(found->field, quantity, found->to_si);
-  return true;
+  return found;
 }
 
 }  // namespace io

@@ -173,10 +173,10 @@ void ReadInitial(const Field& initial, const Field& drive, const VariableUnits& 
   double& position = joint->initial_position[variable];
   double& velocity = joint->initial_velocity[variable];
   const std::string rate_unit = units.position + "/s";
-  const bool position_given = OverlayMeasure(
-      initial, "position", Quantity{"an initial position", Bound::kAny, units.position}, units.measure, &position);
-  const bool velocity_given = OverlayMeasure(
-      initial, "velocity", Quantity{"an initial velocity", Bound::kAny, rate_unit}, units.measure, &velocity);
+  const Quantity position_quantity{"an initial position", Bound::kAny, units.position};
+  const Quantity velocity_quantity{"an initial velocity", Bound::kAny, rate_unit};
+  const bool position_given = OverlayMeasure(initial, "position", position_quantity, units.measure, &position).has_value();
+  const bool velocity_given = OverlayMeasure(initial, "velocity", velocity_quantity, units.measure, &velocity).has_value();
   joint->position_set[variable] = position_given;
   joint->velocity_set[variable] = velocity_given;
   if (!drive.present()) return;
@@ -299,7 +299,9 @@ void ReadJoint(const Field& field, JointSpec* joint, const RunBounds& run) {
       }
     }
   } else {
+    const JointType urdf_type = joint->type;
     ReadJointGeometry(field, joint);
+    LeaveOutLimitOfAnotherUnit(field.Child("type"), urdf_type, joint, run.warnings);
   }
   ReadVariables(field, joint, run);
 }

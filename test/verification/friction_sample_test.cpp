@@ -15,6 +15,8 @@
 #include "flexmbd/model/model.hpp"
 #include "flexmbd/solver/simulation.hpp"
 #include "friction_bound.hpp"
+#include "runner_output.hpp"
+#include "../integration/helpers/csv_table.hpp"
 
 namespace flexmbd {
 namespace friction_sample_test {
@@ -86,6 +88,43 @@ TEST(FrictionSamples, AJointSampledStuckIsAtRest) {
     EXPECT_LE(std::abs(kRadius * s.velocity[kElbow]), 2.0 * run.v0) << "t = " << s.t;
   }
   EXPECT_GT(stuck, 5);  // measured 13
+}
+
+// The stick-slip oscillator of test/data (a 1 kg slider on a spring of 100 N/m, pulled by a force ramp of 10 N/s;
+// mu_s 0.4, mu_k 0.3 on its weight, v0 1e-5 m/s) through the runner, sampled at 100 kHz between the steps: each
+// sample's friction keeps Coulomb's law for the mode it shows, sliding at mu_k N (to the round-off of one product,
+// 1e-9 relative, as above) and stuck within mu_s N. On fixed 9 ms steps the slip that ends its first slide reverses
+// within a step at 1.9e-5 m/s, under 2 v0, and that step of 2.5e-5 s, landed on the reversal, is solved stuck (F2):
+// a capture, which begins sliding. (Adaptive steps slow the slip to v0 at a step's end (F5), so it sticks from the
+// next step on (F4): no capture step.) Before, the capture step's samples showed sliding with its sticking force, the
+// mean of the kinetic force and of the holding force after the slip stopped: 0.2789 N per N of normal force at
+// 0.86598 and 0.86599 s, against 0.3.
+TEST(FrictionSamples, ASampleInsideAStepThatCapturesASlipShowsTheStepsModeAndForce) {
+  constexpr double kMuS = 0.4, kMuK = 0.3;
+  const std::string csv = testing::TempDir() + "stick_slip_samples.csv";
+  const std::string yaml =
+      "joints:\n  slider:\n    spring: {k: 100.0}\n    friction: {mu_s: 0.4, mu_k: 0.3, v0: 1.0e-5}\n"
+      "solver: {t_end: 0.9, adaptive: false, dt: 0.009}\noutput: {rate_hz: 100000, csv: " + csv +
+      "}\nloads:\n  - {body: mass, force: [10.0, 0.0, 0.0], scale: {law: linear_ramp, value: 10.0, duration: 10.0}}\n";
+  test::RunnerOutput("test/data/urdf/stick_slip.urdf", yaml, "stick_slip_samples");
+  const test::CsvTable table = test::ReadCsv(csv);
+  const size_t sticking = table.Column("friction.slider.sticking"), torque = table.Column("friction.slider.torque");
+  const size_t normal = table.Column("friction.slider.normal_force"), slip = table.Column("friction.slider.slip_velocity");
+  int slides = 0, captured = 0;
+  for (size_t k = 1; k < table.rows.size(); ++k) {
+    const std::vector<double>& row = table.rows[k];
+    const double t = row[0];
+    if (row[sticking] == 0.0) {
+      ++slides;
+      EXPECT_NEAR(std::abs(row[torque]), kMuK * row[normal], 1e-9 * row[normal]) << "t = " << t;
+      continue;
+    }
+    EXPECT_LE(std::abs(row[torque]), kMuS * row[normal] * (1.0 + 1e-9)) << "t = " << t;
+    // Stuck after a sliding row with a slip left: inside the capture step.
+    if (table.rows[k - 1][sticking] == 0.0 && row[slip] != 0.0) ++captured;
+  }
+  EXPECT_GT(slides, 40000);  // measured 47,370: the slide from 0.392 s to 0.866 s
+  EXPECT_EQ(captured, 1);    // the first of the capture step's two samples
 }
 
 }  // namespace friction_sample_test

@@ -12,6 +12,13 @@
 namespace flexmbd {
 namespace io {
 
+/// Leaves out the URDF <limit> of `joint` (has_limits false, limit_of_another_unit true) where the YAML `type` gave
+/// its variable 0 the other unit than the URDF's type did (radians against metres): the limit's values would be read
+/// in the wrong unit, in the warnings below and as default stops. Adds to `warnings` a line naming the type field,
+/// the joint, both types and both units. `urdf_type` is the joint's type before the YAML's.
+void LeaveOutLimitOfAnotherUnit(const Field& type, JointType urdf_type, JointSpec* joint,
+                                std::vector<std::string>* warnings);
+
 /// Adds to `warnings` a line naming `position_field` (initial.position or position_deg) if `position` [rad or m], the
 /// initial position of `variable` of `joint`, lies outside the joint's URDF <limit>. Only for variable 0 of a joint
 /// with a <limit>, no stops and no drive from the YAML: the model checks a start against the stops, and a drive's

@@ -144,8 +144,9 @@ struct UnitField {
 std::optional<UnitField> FindUnitField(const Field& map, const std::string& key, const std::string& si_unit,
                                        const Measure& measure);
 
-/// Overwrites *value (SI) with `key` or `key_deg`, whichever is present; returns false if neither is.
-bool OverlayMeasure(const Field& map, const std::string& key, Quantity quantity, const Measure& measure, double* value);
+/// Overwrites *value (SI) with `key` or `key_deg`, whichever is present; returns that field, nullopt if neither is.
+std::optional<UnitField> OverlayMeasure(const Field& map, const std::string& key, Quantity quantity,
+                                        const Measure& measure, double* value);
 
 }  // namespace io
 }  // namespace flexmbd

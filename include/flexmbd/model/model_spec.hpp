@@ -137,6 +137,9 @@ struct JointSpec {
   Vec3 initial_angular_velocity = Vec3::Zero();  ///< [rad/s]
   bool has_limits = false;                      ///< URDF <limit> given (used by backlash without angles)
   double limit_lower = 0.0, limit_upper = 0.0;  ///< URDF <limit> lower and upper [rad or m]
+  /// The URDF gave a <limit> in the other unit than the YAML type's variable 0 (a revolute's radians on a joint made
+  /// prismatic): left out, has_limits is false (io::LeaveOutLimitOfAnotherUnit)
+  bool limit_of_another_unit = false;
   /// A joint of YAML `closures:` that closes a kinematic loop: not part of the tree that places the bodies;
   /// its initial variables are those that put its child frame where the tree placed it (docs/config.md).
   bool closes_loop = false;

@@ -27,6 +27,9 @@ struct FrictionSample {
   double normal_force = 0;   ///< radial reaction plus preload [N]
   double slip_velocity = 0;  ///< relative velocity at the races, radius times the variable's rate [m/s]
   double work = 0;           ///< cumulative energy dissipated by this joint's friction [J]
+  /// The step that led to the sample held the joint by its sticking row, so its torque is the sticking force (a
+  /// capture's too, which begins the step sliding): what a sample inside the step says (not written to the sinks)
+  bool step_stuck = false;
 };
 
 /// One station of output.beam_stations at a sample (docs/theory.md, "Station outputs").
@@ -90,7 +93,7 @@ OutputSample MakeSample(const Model& model, const State& state, const StepContex
 /// The sample at time t in [a.t, b.t] between two samples: linear (MixLinearQuantities), except the joint variables
 /// and beam stations' displacements (cubic Hermite from their end velocities), stations' rotations (on SO(3), at a
 /// constant rate from a's to b's) (docs/theory.md, "Station outputs"), contacts (the nearer sample's) and friction
-/// (the step's forces, b's).
+/// (the step's forces, b's, in the step's mode).
 OutputSample Interpolate(const OutputSample& a, const OutputSample& b, double t);
 
 /// Sets in *s the quantities of a sample that Interpolate takes linear in time, (1 - u) a + u b: velocities, efforts,

@@ -379,6 +379,7 @@ FrictionSample FrictionEffect::Sample(const State& state, const StepContext& ste
   s.work = effect.work;
   s.sticking = spec_.law != FrictionSpec::Law::kRegularised && effect.mode == kSticking;
   s.torque = AppliedForce(step);
+  s.step_stuck = Constrained(step) && has_sticking_row();
   return s;
 }
 

@@ -156,12 +156,16 @@ OutputSample Interpolate(const OutputSample& a, const OutputSample& b, double t)
   s.position = HermiteAt(a.position, a.velocity, b.position, b.velocity, span, u);
   // Contacts are events, not smooth signals: the nearer sample's records stand.
   if (u < 0.5) s.stops = a.stops;
-  // Inside a step friction has the step's forces (b's) and is stuck where it is stuck at both ends.
+  // Inside a step friction has the step's forces (b's), and the mode they belong to: stuck where the step held the
+  // joint by its sticking row, or where it is stuck at both ends (held by a stop, (F7)). A capture step begins
+  // sliding, yet its force is the sticking multiplier, the mean of the kinetic force until the slip stops and of the
+  // holding force after (F3), which the step does not separate: its samples are stuck, as its solution is, at the
+  // slip speed of at most 2 v0 that the capture allows (F2). Labelled sliding, they showed that force below mu_k rho N.
   if (u < 1.0) {
     for (size_t k = 0; k < s.friction.size(); ++k) {
       const FrictionSample &x = a.friction[k], &y = b.friction[k];
       FrictionSample& z = s.friction[k];
-      z.sticking = x.sticking && y.sticking;
+      z.sticking = y.step_stuck || (x.sticking && y.sticking);
       z.slip_velocity = blend(x.slip_velocity, y.slip_velocity);
       z.work = blend(x.work, y.work);
     }

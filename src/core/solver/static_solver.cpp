@@ -68,13 +68,13 @@ bool ReleaseFromRest(const Model& model, const State& start, State* motion) {
   return true;
 }
 
+// `released_motion` is the model's motion released from rest at *start, null if it has none (ReleaseFromRest).
 bool HoldPushedJoints(const Model& model, const StaticIncrement& increment_rule, const std::vector<bool>& released,
-                      State* start) {
+                      const State* released_motion, State* start) {
   // Without accelerations the nearest rigid stop is closed whichever way it lies, and if it pulls, opened again and
   // released, and the next nearest closed.
-  State released_motion;
-  const bool directed = ReleaseFromRest(model, *start, &released_motion);
-  const Eigen::VectorXd& accelerations = released_motion.qddot_prev;
+  const bool directed = released_motion != nullptr;
+  const Eigen::VectorXd& accelerations = directed ? released_motion->qddot_prev : start->qddot_prev;  // read if directed
   std::vector<int> nearest(model.num_variables(), -1);
   const std::vector<const JointStop*>& stops = model.stop_effects();
   for (size_t k = 0; k < stops.size(); ++k) {
@@ -106,8 +106,8 @@ bool HoldPushedJoints(const Model& model, const StaticIncrement& increment_rule,
   if (move > 0) {
     Eigen::VectorXd increment = Eigen::VectorXd::Zero(model.num_unknowns());
     for (int k = 0; k < model.num_nodes(); ++k) {
-      increment.segment<3>(model.node_unknown(k)) = move * released_motion.nodes[k].a_prev;
-      increment.segment<3>(model.node_unknown(k) + 3) = move * released_motion.nodes[k].alpha_prev;
+      increment.segment<3>(model.node_unknown(k)) = move * released_motion->nodes[k].a_prev;
+      increment.segment<3>(model.node_unknown(k) + 3) = move * released_motion->nodes[k].alpha_prev;
     }
     for (int v = 0; v < model.num_variables(); ++v) increment[model.variable_unknown(v)] = move * accelerations[v];
     // No residual: a move along the loads' own motion is downhill, and is only bounded in its turns.
@@ -167,16 +167,16 @@ void MarkPressedElasticStops(const Model& model, State* state) {
 }
 
 // The joint variable a singular iteration matrix left undetermined (its zero pivot) when only an open elastic stop
-// could hold it and the model released from rest has no accelerations to tell which one it rests on; else -1.
-int UndirectedVariable(const Model& model, const State& start, const NewtonReport& last) {
+// could hold it and the model released from rest at `start` has no accelerations to tell which one it rests on
+// (`directed` false, ReleaseFromRest); else -1.
+int UndirectedVariable(const Model& model, const State& start, const NewtonReport& last, bool directed) {
   const int v = last.singular_unknown - model.variable_unknown(0);
   if (last.singular_unknown < 0 || v < 0 || v >= model.num_variables() || model.driven(v)) return -1;
   const std::vector<const JointStop*>& stops = model.stop_effects();
   const bool elastic = std::any_of(stops.begin(), stops.end(), [&](const JointStop* stop) {
     return stop->variable() == v && !stop->rigid() && start.effects[stop->slot()].mode == JointStop::kOpen;
   });
-  State released_motion;
-  return elastic && !ReleaseFromRest(model, start, &released_motion) ? v : -1;
+  return elastic && !directed ? v : -1;
 }
 
 StaticResult SolveLoadSteps(const Model& model, SparseSystem* system, const std::vector<bool>& released,
@@ -235,16 +235,24 @@ StaticResult SolveStatic(const Model& model, SparseSystem* system, State* state)
   std::vector<bool> released(model.stop_effects().size(), false);
   const StaticIncrement increment_rule(model);
   StaticResult result;
+  // Whether the model released from rest at the last start has accelerations: HoldPushedJoints leaves a start it
+  // holds nothing in as it was, so the last release motion is the final start's.
+  bool directed = true;
   while (true) {
     *state = start;
     result = SolveLoadSteps(model, system, released, state);
-    const bool again = result.converged
-                           ? ReleasePullingStops(model, *state, &start, &released)
-                           : result.last.singular && HoldPushedJoints(model, increment_rule, released, &start);
+    bool again = false;
+    if (result.converged) {
+      again = ReleasePullingStops(model, *state, &start, &released);
+    } else if (result.last.singular) {
+      State released_motion;
+      directed = ReleaseFromRest(model, start, &released_motion);
+      again = HoldPushedJoints(model, increment_rule, released, directed ? &released_motion : nullptr, &start);
+    }
     if (!again) break;
   }
   if (result.converged) RefuseOutOfReach(model, initial, *state, &result);
-  if (result.last.singular) result.undirected_variable = UndirectedVariable(model, start, result.last);
+  if (result.last.singular) result.undirected_variable = UndirectedVariable(model, start, result.last, directed);
   return result;
 }
 
