@@ -123,14 +123,19 @@ class BeamStrainField {
 
   // The right pass's factors multiplied by a map's.
   Pass PassOf(const IncrementMap& map) const;
-  // Kz = sum_g (dq_g/dz)^T [H_g + E_g^T material_g E_g] (dq_g/dz), H_g the points' Hessians of stress . strain,
-  // and c = sum_g (dq_g/dz)^T E_g^T stress_g, the forces in z.
-  void LocalTangent(const PointVectors& stress, const std::array<Mat6, kMaxPoints>* material, Matrix* Kz,
-                    Vector* c) const;
+  // c = sum_g (dq_g/dz)^T E_g^T stress_g, the forces in z; Kz = sum_g (dq_g/dz)^T [H_g + E_g^T material_g E_g]
+  // (dq_g/dz), H_g the points' Hessians of stress . strain, if Kz is not null; Kz^T z_dot from vectors, without
+  // forming Kz, if z_dot is not null.
+  void LocalTangent(const PointVectors& stress, const std::array<Mat6, kMaxPoints>* material, Vector* c,
+                    Matrix* Kz, const Vector* z_dot = nullptr, Vector* Kz_transposed_z_dot = nullptr) const;
   // Kz = sum_g (dq_g/dz)^T E_g^T material_g E'_g (dq_g/dz), E' of right.
   Matrix LocalMaterialTangent(const BeamStrainField& right, const std::array<Mat6, kMaxPoints>& material) const;
   // K += sum_k c_k . d2 z_k / dp2 and the turn of the forces (dz/dp)^T c along R_k Exp(phi_k) (B12).
   void AddCurvature(const Vector& c, Matrix* K) const;
+  // Calls add(row, col, block) with the 3x3 blocks whose sum at (row, col) is AddCurvature's K, so that a
+  // caller may scale or apply them without a 6n x 6n matrix.
+  template <class Add>
+  void ForEachCurvatureBlock(const Vector& c, Add&& add) const;
   // sum_i stress_i d2 strain_i / dq2 (9 x 9).
   Mat9 PointHessian(const Point& p, const Vec6& stress) const;
   // d2 strain / dq2 along q_dot (6 x 9).
@@ -156,8 +161,6 @@ class BeamStrainField {
   Vector LocalRate(const Vector& v) const;
   // dq_g/dz z_dot.
   Eigen::Matrix<double, 9, 1> PointRate(int g, const Vector& z_dot) const;
-  // K += sum_k c_k . d2 z_k / dp2 for a covector c of z.
-  void AddLocalCoordinateHessian(const Vector& c, Matrix* K) const;
   // d2 z / dp2 along v (6n x 6n).
   Matrix LocalCoordinateSecondDerivative(const Vector& v) const;
 

@@ -217,9 +217,10 @@ BeamStrainField::Vector BeamStrainField::Gradient(const PointVectors& stress) co
 }
 
 void BeamStrainField::LocalTangent(const PointVectors& stress, const std::array<Mat6, kMaxPoints>* material,
-                                   Matrix* Kz, Vector* c) const {
-  Kz->setZero(num_dofs(), num_dofs());
+                                   Vector* c, Matrix* Kz, const Vector* z_dot, Vector* Kz_transposed_z_dot) const {
   c->setZero(num_dofs());
+  if (Kz != nullptr) Kz->setZero(num_dofs(), num_dofs());
+  if (z_dot != nullptr) Kz_transposed_z_dot->setZero(num_dofs());
   for (int g = 0; g < num_points(); ++g) {
     const Point& p = points_[g];
     *c += PointToLocal(g, p.E.transpose() * stress[g]);
@@ -228,25 +229,59 @@ void BeamStrainField::LocalTangent(const PointVectors& stress, const std::array<
       const Mat69 CE = (*material)[g] * p.E;
       H.noalias() += p.E.transpose().lazyProduct(CE);
     }
-    AddPointToLocal(g, H, Kz);
+    if (Kz != nullptr) AddPointToLocal(g, H, Kz);
+    if (z_dot != nullptr) *Kz_transposed_z_dot += PointToLocal(g, H.transpose() * PointRate(g, *z_dot));
   }
 }
 
-void BeamStrainField::AddCurvature(const Vector& c, Matrix* K) const {
-  AddLocalCoordinateHessian(c, K);
+template <class Add>
+void BeamStrainField::ForEachCurvatureBlock(const Vector& c, Add&& add) const {
+  const int n = shape_->num_nodes(), r = shape_->reference;
+  const int ur = 6 * r, phr = 6 * r + kRotation;
+  for (int k = 0; k < n; ++k) {
+    if (k == r) continue;
+    const Node& node = nodes_[k];
+    const int uk = 6 * k, phk = 6 * k + kRotation;
+    // y_k: second-order part -Skew(phi_r) R_r^T (u_k - u_r) + Skew(phi_r)^2 y_k / 2.
+    const Vec3 a = c.segment<3>(uk);
+    const Mat3 Sa = Skew(a) * R_ref_.transpose();
+    add(phr, uk, Sa);
+    add(phr, ur, Mat3(-(Sa)));
+    add(uk, phr, Sa.transpose());
+    add(ur, phr, Mat3(-(Sa.transpose())));
+    add(phr, phr, SymmetricPart(Skew(a) * node.skew_y));
+    // psi_k = Log(Q Exp(b)), b = c + phi_k + c x phi_k / 2, c = -Q^T phi_r (docs/theory.md, (B11)).
+    const Vec3 b = c.segment<3>(phk);
+    const Mat3& Tinv = node.calculus->inverse_tangent();
+    const Vec3 t = Tinv.transpose() * b;
+    const Mat3 half_cross = 0.5 * node.Q * Skew(t);
+    add(phr, phk, half_cross);
+    add(phk, phr, half_cross.transpose());
+    Mat3 S;
+    for (int m = 0; m < 3; ++m) S.col(m) = node.calculus->InverseTangentDerivative(Vec3::Unit(m)).transpose() * b;
+    S = S * Tinv;
+    S -= 0.5 * Skew(t);
+    add(phk, phk, S);
+    add(phk, phr, Mat3(-(S * node.Q.transpose())));
+    add(phr, phk, Mat3(-(node.Q * S)));
+    add(phr, phr, node.Q * S * node.Q.transpose());
+  }
   // The forces are gradients along R_k Exp(phi_k); moving R_k by Exp(d) turns them by half the rotation:
   // d/dd [grad at R Exp(d)] = Hessian + Skew(forces_phi) / 2 (docs/theory.md, (B12)).
   const Vector f = LocalToPerturbation(c);
-  for (int k = 0; k < shape_->num_nodes(); ++k) {
-    K->block<3, 3>(6 * k + kRotation, 6 * k + kRotation) += 0.5 * Skew(f.segment<3>(6 * k + kRotation));
-  }
+  for (int k = 0; k < n; ++k) add(6 * k + kRotation, 6 * k + kRotation, Mat3(0.5 * Skew(f.segment<3>(6 * k + kRotation))));
+}
+
+
+void BeamStrainField::AddCurvature(const Vector& c, Matrix* K) const {
+  ForEachCurvatureBlock(c, [K](int row, int col, const Mat3& block) { K->block<3, 3>(row, col) += block; });
 }
 
 void BeamStrainField::AddTangent(const PointVectors& stress, const std::array<Mat6, kMaxPoints>* material,
                                  Matrix* K) const {
   Matrix Kz;
   Vector c;
-  LocalTangent(stress, material, &Kz, &c);
+  LocalTangent(stress, material, &c, &Kz);
   *K += LocalToPerturbationRows(LocalToPerturbation(Kz));
   AddCurvature(c, K);
 }
@@ -272,22 +307,27 @@ BeamStrainField::Vector BeamStrainField::AddStepTangent(const PointVectors& stre
                                                         const IncrementMap& map, const IncrementMap& right_map,
                                                         bool geometric, const Vector& d, Matrix* K) const {
   const int n = shape_->num_nodes();
+  // Kz is formed only for K_geo; K_geo^T d needs Kz^T (dz/dp) d alone, which vectors give.
+  const Vector z_dot = LocalRate(d);
   Matrix Kz;
-  Vector c;
-  LocalTangent(stress, nullptr, &Kz, &c);
+  Vector c, Kz_transposed_z_dot;
+  LocalTangent(stress, nullptr, &c, geometric ? &Kz : nullptr, &z_dot, &Kz_transposed_z_dot);
   // Both parts in z on the left, in the increments on the right, then one pass of (dz/dp)^T.
   Matrix right_part = right.LocalToPerturbation(LocalMaterialTangent(right, material), right.PassOf(right_map));
   if (geometric) right_part += LocalToPerturbation(Kz, PassOf(map));
   *K += LocalToPerturbationRows(right_part);
-  // K_geo = [(dz/dp)^T Kz (dz/dp) + curvature] M: its transpose applied to d from vectors and the curvature.
-  Matrix curvature = Matrix::Zero(num_dofs(), num_dofs());
-  AddCurvature(c, &curvature);
-  Vector transposed_d = LocalToPerturbation(Vector(Kz.transpose() * LocalRate(d)));
-  transposed_d.noalias() += curvature.transpose() * d;
-  if (geometric) {
-    map.ApplyToColumns(n, &curvature);
-    *K += curvature;
-  }
+  // K_geo = [(dz/dp)^T Kz (dz/dp) + curvature] M: its transpose applied to d, and the curvature's blocks times
+  // the map's factor of their columns added to K, block by block.
+  Vector transposed_d = LocalToPerturbation(Kz_transposed_z_dot);
+  ForEachCurvatureBlock(c, [&](int row, int col, const Mat3& block) {
+    transposed_d.segment<3>(col).noalias() += block.transpose() * d.segment<3>(row);
+    if (!geometric) return;
+    if (col % 6 < kRotation) {
+      K->block<3, 3>(row, col) += map.translation_rate * block;
+    } else {
+      K->block<3, 3>(row, col).noalias() += block * map.rotation[col / 6];
+    }
+  });
   return map.ApplyTransposed(n, transposed_d);
 }
 
@@ -345,39 +385,6 @@ BeamStrainField::Mat69 BeamStrainField::PointSecondDerivative(const Point& p,
   for (int j = 0; j < 3; ++j) D.block<3, 1>(3, kPsi + j) += c.TangentSecondDerivative(Vec3::Unit(j), psi_dot) * p.dpsi;
   D.block<3, 3>(3, kDpsi) = DT_dot;
   return D;
-}
-
-void BeamStrainField::AddLocalCoordinateHessian(const Vector& c, Matrix* K) const {
-  const int n = shape_->num_nodes(), r = shape_->reference;
-  const int ur = 6 * r, phr = 6 * r + kRotation;
-  for (int k = 0; k < n; ++k) {
-    if (k == r) continue;
-    const Node& node = nodes_[k];
-    const int uk = 6 * k, phk = 6 * k + kRotation;
-    // y_k: second-order part -Skew(phi_r) R_r^T (u_k - u_r) + Skew(phi_r)^2 y_k / 2.
-    const Vec3 a = c.segment<3>(uk);
-    const Mat3 Sa = Skew(a) * R_ref_.transpose();
-    K->block<3, 3>(phr, uk) += Sa;
-    K->block<3, 3>(phr, ur) -= Sa;
-    K->block<3, 3>(uk, phr) += Sa.transpose();
-    K->block<3, 3>(ur, phr) -= Sa.transpose();
-    K->block<3, 3>(phr, phr) += SymmetricPart(Skew(a) * node.skew_y);
-    // psi_k = Log(Q Exp(b)), b = c + phi_k + c x phi_k / 2, c = -Q^T phi_r (docs/theory.md, (B11)).
-    const Vec3 b = c.segment<3>(phk);
-    const Mat3& Tinv = node.calculus->inverse_tangent();
-    const Vec3 t = Tinv.transpose() * b;
-    const Mat3 half_cross = 0.5 * node.Q * Skew(t);
-    K->block<3, 3>(phr, phk) += half_cross;
-    K->block<3, 3>(phk, phr) += half_cross.transpose();
-    Mat3 S;
-    for (int m = 0; m < 3; ++m) S.col(m) = node.calculus->InverseTangentDerivative(Vec3::Unit(m)).transpose() * b;
-    S = S * Tinv;
-    S -= 0.5 * Skew(t);
-    K->block<3, 3>(phk, phk) += S;
-    K->block<3, 3>(phk, phr) -= S * node.Q.transpose();
-    K->block<3, 3>(phr, phk) -= node.Q * S;
-    K->block<3, 3>(phr, phr) += node.Q * S * node.Q.transpose();
-  }
 }
 
 BeamStrainField::Matrix BeamStrainField::LocalCoordinateSecondDerivative(const Vector& v) const {
