@@ -132,10 +132,6 @@ class BeamStrainField {
   Matrix LocalMaterialTangent(const BeamStrainField& right, const std::array<Mat6, kMaxPoints>& material) const;
   // K += sum_k c_k . d2 z_k / dp2 and the turn of the forces (dz/dp)^T c along R_k Exp(phi_k) (B12).
   void AddCurvature(const Vector& c, Matrix* K) const;
-  // Calls add(row, col, block) with the 3x3 blocks whose sum at (row, col) is AddCurvature's K, so that a
-  // caller may scale or apply them without a 6n x 6n matrix.
-  template <class Add>
-  void ForEachCurvatureBlock(const Vector& c, Add&& add) const;
   // sum_i stress_i d2 strain_i / dq2 (9 x 9).
   Mat9 PointHessian(const Point& p, const Vec6& stress) const;
   // d2 strain / dq2 along q_dot (6 x 9).
@@ -150,10 +146,11 @@ class BeamStrainField {
   template <class Derived>
   Wide<Derived::RowsAtCompileTime, Derived::MaxRowsAtCompileTime>
   LocalToPerturbation(const Eigen::MatrixBase<Derived>& X) const;
-  // X (dz/dp) M with the factors of PassOf(M).
+  // X (dz/dp) M with the factors of PassOf(M); reference_rows_zero: X's rows of the reference node are zero, as
+  // a Kz's are (its z is zero), and are skipped.
   template <class Derived>
   Wide<Derived::RowsAtCompileTime, Derived::MaxRowsAtCompileTime>
-  LocalToPerturbation(const Eigen::MatrixBase<Derived>& X, const Pass& pass) const;
+  LocalToPerturbation(const Eigen::MatrixBase<Derived>& X, const Pass& pass, bool reference_rows_zero = false) const;
   Vector LocalToPerturbation(const Vector& c) const;
   // (dz/dp)^T X for X with 6n rows.
   Matrix LocalToPerturbationRows(const Matrix& X) const;
@@ -161,6 +158,8 @@ class BeamStrainField {
   Vector LocalRate(const Vector& v) const;
   // dq_g/dz z_dot.
   Eigen::Matrix<double, 9, 1> PointRate(int g, const Vector& z_dot) const;
+  // K += sum_k c_k . d2 z_k / dp2 for a covector c of z.
+  void AddLocalCoordinateHessian(const Vector& c, Matrix* K) const;
   // d2 z / dp2 along v (6n x 6n).
   Matrix LocalCoordinateSecondDerivative(const Vector& v) const;
 

@@ -96,14 +96,17 @@ BeamStrainField::LocalToPerturbation(const Eigen::MatrixBase<Derived>& X) const 
 
 template <class Derived>
 BeamStrainField::Wide<Derived::RowsAtCompileTime, Derived::MaxRowsAtCompileTime>
-BeamStrainField::LocalToPerturbation(const Eigen::MatrixBase<Derived>& X, const Pass& pass) const {
+BeamStrainField::LocalToPerturbation(const Eigen::MatrixBase<Derived>& X, const Pass& pass,
+                                     bool reference_rows_zero) const {
   // Taken in strips of rows of fixed height, so that every product is a fixed-size 3-column one.
   constexpr int kStrip = Derived::RowsAtCompileTime == 1 ? 1 : 3;
   const int n = shape_->num_nodes(), r = shape_->reference;
   BeamStrainField::Wide<Derived::RowsAtCompileTime, Derived::MaxRowsAtCompileTime> out(X.rows(), 6 * n);
   // Every other node's columns are assigned below; only the reference's are sums.
   out.template middleCols<6>(6 * r).setZero();
+  if (reference_rows_zero) out.middleRows(6 * r, 6).setZero();
   for (int i = 0; i < X.rows(); i += kStrip) {
+    if (reference_rows_zero && i / 6 == r) continue;
     for (int k = 0; k < n; ++k) {
       if (k == r) continue;
       const NodePass& factors = pass[k];
@@ -234,47 +237,14 @@ void BeamStrainField::LocalTangent(const PointVectors& stress, const std::array<
   }
 }
 
-template <class Add>
-void BeamStrainField::ForEachCurvatureBlock(const Vector& c, Add&& add) const {
-  const int n = shape_->num_nodes(), r = shape_->reference;
-  const int ur = 6 * r, phr = 6 * r + kRotation;
-  for (int k = 0; k < n; ++k) {
-    if (k == r) continue;
-    const Node& node = nodes_[k];
-    const int uk = 6 * k, phk = 6 * k + kRotation;
-    // y_k: second-order part -Skew(phi_r) R_r^T (u_k - u_r) + Skew(phi_r)^2 y_k / 2.
-    const Vec3 a = c.segment<3>(uk);
-    const Mat3 Sa = Skew(a) * R_ref_.transpose();
-    add(phr, uk, Sa);
-    add(phr, ur, Mat3(-(Sa)));
-    add(uk, phr, Sa.transpose());
-    add(ur, phr, Mat3(-(Sa.transpose())));
-    add(phr, phr, SymmetricPart(Skew(a) * node.skew_y));
-    // psi_k = Log(Q Exp(b)), b = c + phi_k + c x phi_k / 2, c = -Q^T phi_r (docs/theory.md, (B11)).
-    const Vec3 b = c.segment<3>(phk);
-    const Mat3& Tinv = node.calculus->inverse_tangent();
-    const Vec3 t = Tinv.transpose() * b;
-    const Mat3 half_cross = 0.5 * node.Q * Skew(t);
-    add(phr, phk, half_cross);
-    add(phk, phr, half_cross.transpose());
-    Mat3 S;
-    for (int m = 0; m < 3; ++m) S.col(m) = node.calculus->InverseTangentDerivative(Vec3::Unit(m)).transpose() * b;
-    S = S * Tinv;
-    S -= 0.5 * Skew(t);
-    add(phk, phk, S);
-    add(phk, phr, Mat3(-(S * node.Q.transpose())));
-    add(phr, phk, Mat3(-(node.Q * S)));
-    add(phr, phr, node.Q * S * node.Q.transpose());
-  }
+void BeamStrainField::AddCurvature(const Vector& c, Matrix* K) const {
+  AddLocalCoordinateHessian(c, K);
   // The forces are gradients along R_k Exp(phi_k); moving R_k by Exp(d) turns them by half the rotation:
   // d/dd [grad at R Exp(d)] = Hessian + Skew(forces_phi) / 2 (docs/theory.md, (B12)).
   const Vector f = LocalToPerturbation(c);
-  for (int k = 0; k < n; ++k) add(6 * k + kRotation, 6 * k + kRotation, Mat3(0.5 * Skew(f.segment<3>(6 * k + kRotation))));
-}
-
-
-void BeamStrainField::AddCurvature(const Vector& c, Matrix* K) const {
-  ForEachCurvatureBlock(c, [K](int row, int col, const Mat3& block) { K->block<3, 3>(row, col) += block; });
+  for (int k = 0; k < shape_->num_nodes(); ++k) {
+    K->block<3, 3>(6 * k + kRotation, 6 * k + kRotation) += 0.5 * Skew(f.segment<3>(6 * k + kRotation));
+  }
 }
 
 void BeamStrainField::AddTangent(const PointVectors& stress, const std::array<Mat6, kMaxPoints>* material,
@@ -282,7 +252,7 @@ void BeamStrainField::AddTangent(const PointVectors& stress, const std::array<Ma
   Matrix Kz;
   Vector c;
   LocalTangent(stress, material, &c, &Kz);
-  *K += LocalToPerturbationRows(LocalToPerturbation(Kz));
+  *K += LocalToPerturbationRows(LocalToPerturbation(Kz, pass_, true));
   AddCurvature(c, K);
 }
 
@@ -299,7 +269,7 @@ BeamStrainField::Matrix BeamStrainField::LocalMaterialTangent(const BeamStrainFi
 
 BeamStrainField::Matrix BeamStrainField::MaterialTangent(const BeamStrainField& right,
                                                          const std::array<Mat6, kMaxPoints>& material) const {
-  return LocalToPerturbationRows(right.LocalToPerturbation(LocalMaterialTangent(right, material)));
+  return LocalToPerturbationRows(right.LocalToPerturbation(LocalMaterialTangent(right, material), right.pass_, true));
 }
 
 BeamStrainField::Vector BeamStrainField::AddStepTangent(const PointVectors& stress, const BeamStrainField& right,
@@ -313,21 +283,19 @@ BeamStrainField::Vector BeamStrainField::AddStepTangent(const PointVectors& stre
   Vector c, Kz_transposed_z_dot;
   LocalTangent(stress, nullptr, &c, geometric ? &Kz : nullptr, &z_dot, &Kz_transposed_z_dot);
   // Both parts in z on the left, in the increments on the right, then one pass of (dz/dp)^T.
-  Matrix right_part = right.LocalToPerturbation(LocalMaterialTangent(right, material), right.PassOf(right_map));
-  if (geometric) right_part += LocalToPerturbation(Kz, PassOf(map));
+  Matrix right_part =
+      right.LocalToPerturbation(LocalMaterialTangent(right, material), right.PassOf(right_map), true);
+  if (geometric) right_part += LocalToPerturbation(Kz, PassOf(map), true);
   *K += LocalToPerturbationRows(right_part);
-  // K_geo = [(dz/dp)^T Kz (dz/dp) + curvature] M: its transpose applied to d, and the curvature's blocks times
-  // the map's factor of their columns added to K, block by block.
+  // K_geo = [(dz/dp)^T Kz (dz/dp) + curvature] M: its transpose applied to d from vectors and the curvature.
+  Matrix curvature = Matrix::Zero(num_dofs(), num_dofs());
+  AddCurvature(c, &curvature);
   Vector transposed_d = LocalToPerturbation(Kz_transposed_z_dot);
-  ForEachCurvatureBlock(c, [&](int row, int col, const Mat3& block) {
-    transposed_d.segment<3>(col).noalias() += block.transpose() * d.segment<3>(row);
-    if (!geometric) return;
-    if (col % 6 < kRotation) {
-      K->block<3, 3>(row, col) += map.translation_rate * block;
-    } else {
-      K->block<3, 3>(row, col).noalias() += block * map.rotation[col / 6];
-    }
-  });
+  transposed_d.noalias() += curvature.transpose() * d;
+  if (geometric) {
+    map.ApplyToColumns(n, &curvature);
+    *K += curvature;
+  }
   return map.ApplyTransposed(n, transposed_d);
 }
 
@@ -385,6 +353,39 @@ BeamStrainField::Mat69 BeamStrainField::PointSecondDerivative(const Point& p,
   for (int j = 0; j < 3; ++j) D.block<3, 1>(3, kPsi + j) += c.TangentSecondDerivative(Vec3::Unit(j), psi_dot) * p.dpsi;
   D.block<3, 3>(3, kDpsi) = DT_dot;
   return D;
+}
+
+void BeamStrainField::AddLocalCoordinateHessian(const Vector& c, Matrix* K) const {
+  const int n = shape_->num_nodes(), r = shape_->reference;
+  const int ur = 6 * r, phr = 6 * r + kRotation;
+  for (int k = 0; k < n; ++k) {
+    if (k == r) continue;
+    const Node& node = nodes_[k];
+    const int uk = 6 * k, phk = 6 * k + kRotation;
+    // y_k: second-order part -Skew(phi_r) R_r^T (u_k - u_r) + Skew(phi_r)^2 y_k / 2.
+    const Vec3 a = c.segment<3>(uk);
+    const Mat3 Sa = Skew(a) * R_ref_.transpose();
+    K->block<3, 3>(phr, uk) += Sa;
+    K->block<3, 3>(phr, ur) -= Sa;
+    K->block<3, 3>(uk, phr) += Sa.transpose();
+    K->block<3, 3>(ur, phr) -= Sa.transpose();
+    K->block<3, 3>(phr, phr) += SymmetricPart(Skew(a) * node.skew_y);
+    // psi_k = Log(Q Exp(b)), b = c + phi_k + c x phi_k / 2, c = -Q^T phi_r (docs/theory.md, (B11)).
+    const Vec3 b = c.segment<3>(phk);
+    const Mat3& Tinv = node.calculus->inverse_tangent();
+    const Vec3 t = Tinv.transpose() * b;
+    const Mat3 half_cross = 0.5 * node.Q * Skew(t);
+    K->block<3, 3>(phr, phk) += half_cross;
+    K->block<3, 3>(phk, phr) += half_cross.transpose();
+    Mat3 S;
+    for (int m = 0; m < 3; ++m) S.col(m) = node.calculus->InverseTangentDerivative(Vec3::Unit(m)).transpose() * b;
+    S = S * Tinv;
+    S -= 0.5 * Skew(t);
+    K->block<3, 3>(phk, phk) += S;
+    K->block<3, 3>(phk, phr) -= S * node.Q.transpose();
+    K->block<3, 3>(phr, phk) -= node.Q * S;
+    K->block<3, 3>(phr, phr) += node.Q * S * node.Q.transpose();
+  }
 }
 
 BeamStrainField::Matrix BeamStrainField::LocalCoordinateSecondDerivative(const Vector& v) const {
