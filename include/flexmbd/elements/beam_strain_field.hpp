@@ -123,10 +123,11 @@ class BeamStrainField {
 
   // The right pass's factors multiplied by a map's.
   Pass PassOf(const IncrementMap& map) const;
-  // Kz = sum_g (dq_g/dz)^T [H_g + E_g^T material_g E_g] (dq_g/dz), H_g the points' Hessians of stress . strain,
-  // and c = sum_g (dq_g/dz)^T E_g^T stress_g, the forces in z.
-  void LocalTangent(const PointVectors& stress, const std::array<Mat6, kMaxPoints>* material, Matrix* Kz,
-                    Vector* c) const;
+  // c = sum_g (dq_g/dz)^T E_g^T stress_g, the forces in z; Kz = sum_g (dq_g/dz)^T [H_g + E_g^T material_g E_g]
+  // (dq_g/dz), H_g the points' Hessians of stress . strain, if Kz is not null; Kz^T z_dot from vectors, without
+  // forming Kz, if z_dot is not null.
+  void LocalTangent(const PointVectors& stress, const std::array<Mat6, kMaxPoints>* material, Vector* c,
+                    Matrix* Kz, const Vector* z_dot = nullptr, Vector* Kz_transposed_z_dot = nullptr) const;
   // Kz = sum_g (dq_g/dz)^T E_g^T material_g E'_g (dq_g/dz), E' of right.
   Matrix LocalMaterialTangent(const BeamStrainField& right, const std::array<Mat6, kMaxPoints>& material) const;
   // K += sum_k c_k . d2 z_k / dp2 and the turn of the forces (dz/dp)^T c along R_k Exp(phi_k) (B12).
@@ -145,10 +146,11 @@ class BeamStrainField {
   template <class Derived>
   Wide<Derived::RowsAtCompileTime, Derived::MaxRowsAtCompileTime>
   LocalToPerturbation(const Eigen::MatrixBase<Derived>& X) const;
-  // X (dz/dp) M with the factors of PassOf(M).
+  // X (dz/dp) M with the factors of PassOf(M); reference_rows_zero: X's rows of the reference node are zero, as
+  // a Kz's are (its z is zero), and are skipped.
   template <class Derived>
   Wide<Derived::RowsAtCompileTime, Derived::MaxRowsAtCompileTime>
-  LocalToPerturbation(const Eigen::MatrixBase<Derived>& X, const Pass& pass) const;
+  LocalToPerturbation(const Eigen::MatrixBase<Derived>& X, const Pass& pass, bool reference_rows_zero = false) const;
   Vector LocalToPerturbation(const Vector& c) const;
   // (dz/dp)^T X for X with 6n rows.
   Matrix LocalToPerturbationRows(const Matrix& X) const;

@@ -96,14 +96,17 @@ BeamStrainField::LocalToPerturbation(const Eigen::MatrixBase<Derived>& X) const 
 
 template <class Derived>
 BeamStrainField::Wide<Derived::RowsAtCompileTime, Derived::MaxRowsAtCompileTime>
-BeamStrainField::LocalToPerturbation(const Eigen::MatrixBase<Derived>& X, const Pass& pass) const {
+BeamStrainField::LocalToPerturbation(const Eigen::MatrixBase<Derived>& X, const Pass& pass,
+                                     bool reference_rows_zero) const {
   // Taken in strips of rows of fixed height, so that every product is a fixed-size 3-column one.
   constexpr int kStrip = Derived::RowsAtCompileTime == 1 ? 1 : 3;
   const int n = shape_->num_nodes(), r = shape_->reference;
   BeamStrainField::Wide<Derived::RowsAtCompileTime, Derived::MaxRowsAtCompileTime> out(X.rows(), 6 * n);
   // Every other node's columns are assigned below; only the reference's are sums.
   out.template middleCols<6>(6 * r).setZero();
+  if (reference_rows_zero) out.middleRows(6 * r, 6).setZero();
   for (int i = 0; i < X.rows(); i += kStrip) {
+    if (reference_rows_zero && i / 6 == r) continue;
     for (int k = 0; k < n; ++k) {
       if (k == r) continue;
       const NodePass& factors = pass[k];
@@ -217,9 +220,10 @@ BeamStrainField::Vector BeamStrainField::Gradient(const PointVectors& stress) co
 }
 
 void BeamStrainField::LocalTangent(const PointVectors& stress, const std::array<Mat6, kMaxPoints>* material,
-                                   Matrix* Kz, Vector* c) const {
-  Kz->setZero(num_dofs(), num_dofs());
+                                   Vector* c, Matrix* Kz, const Vector* z_dot, Vector* Kz_transposed_z_dot) const {
   c->setZero(num_dofs());
+  if (Kz != nullptr) Kz->setZero(num_dofs(), num_dofs());
+  if (z_dot != nullptr) Kz_transposed_z_dot->setZero(num_dofs());
   for (int g = 0; g < num_points(); ++g) {
     const Point& p = points_[g];
     *c += PointToLocal(g, p.E.transpose() * stress[g]);
@@ -228,7 +232,8 @@ void BeamStrainField::LocalTangent(const PointVectors& stress, const std::array<
       const Mat69 CE = (*material)[g] * p.E;
       H.noalias() += p.E.transpose().lazyProduct(CE);
     }
-    AddPointToLocal(g, H, Kz);
+    if (Kz != nullptr) AddPointToLocal(g, H, Kz);
+    if (z_dot != nullptr) *Kz_transposed_z_dot += PointToLocal(g, H.transpose() * PointRate(g, *z_dot));
   }
 }
 
@@ -246,8 +251,8 @@ void BeamStrainField::AddTangent(const PointVectors& stress, const std::array<Ma
                                  Matrix* K) const {
   Matrix Kz;
   Vector c;
-  LocalTangent(stress, material, &Kz, &c);
-  *K += LocalToPerturbationRows(LocalToPerturbation(Kz));
+  LocalTangent(stress, material, &c, &Kz);
+  *K += LocalToPerturbationRows(LocalToPerturbation(Kz, pass_, true));
   AddCurvature(c, K);
 }
 
@@ -264,7 +269,7 @@ BeamStrainField::Matrix BeamStrainField::LocalMaterialTangent(const BeamStrainFi
 
 BeamStrainField::Matrix BeamStrainField::MaterialTangent(const BeamStrainField& right,
                                                          const std::array<Mat6, kMaxPoints>& material) const {
-  return LocalToPerturbationRows(right.LocalToPerturbation(LocalMaterialTangent(right, material)));
+  return LocalToPerturbationRows(right.LocalToPerturbation(LocalMaterialTangent(right, material), right.pass_, true));
 }
 
 BeamStrainField::Vector BeamStrainField::AddStepTangent(const PointVectors& stress, const BeamStrainField& right,
@@ -272,17 +277,20 @@ BeamStrainField::Vector BeamStrainField::AddStepTangent(const PointVectors& stre
                                                         const IncrementMap& map, const IncrementMap& right_map,
                                                         bool geometric, const Vector& d, Matrix* K) const {
   const int n = shape_->num_nodes();
+  // Kz is formed only for K_geo; K_geo^T d needs Kz^T (dz/dp) d alone, which vectors give.
+  const Vector z_dot = LocalRate(d);
   Matrix Kz;
-  Vector c;
-  LocalTangent(stress, nullptr, &Kz, &c);
+  Vector c, Kz_transposed_z_dot;
+  LocalTangent(stress, nullptr, &c, geometric ? &Kz : nullptr, &z_dot, &Kz_transposed_z_dot);
   // Both parts in z on the left, in the increments on the right, then one pass of (dz/dp)^T.
-  Matrix right_part = right.LocalToPerturbation(LocalMaterialTangent(right, material), right.PassOf(right_map));
-  if (geometric) right_part += LocalToPerturbation(Kz, PassOf(map));
+  Matrix right_part =
+      right.LocalToPerturbation(LocalMaterialTangent(right, material), right.PassOf(right_map), true);
+  if (geometric) right_part += LocalToPerturbation(Kz, PassOf(map), true);
   *K += LocalToPerturbationRows(right_part);
   // K_geo = [(dz/dp)^T Kz (dz/dp) + curvature] M: its transpose applied to d from vectors and the curvature.
   Matrix curvature = Matrix::Zero(num_dofs(), num_dofs());
   AddCurvature(c, &curvature);
-  Vector transposed_d = LocalToPerturbation(Vector(Kz.transpose() * LocalRate(d)));
+  Vector transposed_d = LocalToPerturbation(Kz_transposed_z_dot);
   transposed_d.noalias() += curvature.transpose() * d;
   if (geometric) {
     map.ApplyToColumns(n, &curvature);
