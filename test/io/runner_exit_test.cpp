@@ -321,6 +321,16 @@ TEST(RunnerExit, DirectoryGivenToCsvOrBagFlagIsBadInputForCheckNamingTheFlag) {
   }
 }
 
+TEST(RunnerExit, QuotedNumberOrYesForABooleanIsBadInputForCheck) {
+  const std::string quoted = WriteFile("quoted_k.yaml", "joints:\n  B1:\n    spring: {k: \"100\"}\n");
+  const std::string yes = WriteFile("adaptive_yes.yaml", "solver:\n  adaptive: yes\n");
+  for (const std::string& yaml : {quoted, yes}) {
+    const RunOutcome out = RunRunner("--check --urdf " + Data("urdf/pendulum.urdf") + " --config " + yaml);
+    EXPECT_EQ(out.exit_status, kBadInputExit) << yaml;
+    EXPECT_NE(out.stderr_text.find(yaml + ": "), std::string::npos) << out.stderr_text;
+  }
+}
+
 // solver.eigen settings a user met without a word or with the wrong exit (explore23 bad/eigen, bad/aero): the run of
 // `yaml` on `urdf` (test/data) is bad input, and its line says `message`.
 void ExpectBadInputSaying(const std::string& urdf, const std::string& yaml, const std::string& message) {
