@@ -4,6 +4,7 @@
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
+#include <optional>
 
 #include "flexmbd/common/error.hpp"
 #include "flexmbd/io/message_text.hpp"
@@ -70,6 +71,23 @@ bool OutOfDoubleRange(const Field& field) {
   errno = 0;
   std::strtod(text.c_str(), &end);
   return !text.empty() && end == text.c_str() + text.size() && errno == ERANGE;
+}
+
+// A quoted (or block) scalar is text, whatever it reads ("100", 'true'): the schema's numbers and booleans are
+// plain scalars, as YAML 1.2 resolves them. yaml-cpp tags a parsed quoted scalar "!" and a plain one "?"; a node the
+// node the ROS node builds from its parameters has none (rosparam has typed them already).
+void RejectQuoted(const Field& field, const std::string& expected) {
+  if (field.node().IsScalar() && field.node().Tag() == "!") {
+    field.Fail("\"" + field.Text() + "\" is quoted, which makes it a text; expected " + expected +
+               ", written without quotes");
+  }
+}
+
+// The YAML 1.2 core schema's booleans; yes, no, on, off and their kin are YAML 1.1's, and read as text there.
+std::optional<bool> Yaml12Bool(const std::string& text) {
+  if (text == "true" || text == "True" || text == "TRUE") return true;
+  if (text == "false" || text == "False" || text == "FALSE") return false;
+  return std::nullopt;
 }
 
 }  // namespace
@@ -152,6 +170,7 @@ void RequireKey(const Field& map, const std::string& key, const std::string& why
 }
 
 double ReadNumber(const Field& field, const Quantity& quantity, double to_si) {
+  RejectQuoted(field, Expected(quantity));
   double value = 0.0;
   bool ok = field.node().IsScalar();
   if (ok) {
@@ -172,6 +191,7 @@ double ReadNumber(const Field& field, const Quantity& quantity, double to_si) {
 }
 
 int ReadInteger(const Field& field, const Quantity& quantity) {
+  RejectQuoted(field, Expected(quantity));
   int value = 0;
   bool ok = field.node().IsScalar();
   if (ok) {
@@ -187,11 +207,9 @@ int ReadInteger(const Field& field, const Quantity& quantity) {
 }
 
 bool ReadBool(const Field& field) {
+  RejectQuoted(field, "true or false");
   if (field.node().IsScalar()) {
-    try {
-      return field.node().as<bool>();
-    } catch (const YAML::Exception&) {
-    }
+    if (const std::optional<bool> value = Yaml12Bool(field.node().Scalar())) return *value;
   }
   field.Fail(field.Describe() + " is not a boolean; expected true or false");
 }

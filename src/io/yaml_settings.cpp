@@ -1,6 +1,7 @@
 #include <algorithm>
 
 #include "flexmbd/io/message_text.hpp"
+#include "flexmbd/io/output_path.hpp"
 #include "flexmbd/io/yaml_sections.hpp"
 
 namespace flexmbd {
@@ -200,12 +201,20 @@ void ReadSolver(const Field& solver, SolverSpec* spec) {
   CheckEigenTimes(solver, *spec);
 }
 
+// output.csv or output.bag: refused here, where the message can name this file, rather than when the run opens it.
+void OverlayOutputPath(const Field& output, const std::string& key, std::string* path) {
+  OverlayString(output, key, kOutputPathExpected, path);
+  if (path->empty()) return;
+  const std::string problem = OutputPathProblem(*path);
+  if (!problem.empty()) output.Child(key).Fail("'" + *path + "' " + problem + "; expected " + kOutputPathExpected);
+}
+
 void ReadOutput(const Field& output, double t_end, OutputSpec* spec) {
   CheckKeys(output, kOutputKeys);
   OverlayNumber(output, "rate_hz", Quantity{"a sample rate (0: every step)", Bound::kNonNegative, "Hz"},
                 &spec->rate_hz);
-  OverlayString(output, "csv", "a file path (\"\" for none)", &spec->csv);
-  OverlayString(output, "bag", "a file path (\"\" for none)", &spec->bag);
+  OverlayOutputPath(output, "csv", &spec->csv);
+  OverlayOutputPath(output, "bag", &spec->bag);
   OverlayBool(output, "allow_large_output", &spec->allow_large_output);
   const Field cycle = output.Child("cycle_from");
   if (!cycle.present()) return;

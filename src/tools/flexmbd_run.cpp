@@ -19,6 +19,7 @@
 #include "flexmbd/common/exit_status.hpp"
 #include "flexmbd/io/config_loader.hpp"
 #include "flexmbd/io/csv_sink.hpp"
+#include "flexmbd/io/output_path.hpp"
 #include "flexmbd/ros/async_sample_writer.hpp"
 #include "flexmbd/ros/sample_fan_out.hpp"
 #include "flexmbd/ros/stop_signal.hpp"
@@ -119,6 +120,15 @@ class CycleReport {
 // A static analysis has load increments and Newton iterations, no time steps to count.
 bool IsStatic(const flexmbd::Model& model) {
   return model.solver().analysis == flexmbd::SolverSpec::Analysis::kStatic;
+}
+
+// --csv or --bag: refused before the model is built, with --check too, as output.csv and output.bag are.
+std::string OutputPathArgument(const std::string& flag, const std::string& path) {
+  const std::string problem = flexmbd::OutputPathProblem(path);
+  if (!problem.empty()) {
+    throw flexmbd::ConfigError(flag + ": '" + path + "' " + problem + "; expected " + flexmbd::kOutputPathExpected);
+  }
+  return path;
 }
 
 // `samples` written in `wall_seconds`, from the first sample to the recordings closed: what the node reports
@@ -318,8 +328,8 @@ int main(int argc, char** argv) {
     for (const std::string& warning : spec.warnings) {
       std::fprintf(stderr, "flexmbd_run: warning: %s\n", warning.c_str());
     }
-    if (!args.csv.empty()) spec.output.csv = args.csv;
-    if (!args.bag.empty()) spec.output.bag = args.bag;
+    if (!args.csv.empty()) spec.output.csv = OutputPathArgument("--csv", args.csv);
+    if (!args.bag.empty()) spec.output.bag = OutputPathArgument("--bag", args.bag);
     const flexmbd::Model model = flexmbd::BuildModel(spec);
     if (args.check_only) {
       if (!args.columns.empty() && model.solver().analysis != flexmbd::SolverSpec::Analysis::kEigen) {

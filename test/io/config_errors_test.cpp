@@ -223,6 +223,35 @@ TEST(ConfigErrors, WrongTypeNamesFieldAndExpectedType) {
                       "pendulum.yaml: solver.t_end: 'long' is not a number; expected an end time > 0 [s]");
 }
 
+// explore6 D5: yaml-cpp read a quoted "100" as the number 100 and "true" or yes as a boolean; docs/config.md promises
+// YAML 1.2's plain numbers and booleans.
+TEST(ConfigErrors, QuotedNumberIsTextNotANumber) {
+  EXPECT_CONFIG_ERROR(Pendulum("joints: {B1: {spring: {k: \"100\"}}}"),
+                      "pendulum.yaml: joints.B1.spring.k: \"100\" is quoted, which makes it a text; expected a "
+                      "stiffness >= 0 [N m/rad], written without quotes");
+  EXPECT_CONFIG_ERROR(Pendulum("solver: {max_iterations: '20'}"),
+                      "pendulum.yaml: solver.max_iterations: \"20\" is quoted, which makes it a text; expected an "
+                      "iteration count >= 1, written without quotes");
+}
+
+TEST(ConfigErrors, QuotedBooleanIsTextNotABoolean) {
+  EXPECT_CONFIG_ERROR(Pendulum("solver: {static_first: \"true\"}"),
+                      "pendulum.yaml: solver.static_first: \"true\" is quoted, which makes it a text; expected true "
+                      "or false, written without quotes");
+}
+
+TEST(ConfigErrors, Yaml11BooleansAreRefused) {
+  for (const std::string word : {"yes", "no", "on", "off", "y"}) {
+    EXPECT_CONFIG_ERROR(Pendulum("solver: {adaptive: " + word + "}"),
+                        "pendulum.yaml: solver.adaptive: '" + word + "' is not a boolean; expected true or false");
+  }
+}
+
+TEST(ConfigErrors, Yaml12BooleansAreRead) {
+  EXPECT_FALSE(Pendulum("solver: {adaptive: FALSE}").solver.adaptive);
+  EXPECT_TRUE(Pendulum("solver: {adaptive: True}").solver.adaptive);
+}
+
 TEST(ConfigErrors, NumberBeyondTheRangeOfADoubleIsSaidToBeOne) {
   EXPECT_CONFIG_ERROR(Pendulum("joints: {B1: {spring: {k: 1e400}}}"),
                       "pendulum.yaml: joints.B1.spring.k: 1e400 is a number beyond the range of a double");

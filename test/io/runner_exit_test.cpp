@@ -286,6 +286,51 @@ TEST(RunnerExit, CheckOfBadInputExitsWithTwoAndNamesField) {
   EXPECT_NE(out.stderr_text.find("joints.B1.spring.k"), std::string::npos) << out.stderr_text;
 }
 
+// output.csv naming a directory (explore6 D6): --check passed it and only the run refused it, in a line without the
+// YAML file. Now both refuse it before anything runs, in one line naming the file, the field and the expected form.
+TEST(RunnerExit, DirectoryAsOutputCsvIsBadInputForCheckAndRunNamingTheFile) {
+  const std::string directory = testing::TempDir() + "csv_dir";
+  std::system(("mkdir -p " + directory).c_str());
+  const std::string yaml = WriteFile("csv_is_a_directory.yaml", "output: {csv: " + directory + "}\n");
+  const std::string expected = "flexmbd_run: " + yaml + ": output.csv: '" + directory +
+                               "' is a directory; expected a writable file path (\"\" for none)\n";
+  for (const std::string check : {" --check", ""}) {
+    const RunOutcome out = RunRunner("--urdf " + Data("urdf/pendulum.urdf") + " --config " + yaml + check);
+    EXPECT_EQ(out.exit_status, kBadInputExit) << check;
+    EXPECT_EQ(out.stderr_text, expected) << check;
+  }
+}
+
+TEST(RunnerExit, OutputCsvInAMissingDirectoryIsBadInputForCheck) {
+  const std::string csv = testing::TempDir() + "no_such_dir/run.csv";
+  const std::string yaml = WriteFile("csv_in_missing_dir.yaml", "output: {csv: " + csv + "}\n");
+  const RunOutcome out = RunRunner("--check --urdf " + Data("urdf/pendulum.urdf") + " --config " + yaml);
+  EXPECT_EQ(out.exit_status, kBadInputExit);
+  EXPECT_EQ(out.stderr_text, "flexmbd_run: " + yaml + ": output.csv: '" + csv + "' is in '" + testing::TempDir() +
+                                 "no_such_dir', which is not an existing directory; expected a writable file path "
+                                 "(\"\" for none)\n");
+}
+
+TEST(RunnerExit, DirectoryGivenToCsvOrBagFlagIsBadInputForCheckNamingTheFlag) {
+  for (const std::string flag : {"--csv", "--bag"}) {
+    const RunOutcome out = RunRunner("--check --urdf " + Data("urdf/pendulum.urdf") + " --config " +
+                                     Data("yaml/pendulum.yaml") + " " + flag + " /tmp");
+    EXPECT_EQ(out.exit_status, kBadInputExit) << flag;
+    EXPECT_EQ(out.stderr_text, "flexmbd_run: " + flag + ": '/tmp' is a directory; expected a writable file path "
+                                                        "(\"\" for none)\n");
+  }
+}
+
+TEST(RunnerExit, QuotedNumberOrYesForABooleanIsBadInputForCheck) {
+  const std::string quoted = WriteFile("quoted_k.yaml", "joints:\n  B1:\n    spring: {k: \"100\"}\n");
+  const std::string yes = WriteFile("adaptive_yes.yaml", "solver:\n  adaptive: yes\n");
+  for (const std::string& yaml : {quoted, yes}) {
+    const RunOutcome out = RunRunner("--check --urdf " + Data("urdf/pendulum.urdf") + " --config " + yaml);
+    EXPECT_EQ(out.exit_status, kBadInputExit) << yaml;
+    EXPECT_NE(out.stderr_text.find(yaml + ": "), std::string::npos) << out.stderr_text;
+  }
+}
+
 // solver.eigen settings a user met without a word or with the wrong exit (explore23 bad/eigen, bad/aero): the run of
 // `yaml` on `urdf` (test/data) is bad input, and its line says `message`.
 void ExpectBadInputSaying(const std::string& urdf, const std::string& yaml, const std::string& message) {

@@ -85,13 +85,14 @@ std::vector<Field> ListEntries(const Field& field, const std::string& what);
 /// Fails with "missing key '<key>'; expected <why>" if `map` lacks `key`.
 void RequireKey(const Field& map, const std::string& key, const std::string& why);
 
-/// A finite number in the range of `quantity`, multiplied by `to_si` after the range check.
+/// A finite number in the range of `quantity`, multiplied by `to_si` after the range check; a quoted scalar ("100")
+/// is text, not a number.
 double ReadNumber(const Field& field, const Quantity& quantity, double to_si = 1.0);
 
-/// An integer in the range of `quantity`.
+/// An integer in the range of `quantity`, not quoted.
 int ReadInteger(const Field& field, const Quantity& quantity);
 
-/// true/false (also yes/no, on/off).
+/// true or false (YAML 1.2: also True, TRUE, False, FALSE), not quoted; YAML 1.1's yes/no, on/off are refused.
 bool ReadBool(const Field& field);
 
 /// A scalar read as text (a file path, a name).
