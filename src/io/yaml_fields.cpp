@@ -74,7 +74,7 @@ bool OutOfDoubleRange(const Field& field) {
 }
 
 // A quoted (or block) scalar is text, whatever it reads ("100", 'true'): the schema's numbers and booleans are
-// plain scalars, as YAML 1.2 resolves them. yaml-cpp tags a parsed quoted scalar "!" and a plain one "?"; a node the
+// plain scalars, as YAML 1.2 resolves them. yaml-cpp tags a parsed quoted scalar "!" and a plain one "?"; the
 // node the ROS node builds from its parameters has none (rosparam has typed them already).
 void RejectQuoted(const Field& field, const std::string& expected) {
   if (field.node().IsScalar() && field.node().Tag() == "!") {
