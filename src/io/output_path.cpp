@@ -10,6 +10,9 @@ namespace flexmbd {
 
 const char kOutputPathExpected[] = "a writable file path (\"\" for none)";
 
+namespace {
+// What keeps a file from being written at `path`, as the end of a sentence starting with the quoted path; empty if
+// nothing does.
 std::string OutputPathProblem(const std::string& path) {
   struct stat info {};
   if (stat(path.c_str(), &info) == 0) {
@@ -28,6 +31,12 @@ std::string OutputPathProblem(const std::string& path) {
     return "is in '" + directory + "', which is not writable (" + std::strerror(errno) + ")";
   }
   return "";
+}
+}  // namespace
+
+std::string OutputPathError(const std::string& path) {
+  const std::string problem = OutputPathProblem(path);
+  return problem.empty() ? "" : "'" + path + "' " + problem + "; expected " + kOutputPathExpected;
 }
 
 }  // namespace flexmbd

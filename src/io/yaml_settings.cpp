@@ -205,8 +205,8 @@ void ReadSolver(const Field& solver, SolverSpec* spec) {
 void OverlayOutputPath(const Field& output, const std::string& key, std::string* path) {
   OverlayString(output, key, kOutputPathExpected, path);
   if (path->empty()) return;
-  const std::string problem = OutputPathProblem(*path);
-  if (!problem.empty()) output.Child(key).Fail("'" + *path + "' " + problem + "; expected " + kOutputPathExpected);
+  const std::string error = OutputPathError(*path);
+  if (!error.empty()) output.Child(key).Fail(error);
 }
 
 void ReadOutput(const Field& output, double t_end, OutputSpec* spec) {

@@ -124,10 +124,8 @@ bool IsStatic(const flexmbd::Model& model) {
 
 // --csv or --bag: refused before the model is built, with --check too, as output.csv and output.bag are.
 std::string OutputPathArgument(const std::string& flag, const std::string& path) {
-  const std::string problem = flexmbd::OutputPathProblem(path);
-  if (!problem.empty()) {
-    throw flexmbd::ConfigError(flag + ": '" + path + "' " + problem + "; expected " + flexmbd::kOutputPathExpected);
-  }
+  const std::string error = flexmbd::OutputPathError(path);
+  if (!error.empty()) throw flexmbd::ConfigError(flag + ": " + error);
   return path;
 }
 

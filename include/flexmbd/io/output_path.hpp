@@ -6,10 +6,11 @@
 
 namespace flexmbd {
 
-/// What keeps a file from being written at `path`, as the end of a sentence starting with the quoted path
-/// ("is a directory", "is in 'd', which is not an existing directory", "is not writable (Permission denied)");
-/// empty if nothing does. Nothing is created or truncated.
-std::string OutputPathProblem(const std::string& path);
+/// Why no file can be written at `path`, as a message's end naming the path and the expected form ("'/tmp' is a
+/// directory; expected a writable file path (\"\" for none)"; also "is in 'd', which is not an existing directory",
+/// "is not writable (Permission denied)"); empty if nothing keeps it from being written. Nothing is created or
+/// truncated.
+std::string OutputPathError(const std::string& path);
 
 /// The expected form of an output path, for messages.
 extern const char kOutputPathExpected[];
