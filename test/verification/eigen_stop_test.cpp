@@ -100,5 +100,33 @@ TEST(EigenStop, StiffBladeOnALinearStopHasTheHingeFrequencyOfItsStop) {
   EXPECT_GT(hinge_mode, (1.0 - kBladeCompliance) * rigid) << out;
 }
 
+// stick_slip.urdf's 1 kg slider on a spring of 100 N/m that starts at rest on a rigid stop at 0.05 m, its rest length
+// `rest`, analysed about the initial state (no static analysis).
+std::string SliderOnItsStop(const std::string& rest) {
+  return "joints:\n  slider:\n    spring: {k: 100.0, rest: " + rest + "}\n    initial: {position: 0.05}\n"
+         "    backlash: {lower: -0.2, upper: 0.05}\n"
+         "solver: {analysis: eigen}\n";
+}
+
+TEST(EigenStop, RigidStopTouchedAtTheInitialStateHoldsTheJointItsLoadPressesOnIt) {
+  // The spring (rest 0.1 m) presses the slider onto its upper stop with 5 N: the stop holds it, as a step from there
+  // does (eigen.at_times) and the static analysis (eigen.static_first): no degree of freedom is left. The initial
+  // state has the stop open, and the analysis about it once gave a mode of sqrt(100 / 1) / 2 pi = 1.5915 Hz through
+  // the stop, its reference acceleration of 5 m/s^2 into it (explore6).
+  const std::string out = test::RunnerOutput("test/data/urdf/stick_slip.urdf", SliderOnItsStop("0.1"), "pressed_eigen");
+  EXPECT_NE(out.find("eigen-analysis at t = 0 s (dense): 0 degrees of freedom, 0 rigid-body modes"), std::string::npos)
+      << out;
+}
+
+TEST(EigenStop, RigidStopTouchedAtTheInitialStateLetsGoOfTheJointItsLoadPullsOff) {
+  // The spring (rest 0) pulls the slider off the stop with 5 N: the stop would pull, so it stays open and the slider
+  // oscillates on its spring, sqrt(100 / 1) / 2 pi = 1.5915494 Hz (printed to 8 digits, a relative 1e-7).
+  constexpr double kPrinted = 1.0e-7;
+  const std::string out = test::RunnerOutput("test/data/urdf/stick_slip.urdf", SliderOnItsStop("0.0"), "pulled_eigen");
+  EXPECT_NE(out.find("1 degrees of freedom, 0 rigid-body modes"), std::string::npos) << out;
+  const double expected = Hz(100.0, 1.0);
+  EXPECT_NEAR(test::TableFrequency(out, 1), expected, kPrinted * expected) << out;
+}
+
 }  // namespace eigen_stop_test
 }  // namespace flexmbd

@@ -13,6 +13,7 @@
 #include "flexmbd/solver/joint_rates.hpp"
 #include "flexmbd/solver/sparse_system.hpp"
 #include "flexmbd/solver/step_context_builder.hpp"
+#include "flexmbd/solver/touched_stops.hpp"
 #include "static_increment.hpp"
 
 namespace flexmbd {
@@ -31,19 +32,6 @@ void StartFromReleaseMultipliers(const Model& model, double load_factor, State* 
     state->lambda = load_factor * WithConsistentMotion(model, *state).lambda;
   } catch (const SolverError&) {
     state->lambda.setZero();
-  }
-}
-
-// Rigid stops that the joint touches (gap within round-off) are closed: a static analysis has no time steps whose
-// events would close them, and a joint resting on its stop with nothing else to hold it (a block on a frictionless
-// incline, a hinged blade on its droop stop) had a singular iteration matrix. In contact the stop's row is g_f = 0
-// (C2a).
-void CloseTouchedRigidStops(const Model& model, double round_off, State* state) {
-  for (const JointStop* stop : model.stop_effects()) {
-    EffectState& effect = state->effects[stop->slot()];
-    if (!stop->rigid() || effect.mode != JointStop::kOpen) continue;
-    if (stop->Gap(state->q[stop->variable()]) > round_off) continue;
-    effect.mode = JointStop::kContact;
   }
 }
 
@@ -230,6 +218,9 @@ StaticResult SolveLoadSteps(const Model& model, SparseSystem* system, const std:
 StaticResult SolveStatic(const Model& model, SparseSystem* system, State* state) {
   const State initial = *state;
   State start = initial;
+  // A static analysis has no time steps whose events would close the stops a joint touches, and a joint resting on its
+  // stop with nothing else to hold it (a block on a frictionless incline, a hinged blade on its droop stop) had a
+  // singular iteration matrix: they are closed, their row g_f = 0 (C2a).
   CloseTouchedRigidStops(model, RoundOffFloor(model.length_scale()), &start);
   // Each closed stop either holds (a contact force >= 0) or is opened and the equilibrium solved again without it.
   std::vector<bool> released(model.stop_effects().size(), false);
