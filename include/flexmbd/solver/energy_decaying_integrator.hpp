@@ -34,6 +34,7 @@ class EnergyDecayingIntegrator : public TimeIntegrator {
   EnergyDecayingIntegrator(const Model& model, SparseSystem* system);
 
   StepResult Step(const State& start, double h, State* end) override;
+  StepResult TrialStep(const State& start, double h, State* end) override;
   const StepContext& last_context() const override { return builder_.context(); }
   const State* last_projected_start() const override { return started_projected_ ? &projected_start_ : nullptr; }
 
@@ -45,8 +46,9 @@ class EnergyDecayingIntegrator : public TimeIntegrator {
     std::vector<double> elements;  ///< by Element::index(): elements that dissipate on their own stretch
     bool any() const;              ///< some coefficient is nonzero
   };
-  // Chosen before the step from the previous steps' accelerations and the last step's element checks.
-  Coefficients Choose(const State& start) const;
+  // Chosen before the step from the previous steps' accelerations and the last step's element checks; all zero in a
+  // step without dissipation (the energy-preserving relation).
+  Coefficients Choose(const State& start, bool dissipation) const;
   // Turns off the dissipation of nodes, variables and elements whose converged step would gain energy; true if
   // any was.
   bool DropEnergyGainingDissipation(const State& start, double h, Coefficients* c) const;
@@ -54,8 +56,10 @@ class EnergyDecayingIntegrator : public TimeIntegrator {
   // stretch dissipates with the scheme's term, whether or not the term was on.
   void RecordElementDissipation(const Coefficients& c);
   Eigen::VectorXd Predict(const State& start, double h) const;
-  // The step from `start` (Step's work, from the start StartOf chose).
-  StepResult SolveStep(const State& start, double h, State* end);
+  // A step from `given`, with the scheme's dissipation or without it (Step, TrialStep).
+  StepResult StepFrom(const State& given, double h, State* end, bool dissipation);
+  // The step from `start` (StepFrom's work, from the start StartOf chose).
+  StepResult SolveStep(const State& start, double h, State* end, bool dissipation);
   // The state a step of size h starts from: `given`; where a drive's rate jumps at `given`, `given` with its
   // velocities carried across the jump; or, once a step from it much shorter than the one before was redone for a
   // friction event, `given` with its velocities projected onto the constraints (both kept in projected_start_).

@@ -42,6 +42,10 @@ class TimeIntegrator {
   /// Attempts a step of size h from `start`. On kAccepted `end` holds the converged end state.
   virtual StepResult Step(const State& start, double h, State* end) = 0;
 
+  /// A step of the trials that choose a run's first step (docs/theory.md, "First step"): Step without the scheme's
+  /// numerical dissipation, which would damp a motion too fast for h and hide it from the error estimate (T12).
+  virtual StepResult TrialStep(const State& start, double h, State* end) { return Step(start, h, end); }
+
   /// The context of the last converged step (for outputs such as joint efforts).
   virtual const StepContext& last_context() const = 0;
 

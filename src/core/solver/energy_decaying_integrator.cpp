@@ -81,12 +81,12 @@ bool EnergyDecayingIntegrator::Coefficients::any() const {
          });
 }
 
-EnergyDecayingIntegrator::Coefficients EnergyDecayingIntegrator::Choose(const State& start) const {
+EnergyDecayingIntegrator::Coefficients EnergyDecayingIntegrator::Choose(const State& start, bool dissipation) const {
   Coefficients c;
   c.nodes.resize(model_.num_nodes());
   c.variables.assign(model_.num_variables(), 0.0);
   c.elements.assign(model_.elements().size(), 0.0);
-  if (alpha_inf_ == 0.0 || start.history_steps < 1) return c;
+  if (!dissipation || alpha_inf_ == 0.0 || start.history_steps < 1) return c;
   // Elements with a stretch of their own (beams) start with it on where it dissipated over the last converged
   // step, as the nodes below (their rule is the previous step's check); the check after convergence turns it
   // off where it would gain energy.
@@ -182,9 +182,17 @@ double EnergyDecayingIntegrator::ExpectedJudgingContraction() const {
 }
 
 StepResult EnergyDecayingIntegrator::Step(const State& given, double h, State* end) {
+  return StepFrom(given, h, end, true);
+}
+
+StepResult EnergyDecayingIntegrator::TrialStep(const State& given, double h, State* end) {
+  return StepFrom(given, h, end, false);
+}
+
+StepResult EnergyDecayingIntegrator::StepFrom(const State& given, double h, State* end, bool dissipation) {
   const State& start = StartOf(given, h);
   started_projected_ = &start == &projected_start_;
-  const StepResult result = SolveStep(start, h, end);
+  const StepResult result = SolveStep(start, h, end, dissipation);
   if (result.status == StepStatus::kRejectedEvent && end_rate_event_ && h < kShortStepFraction * given.h_prev) {
     short_event_start_ = given.t;
   }
@@ -207,9 +215,9 @@ const State& EnergyDecayingIntegrator::StartOf(const State& given, double h) {
   return projection_.Apply(&projected_start_, nothing_held) ? projected_start_ : given;
 }
 
-StepResult EnergyDecayingIntegrator::SolveStep(const State& start, double h, State* end) {
+StepResult EnergyDecayingIntegrator::SolveStep(const State& start, double h, State* end, bool dissipation) {
   end_rate_event_ = false;
-  Coefficients coefficients = Choose(start);
+  Coefficients coefficients = Choose(start, dissipation);
   modes_ = start.effects;
   redundancy_.Mark(start, &modes_);
   builder_.set_effect_modes(&modes_);
