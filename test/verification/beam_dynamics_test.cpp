@@ -198,9 +198,11 @@ TEST(BeamDynamics, SpinningBladeCarriesItsCentrifugalTension) {
   // The scheme removes the start's axial vibration (~4e-4 J) and little of the 66.7 J spin; the spurious
   // compression fed it 6.2 J.
   EXPECT_LT(last.numerical_dissipation, 1.0e-4 * initial);
-  // The books close to what the default Newton tolerance (1e-6 of the forces) leaves in each step's work:
-  // 2e-8 of the energy over the run measured, 1e-7 allowed.
-  EXPECT_NEAR(last.total() + last.numerical_dissipation, initial, 1.0e-7 * initial);
+  // The books close to what the default Newton tolerance (1e-6 of the forces) leaves in each step's work, which
+  // scatters with where the steps fall: 1.21e-7 of the energy over the run at the trials' first step of 5.02e-3 s;
+  // 1.2e-9, 1.16e-7 and 9.7e-8 with dt 3e-3, 4e-3 and 5e-3 s; 2.6e-9 with tol 1e-7. Before the trials left out the
+  // scheme's dissipation (first step 5.22e-3 s) 7.2e-8, and 1.15e-7 with dt 4e-3 s. Twice the largest allowed.
+  EXPECT_NEAR(last.total() + last.numerical_dissipation, initial, 2.5e-7 * initial);
   // Steps follow the blade's slow motion (399 measured; the spurious compression took 32,825).
   EXPECT_LT(simulation.statistics().accepted, 1000);
 }
