@@ -364,9 +364,13 @@ void EnergyDecayingIntegrator::Commit(const State& start, const Eigen::VectorXd&
     n.R = s.R_f;
     n.v = s.v_f;
     n.w = s.w_f;
-    n.a_prev2 = start.nodes[k].a_prev;
+    // The lags of the next step (T3b): this step's mean acceleration, and the one before for the choice of alpha,
+    // turned with the node through the step, so that a node carried round a steady spin lags its own change of
+    // velocity (docs/theory.md, "A steady spin: the lag turns with the node").
+    const Mat3 turn = s.R_f * s.R_i.transpose();
+    n.a_prev2 = turn * start.nodes[k].a_prev;
     n.alpha_prev2 = start.nodes[k].alpha_prev;
-    n.a_prev = (s.v_f - s.v_i) / h;
+    n.a_prev = turn * (s.v_f - s.v_i) / h;
     n.alpha_prev = (s.w_f - s.w_i) / h;
   }
   for (int k = 0; k < model_.num_variables(); ++k) end->q[k] = (*ctx.variables)[k].q_f;
