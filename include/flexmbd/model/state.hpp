@@ -19,9 +19,10 @@ struct NodeState {
   Vec3 v = Vec3::Zero();            ///< velocity in W [m/s]
   Vec3 w = Vec3::Zero();            ///< angular velocity, in the node frame [rad/s]
   Vec3 a_prev = Vec3::Zero();       ///< linear acceleration of the last accepted step, in W [m/s^2]: its mean
-                                    ///< (energy-consistent schemes) or its end value (generalized-alpha)
+                                    ///< turned with the node through the step (energy-consistent schemes, (T3b))
+                                    ///< or its end value (generalized-alpha)
   Vec3 alpha_prev = Vec3::Zero();   ///< angular acceleration of the last accepted step, node frame [rad/s^2]
-  Vec3 a_prev2 = Vec3::Zero();      ///< a_prev of the step before [m/s^2]
+  Vec3 a_prev2 = Vec3::Zero();      ///< a_prev of the step before (turned once more, (T3b)) [m/s^2]
   Vec3 alpha_prev2 = Vec3::Zero();  ///< alpha_prev of the step before [rad/s^2]
   /// Mean velocities (x_f - x_i)/h and mean angular velocities (rotation vector of the step in W, over h) of the
   /// last three accepted steps, newest first [m/s, rad/s]: the local error estimate's history (T12).

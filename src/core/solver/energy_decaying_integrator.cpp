@@ -14,8 +14,12 @@ namespace flexmbd {
 namespace {
 // The dissipation of one node's translation or rotation over a step is alpha (dv - h a_prev) . M dv (M the
 // node's mass, or its inertia tensor for rotations): it is used only where that product is >= 0, judged with
-// the previous step's values beforehand and checked after convergence.
-bool Dissipates(const Vec3& dv, const Vec3& dv_lagged, const Mat3& M) { return (dv - dv_lagged).dot(M * dv) >= 0.0; }
+// the previous step's values beforehand and checked after convergence. A product within Newton's tolerance `tol` of
+// the two changes' sizes counts as >= 0: on a steady spin the turned lag (T3b) matches the change, the product's sign
+// is the solve's error, and deciding it node by node broke a symmetric rotor's symmetry (RotorInflow, hover).
+bool Dissipates(const Vec3& dv, const Vec3& dv_lagged, const Mat3& M, double tol) {
+  return (dv - dv_lagged).dot(M * dv) >= -tol * (dv.dot(M * dv) + dv_lagged.dot(M * dv_lagged));
+}
 
 // Smallest acceleration a step's change of motion is judged against [m/s^2 or rad/s^2]: a step that coasts
 // still converges to a velocity error of tol times this per unit time.
@@ -96,8 +100,8 @@ EnergyDecayingIntegrator::Coefficients EnergyDecayingIntegrator::Choose(const St
   const double ratio = start.history_steps >= 2 ? 1.0 : 0.0;  // no a_prev2 before the second step
   for (int k = 0; k < model_.num_nodes(); ++k) {
     const NodeState& n = start.nodes[k];
-    c.nodes[k].alpha_translation = Dissipates(n.a_prev, ratio * n.a_prev2, Mat3::Identity()) ? alpha_inf_ : 0.0;
-    c.nodes[k].alpha_rotation = Dissipates(n.alpha_prev, ratio * n.alpha_prev2, node_inertia_[k]) ? alpha_inf_ : 0.0;
+    c.nodes[k].alpha_translation = Dissipates(n.a_prev, ratio * n.a_prev2, Mat3::Identity(), model_.solver().tol) ? alpha_inf_ : 0.0;
+    c.nodes[k].alpha_rotation = Dissipates(n.alpha_prev, ratio * n.alpha_prev2, node_inertia_[k], model_.solver().tol) ? alpha_inf_ : 0.0;
   }
   if (start.qddot_prev2.size() != model_.num_variables()) return c;
   for (int k = 0; k < model_.num_variables(); ++k) {
@@ -119,8 +123,8 @@ bool EnergyDecayingIntegrator::DropEnergyGainingDissipation(const State& start, 
   for (int k = 0; k < model_.num_nodes(); ++k) {
     const NodeStep& s = (*ctx.nodes)[k];
     const NodeState& n = start.nodes[k];
-    drop_unless(Dissipates(s.v_f - s.v_i, h * n.a_prev, Mat3::Identity()), &c->nodes[k].alpha_translation);
-    drop_unless(Dissipates(s.w_f - s.w_i, h * n.alpha_prev, node_inertia_[k]), &c->nodes[k].alpha_rotation);
+    drop_unless(Dissipates(s.v_f - s.v_i, h * n.a_prev, Mat3::Identity(), model_.solver().tol), &c->nodes[k].alpha_translation);
+    drop_unless(Dissipates(s.w_f - s.w_i, h * n.alpha_prev, node_inertia_[k], model_.solver().tol), &c->nodes[k].alpha_rotation);
   }
   for (int k = 0; k < model_.num_variables(); ++k) {
     const VariableStep& v = (*ctx.variables)[k];
@@ -372,9 +376,13 @@ void EnergyDecayingIntegrator::Commit(const State& start, const Eigen::VectorXd&
     n.R = s.R_f;
     n.v = s.v_f;
     n.w = s.w_f;
-    n.a_prev2 = start.nodes[k].a_prev;
+    // The lags of the next step (T3b): this step's mean acceleration, and the one before for the choice of alpha,
+    // turned with the node through the step, so that a node carried round a steady spin lags its own change of
+    // velocity (docs/theory.md, "A steady spin: the lag turns with the node").
+    const Mat3 turn = s.R_f * s.R_i.transpose();
+    n.a_prev2 = turn * start.nodes[k].a_prev;
     n.alpha_prev2 = start.nodes[k].alpha_prev;
-    n.a_prev = (s.v_f - s.v_i) / h;
+    n.a_prev = turn * (s.v_f - s.v_i) / h;
     n.alpha_prev = (s.w_f - s.w_i) / h;
   }
   for (int k = 0; k < model_.num_variables(); ++k) end->q[k] = (*ctx.variables)[k].q_f;
