@@ -1,8 +1,10 @@
 #include <algorithm>
+#include <cmath>
 
 #include "flexmbd/io/message_text.hpp"
 #include "flexmbd/io/urdf_limit.hpp"
 #include "flexmbd/io/yaml_sections.hpp"
+#include "flexmbd/math/time_function.hpp"
 
 namespace flexmbd {
 namespace io {
@@ -11,6 +13,11 @@ const std::vector<std::string> kBacklashKeys = {"lower", "lower_deg", "upper",  
                                                 "radius_lower", "radius_upper", "stop", "retract"};
 const std::vector<std::string> kStopKeys = {"type", "law", "stiffness", "exponent", "restitution", "steps_per_contact"};
 const std::vector<std::string> kRetractKeys = {"joint", "above", "below"};
+
+// A drive that ends on a stop (a table to the stop's position) touches it: only its time function's rounding
+// separates the two, typed to the same value, so a drive counts as passing a stop beyond this fraction of
+// max(1, |stop|).
+constexpr double kTouchTolerance = 1.0e-9;
 
 // `stop:` the contact model shared by the block's stops (rigid when absent).
 void ReadContact(const Field& field, StopSpec* stop) {
@@ -121,6 +128,25 @@ std::vector<StopSpec> ReadBlock(const Field& block, const JointSpec& joint, int 
   return stops;
 }
 }  // namespace
+
+void CheckDriveWithinRigidStops(const Field& drive, const VariableEffectsSpec& effects, double t_end,
+                                const std::string& unit) {
+  if (effects.drives.empty()) return;
+  const ValueRange range = RangeOver(effects.drives.front(), 0.0, t_end);
+  for (const StopSpec& stop : effects.stops) {
+    // An elastic stop gives way (the drive presses into it); a retracting one may be out of the way by then.
+    if (stop.kind != StopSpec::Kind::kRigid || !stop.retraction.joint.empty()) continue;
+    const bool upper = stop.side == StopSpec::Side::kUpper;
+    const double reached = upper ? range.greatest : range.least;
+    const double beyond = upper ? reached - stop.limit : stop.limit - reached;
+    if (beyond <= kTouchTolerance * std::max(1.0, std::abs(stop.limit))) continue;
+    drive.Fail("the drive reaches " + FormatNumber(reached) + " [" + unit + "] at t = " +
+               FormatNumber(upper ? range.t_greatest : range.t_least) + " s, beyond the rigid " + stop.name +
+               " stop at " + FormatNumber(stop.limit) + " [" + unit + "] (solver.t_end " + FormatNumber(t_end) +
+               " s): a prescribed motion cannot pass a rigid stop; expected a drive that stays within its rigid "
+               "stops up to solver.t_end, an elastic stop (the drive then presses into it) or no stop there");
+  }
+}
 
 std::vector<StopSpec> ReadBacklash(const Field& backlash, const JointSpec& joint, int variable,
                                    const VariableUnits& units, std::vector<std::string>* warnings) {

@@ -236,6 +236,7 @@ void ReadVariable(const std::vector<Field>& sources, int variable, JointSpec* jo
   if (drive.present()) effects.drives = {ReadTimeFunction(drive, units.position, units.measure)};
   const Field backlash = Pick(sources, "backlash");
   if (backlash.present()) effects.stops = ReadBacklash(backlash, *joint, variable, units, run.warnings);
+  CheckDriveWithinRigidStops(drive, effects, run.t_end, units.position);
   const Field friction = Pick(sources, "friction");
   if (friction.present()) effects.frictions = {ReadFriction(friction, units)};
   const Field initial = Pick(sources, "initial");

@@ -29,15 +29,33 @@ void ReadVector(const Field& entry, LoadSpec* load) {
                                  : ReadVec3(moment, Quantity{"a moment", Bound::kAny, "N m"});
 }
 
+bool IsBeam(const UrdfModel& model, const std::string& name) {
+  for (const BeamSpec& beam : model.spec.beams) {
+    if (beam.name == name) return true;
+  }
+  return false;
+}
+
 // A distributed load is per unit length along a whole beam: no point, and its body must be a beam.
 void ReadDistribution(const Field& entry, const UrdfModel& model, const LoadSpec& load) {
   if (entry.Child("point").present()) {
     entry.Child("point").Fail("is given for a distributed load; expected no point (the load is uniform along the beam)");
   }
-  for (const BeamSpec& beam : model.spec.beams) {
-    if (beam.name == load.body) return;
-  }
+  if (IsBeam(model, load.body)) return;
   entry.Child("distributed").Fail("true on '" + load.body + "', which is not a beam; expected a link under beams:");
+}
+
+// A moment acts on a whole rigid body, so it has no point there; on a beam the point's x picks the node it acts on
+// (the tip's moment of a cantilever), and an offset across the beam would have no meaning.
+void CheckMomentPoint(const Field& point, const UrdfModel& model, const LoadSpec& load) {
+  if (!IsBeam(model, load.body)) {
+    point.Fail("applies only to forces, and to moments on beams (where its x picks the node); a moment on the rigid "
+               "body '" + load.body + "' has no point of application");
+  }
+  if (load.p_BoP_B.y() != 0.0 || load.p_BoP_B.z() != 0.0) {
+    point.Fail(FormatVector(load.p_BoP_B) + " is off the axis of beam '" + load.body +
+               "'; expected [x, 0, 0] for a moment: x picks the node it acts on, and a moment has no lever arm");
+  }
 }
 
 LoadSpec ReadLoad(const Field& entry, const UrdfModel& model) {
@@ -52,9 +70,8 @@ LoadSpec ReadLoad(const Field& entry, const UrdfModel& model) {
   }
   const Field point = entry.Child("point");
   if (point.present()) {
-    if (load.kind == LoadSpec::Kind::kMoment)
-      point.Fail("applies only to forces; a moment has no point of application");
     load.p_BoP_B = ReadVec3(point, Quantity{"a point in the body frame", Bound::kAny, "m"});
+    if (load.kind == LoadSpec::Kind::kMoment) CheckMomentPoint(point, model, load);
   }
   OverlayBool(entry, "distributed", &load.distributed);
   if (load.distributed) ReadDistribution(entry, model, load);

@@ -159,6 +159,35 @@ TEST(BacklashConfig, RetractionBelowNotUnderAboveIsRejected) {
                       "above");
 }
 
+TEST(BacklashConfig, DriveThroughARigidStopIsRejected) {
+  // Found as a user: a slide driven from 0 to 2 m with a rigid stop at 1 m loaded, ran to 0.5 s and failed there
+  // on a singular matrix ("step size fell below dt_min ... a drive on a fixed motion").
+  EXPECT_CONFIG_ERROR(Load("joints: {slide: {drive: {law: linear_ramp, value: 2.0, duration: 1.0}, "
+                           "backlash: {upper: 0.5}}}\nsolver: {t_end: 1.0}"),
+                      "test.yaml: joints.slide.drive: the drive reaches 2 [m] at t = 1 s, beyond the rigid upper stop "
+                      "at 0.5 [m] (solver.t_end 1 s): a prescribed motion cannot pass a rigid stop; expected a drive "
+                      "that stays within its rigid stops up to solver.t_end, an elastic stop (the drive then presses "
+                      "into it) or no stop there");
+  EXPECT_CONFIG_ERROR(Load("joints: {hinge: {variables: [{drive: {law: sine, amplitude: 0.3, frequency: 1.0}, "
+                           "backlash: [{lower: -0.2}, {lower: -0.4}]}]}}"),
+                      "test.yaml: joints.hinge.variables[0].drive: the drive reaches -0.3 [rad] at t = 0.75 s, beyond "
+                      "the rigid lower stop at -0.2 [rad]");
+}
+
+TEST(BacklashConfig, DriveOntoOrIntoAStopThatGivesWayIsAccepted) {
+  // Up to the stop and no further (touching), into an elastic stop, past a rigid stop that retracts, or a path
+  // that passes the stop only after t_end, or in a static analysis (which takes the drive at t = 0 only).
+  for (const std::string joint :
+       {"slide: {drive: {law: table, times: [0, 0.5], values: [0, 0.5]}, backlash: {upper: 0.5}}",
+        "slide: {drive: {law: linear_ramp, value: 2.0}, backlash: {upper: 0.5, stop: {type: elastic, stiffness: 1e4}}}",
+        "hinge: {drive: {law: linear_ramp, value: 0.6}, backlash: {upper: 0.5, retract: {joint: spin, above: 2, below: 1}}}",
+        "slide: {drive: {law: linear_ramp, value: 2.0, start: 1.0}, backlash: {upper: 0.5}}"}) {
+    EXPECT_NO_THROW(Load("joints: {" + joint + "}\nsolver: {t_end: 1.0}")) << joint;
+  }
+  EXPECT_NO_THROW(Load("joints: {slide: {drive: {law: linear_ramp, value: 2.0}, backlash: {upper: 0.5}}}\n"
+                       "solver: {analysis: static}"));
+}
+
 TEST(BacklashConfig, UnknownRetractionJointIsRejectedByBuildModel) {
   const ModelSpec spec = Load("joints: {hinge: {backlash: {upper: 0.1, retract: {joint: spinn, above: 2, below: 1}}}}");
   EXPECT_CONFIG_ERROR(BuildModel(spec), "joint 'hinge': stop 'upper': retract.joint 'spinn' is not a joint of the "

@@ -95,6 +95,28 @@ TEST(BeamExtensionsConfig, DistributedLoadWithAPointIsRejected) {
               "arm.yaml: loads[0].point: is given for a distributed load; expected no point");
 }
 
+TEST(BeamExtensionsConfig, MomentOnABeamActsOnTheNodeItsPointPicks) {
+  // Found as a user: a cantilever's tip moment could not be given (a moment's point was refused), and without a
+  // point the moment went to the clamped root node, where it moved nothing.
+  const ModelSpec spec = LoadDataUrdf("beam_arm.urdf", Replaced("force: [0.0, 0.0, -2.0], distributed: true, frame: body",
+                                                                "moment: [0.0, 0.0, 3.0], point: [1.0, 0.0, 0.0]"),
+                                      "arm.yaml");
+  ASSERT_EQ(spec.loads.size(), 1u);
+  EXPECT_EQ(spec.loads[0].kind, LoadSpec::Kind::kMoment);
+  EXPECT_EQ(spec.loads[0].p_BoP_B, Vec3(1.0, 0.0, 0.0));
+}
+
+TEST(BeamExtensionsConfig, MomentOffTheBeamAxisOrOnARigidBodyWithAPointIsRejected) {
+  ExpectError(Replaced("force: [0.0, 0.0, -2.0], distributed: true, frame: body",
+                       "moment: [0.0, 0.0, 3.0], point: [1.0, 0.1, 0.0]"),
+              "arm.yaml: loads[0].point: [1, 0.1, 0] is off the axis of beam 'arm'; expected [x, 0, 0] for a "
+              "moment: x picks the node it acts on, and a moment has no lever arm");
+  ExpectError(Replaced("{body: arm, force: [0.0, 0.0, -2.0], distributed: true, frame: body}",
+                       "{body: tip, moment: [0.0, 0.0, 3.0], point: [0.1, 0.0, 0.0]}"),
+              "arm.yaml: loads[0].point: applies only to forces, and to moments on beams (where its x picks the "
+              "node); a moment on the rigid body 'tip' has no point of application");
+}
+
 TEST(BeamExtensionsConfig, StationsOffTheBeamAreRejectedAtModelBuild) {
   // Hand-written specs skip the YAML checks; the model build repeats them.
   ModelSpec spec = LoadDataUrdf("beam_arm.urdf", kArmYaml, "arm.yaml");

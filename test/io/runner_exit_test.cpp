@@ -215,6 +215,20 @@ TEST(RunnerExit, StaticAnalysisOfAnUnheldJointSaysItsMatrixIsSingular) {
   ExpectStaticWords(failed.stderr_text);
 }
 
+TEST(RunnerExit, StaticAnalysisOfAJointOnlyFrictionHoldsSaysFrictionIsLeftOut) {
+  // Found as a user: a block held on its incline by friction (mu_s 0.7 > tan 30 deg) has no static equilibrium, as
+  // friction is left out of it; the message said to hold every part, not that the friction given was left out.
+  const RunOutcome failed =
+      RunRunner("--urdf " + Data("urdf/incline.urdf") + " --config " +
+                WriteFile("static_friction.yaml", "joints: {slide: {friction: {mu_s: 0.7, mu_k: 0.6}}}\n"
+                                                  "solver: {analysis: static}\n"));
+  EXPECT_EQ(failed.exit_status, kRunFailedExit);
+  EXPECT_NE(failed.stderr_text.find("; friction (on slide) is left out of a static analysis: to hold a joint where "
+                                    "friction would, give it initial.static_hold\n"),
+            std::string::npos)
+      << failed.stderr_text;
+}
+
 TEST(RunnerExit, CsvOnAFullDeviceExitsWithThreeInOneLineNamingTheFile) {
   const RunOutcome out = RunRunner(DoublePendulumCase() + " --csv /dev/full");
   EXPECT_EQ(out.exit_status, kRunFailedExit);

@@ -4,8 +4,10 @@
 
 #include <cmath>
 
+#include "../integration/helpers/csv_table.hpp"
 #include "beam_cases.hpp"
 #include "flexmbd/solver/simulation.hpp"
+#include "runner_output.hpp"
 
 namespace flexmbd {
 namespace beam_static_test {
@@ -47,6 +49,31 @@ TEST(BeamStatics, TipMomentPiEIOverLMakesHalfCircle) {
   EXPECT_NEAR(tip.x(), 0.0, kTolerance * kLength);
   EXPECT_NEAR(tip.y(), 2.0 * kLength / M_PI, kTolerance * kLength);
   EXPECT_NEAR(tip.z(), 0.0, kTolerance * kLength);
+}
+
+TEST(BeamStatics, TipMomentFromYamlAtDefaultSettingsMakesHalfCircle) {
+  // As a user writes it, through the runner at the default solver settings: the moment's point picks the tip node
+  // (docs/config.md, loads[]). The tip moves from (L, 0, 0) to (0, 2 L / pi, 0), with the curvature pi / L
+  // and the moment pi EI / L all along (its rotation, pi, lies on the rotation vector's branch cut).
+  const std::string csv = testing::TempDir() + "tip_moment_half_circle.csv";
+  const std::string yaml =
+      "beams: {arm: {length: 1.0, elements: 8, section: {EA: 1.0e8, GA2: 1.0e8, GA3: 1.0e8, GJ: 100.0, EI2: 100.0,\n"
+      "        EI3: 100.0, m: 1.0, m_ii: [1.0e-3, 1.0e-3, 1.0e-3]}}}\n"
+      "loads: [{body: arm, moment: [0.0, 0.0, 314.1592653589793], point: [1.0, 0.0, 0.0]}]\n"
+      "solver: {analysis: static, gravity: [0.0, 0.0, 0.0]}\n"
+      "output: {csv: " + csv + ", beam_stations: {arm: [1.0]}}\n";
+  test::RunnerOutput("test/data/urdf/cantilever.urdf", yaml, "tip_moment_half_circle");
+  const test::CsvTable table = test::ReadCsv(csv);
+  ASSERT_EQ(table.rows.size(), 1u);
+  const std::vector<double>& tip = table.rows.back();
+  // As TipMomentPiEIOverLMakesHalfCircle: cubic elements represent the arc to ~1e-6 L, the finite EA adds ~1e-6 L;
+  // Newton's default tol (1e-6, relative) leaves less.
+  constexpr double kTolerance = 1.0e-4;
+  EXPECT_NEAR(tip[table.Column("beam.arm.s0.ux")], -kLength, kTolerance * kLength);
+  EXPECT_NEAR(tip[table.Column("beam.arm.s0.uy")], 2.0 * kLength / M_PI, kTolerance * kLength);
+  EXPECT_NEAR(tip[table.Column("beam.arm.s0.uz")], 0.0, kTolerance * kLength);
+  EXPECT_NEAR(tip[table.Column("beam.arm.s0.k3")], M_PI / kLength, kTolerance * M_PI / kLength);
+  EXPECT_NEAR(tip[table.Column("beam.arm.s0.M3")], M_PI * kEI / kLength, kTolerance * M_PI * kEI / kLength);
 }
 
 // Inextensible, shear-rigid elastica of a cantilever (L = EI = 1) under a dead tip load k across the beam:

@@ -28,6 +28,11 @@ VariableUnits UnitsOf(const JointSpec& joint, int variable);
 std::vector<StopSpec> ReadBacklash(const Field& backlash, const JointSpec& joint, int variable,
                                    const VariableUnits& units, std::vector<std::string>* warnings);
 
+/// Fails at `drive` if the drive of a variable (its path up to `t_end`, 0 for a static or eigen-analysis) passes
+/// one of its rigid stops that does not retract: the run would stop there on a singular matrix.
+void CheckDriveWithinRigidStops(const Field& drive, const VariableEffectsSpec& effects, double t_end,
+                                const std::string& unit);
+
 /// `friction:` of one joint variable: Coulomb friction with sticking (or the regularised law).
 FrictionSpec ReadFriction(const Field& friction, const VariableUnits& units);
 

@@ -213,6 +213,18 @@ StaticResult SolveLoadSteps(const Model& model, SparseSystem* system, const std:
   return result;
 }
 
+// Friction holds nothing in a static analysis (docs/theory.md, "Friction"): a joint it would hold in a dynamic run
+// is free here, which a user who gave the friction does not expect.
+std::string FrictionLeftOut(const Model& model) {
+  if (model.frictions().empty()) return "";
+  std::string names;
+  for (const FrictionInfo& friction : model.frictions()) {
+    names += (names.empty() ? "" : ", ") + model.variable_names()[friction.variable];
+  }
+  return "; friction (on " + names + ") is left out of a static analysis: to hold a joint where friction would, give "
+         "it initial.static_hold";
+}
+
 }  // namespace
 
 StaticResult SolveStatic(const Model& model, SparseSystem* system, State* state) {
@@ -286,6 +298,7 @@ std::string DescribeStaticFailure(const Model& model, const StaticResult& result
   if (result.last.singular) {
     text << "; check that every part is held in the equilibrium (a joint free to move with nothing to stop it, "
             "no spring, stop or drive, has none) and for constraints that repeat each other";
+    text << FrictionLeftOut(model);
   } else {
     text << "; try more load increments (solver.load_steps), a larger solver.max_iterations or solver.tol, or "
             "check that an equilibrium exists (a load that nothing holds has none)";
