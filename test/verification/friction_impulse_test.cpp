@@ -50,6 +50,16 @@ void StartAndRunTo(Simulation* simulation, double t, bool start = true) {
   simulation->AdvanceTo(t, simulation->model().solver().t_end, ignore);
 }
 
+// Runs the arm of two_link_arm.urdf with `yaml` (which has `output: {rate_hz: 0}`) through the runner, its samples
+// written to a CSV named after `name`; the runner's output in *output, the samples as returned.
+test::CsvTable RunArm(const std::string& yaml, const std::string& name, std::string* output) {
+  const std::string csv = testing::TempDir() + name + ".csv";
+  std::string with_csv = yaml;
+  with_csv.replace(with_csv.find("output: {rate_hz: 0}"), 20, "output: {rate_hz: 0, csv: " + csv + "}");
+  *output = test::RunnerOutput("test/data/urdf/two_link_arm.urdf", with_csv, name);
+  return test::ReadCsv(csv);
+}
+
 // The second arm's impulsive motion when the first's rate jumps from w1_0 to w1 about y at shoulder and elbow angles
 // q1, q2, the second turning at w2_0 (absolute) before, with friction of mu_s, mu_k on a race of radius rho at the
 // elbow. The elbow's reaction impulse on the second arm, P = m (v_c - v_c0), is the normal impulse, and the change of
@@ -127,12 +137,9 @@ TEST(FrictionImpulse, ArmWhoseShoulderStartsAtARateUnderAStuckElbowRunsToItsEnd)
   sine.replace(sine.find(ramp_drive), ramp_drive.size(),
                "drive: {law: sine, amplitude: -0.8, frequency: 1.0, start: 0.5}");  // -5.0 rad/s at 0.5 s
   for (const std::string& yaml : {ramp, sine}) {
-    const std::string csv = testing::TempDir() + "friction_impulse.csv";
-    std::string with_csv = yaml;
-    with_csv.replace(with_csv.find("output: {rate_hz: 0}"), 20, "output: {rate_hz: 0, csv: " + csv + "}");
-    const std::string output = test::RunnerOutput("test/data/urdf/two_link_arm.urdf", with_csv, "friction_impulse");
+    std::string output;
+    const test::CsvTable table = RunArm(yaml, "friction_impulse", &output);
     SCOPED_TRACE(output);
-    const test::CsvTable table = test::ReadCsv(csv);
     ASSERT_FALSE(table.rows.empty());
     auto at = [&](const std::vector<double>& row, const char* column) { return row.at(table.Column(column)); };
     EXPECT_DOUBLE_EQ(at(table.rows.back(), "t"), 1.0);
@@ -183,12 +190,9 @@ TEST(FrictionImpulse, ElbowSlidingIntoTheShouldersRateJumpSticksOrSlidesBackByCo
   one.replace(one.find("mu_s: 3.0"), 9, "mu_s: 1.0");
   for (const auto& [mu_s, yaml] : {std::pair{3.0, three}, std::pair{1.0, one}}) {
     SCOPED_TRACE(mu_s);
-    const std::string csv = testing::TempDir() + "sliding_elbow.csv";
-    std::string with_csv = yaml;
-    with_csv.replace(with_csv.find("output: {rate_hz: 0}"), 20, "output: {rate_hz: 0, csv: " + csv + "}");
-    const std::string output = test::RunnerOutput("test/data/urdf/two_link_arm.urdf", with_csv, "sliding_elbow");
+    std::string output;
+    const test::CsvTable table = RunArm(yaml, "sliding_elbow", &output);
     SCOPED_TRACE(output);
-    const test::CsvTable table = test::ReadCsv(csv);
     auto at = [&](size_t row, const char* column) { return table.rows.at(row).at(table.Column(column)); };
     size_t jump_row = 0;
     while (jump_row < table.rows.size() && at(jump_row, "t") < kStart) ++jump_row;
