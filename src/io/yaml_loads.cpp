@@ -32,7 +32,8 @@ void ReadVector(const Field& entry, LoadSpec* load) {
 // A distributed load is per unit length along a whole beam: no point, and its body must be a beam.
 void ReadDistribution(const Field& entry, const UrdfModel& model, const LoadSpec& load) {
   if (entry.Child("point").present()) {
-    entry.Child("point").Fail("is given for a distributed load; expected no point (the load is uniform along the beam)");
+    entry.Child("point").Fail(
+        "is given for a distributed load; expected no point (the load is uniform along the beam)");
   }
   for (const BeamSpec& beam : model.spec.beams) {
     if (beam.name == load.body) return;

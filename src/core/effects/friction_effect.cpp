@@ -43,7 +43,8 @@ bool BreakawayToLocate(double fraction) { return fraction > kBreakawayEventFract
 }  // namespace
 
 FrictionEffect::FrictionEffect(const FrictionSpec& spec, const Joint& joint, int variable_unknown, int stick_multiplier,
-                             int stick_multiplier_unknown, int joint_multiplier_unknown, int slot, const SolverSpec& solver)
+                               int stick_multiplier_unknown, int joint_multiplier_unknown, int slot,
+                               const SolverSpec& solver)
     : ModalEffect(slot),
       spec_(spec),
       solver_(solver),
