@@ -110,7 +110,8 @@ void CsvSink::Write(const OutputSample& s) {
     if (!harmonic_rotors_[k]) continue;
     for (double value : {rotor.inflow_cos, rotor.inflow_sin, rotor.moment_cos, rotor.moment_sin}) PutField(out_, value);
   }
-  for (double value : {s.kinetic, s.potential, s.total(), s.external_work, s.dissipated, s.numerical_dissipation, s.dt}) {
+  for (double value :
+       {s.kinetic, s.potential, s.total(), s.external_work, s.dissipated, s.numerical_dissipation, s.dt}) {
     PutField(out_, value);
   }
   out_ << ',' << s.iterations << '\n';

@@ -83,7 +83,9 @@ void CheckUrdfTree(const urdf::ModelInterface& urdf, const std::string& urdf_nam
     const urdf::Link* link = to_visit.back();
     to_visit.pop_back();
     for (const urdf::JointSharedPtr& joint : link->child_joints) {
-      if (reached.insert(joint->child_link_name).second) to_visit.push_back(urdf.links_.at(joint->child_link_name).get());
+      if (reached.insert(joint->child_link_name).second) {
+        to_visit.push_back(urdf.links_.at(joint->child_link_name).get());
+      }
     }
   }
   for (const auto& entry : urdf.links_) {

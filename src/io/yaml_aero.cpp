@@ -47,7 +47,8 @@ void ReadInflowStates(const Field& entry, int* states) {
 double ReadChordPosition(const Field& field, const std::string& what) {
   const double value = ReadNumber(field, Quantity{what, Bound::kAny, ""});
   if (!(value > -1.0 && value < 1.0)) {
-    field.Fail(field.Text() + " is off the chord; expected " + what + " with -1 < value < 1 (semichords aft of mid-chord)");
+    field.Fail(field.Text() + " is off the chord; expected " + what +
+               " with -1 < value < 1 (semichords aft of mid-chord)");
   }
   return value;
 }
@@ -151,7 +152,8 @@ AeroRotorSpec ReadRotor(const Field& entry, const std::string& name) {
   for (const char* key : {"strips", "radius"}) {
     RequireKey(entry, key, "the rotor's " + std::string(key) + " (docs/config.md, \"aero\")");
   }
-  for (const Field& strip : ListEntries(entry.Child("strips"), "a list of strip names (under aero.strips): the blades")) {
+  for (const Field& strip :
+       ListEntries(entry.Child("strips"), "a list of strip names (under aero.strips): the blades")) {
     rotor.strips.push_back(ReadString(strip, "the name of a strip under aero.strips"));
   }
   if (rotor.strips.empty()) {

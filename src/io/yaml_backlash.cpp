@@ -36,7 +36,8 @@ void ReadContact(const Field& field, StopSpec* stop) {
     stop->law = ReadEnum<StopSpec::Law>(field.Child("law"), "contact law",
                                         {{"linear", StopSpec::Law::kLinear}, {"hertz", StopSpec::Law::kHertz}});
   }
-  const Quantity stiffness{"a contact stiffness", Bound::kPositive, stop->law == StopSpec::Law::kLinear ? "N/m" : "N/m^n"};
+  const Quantity stiffness{"a contact stiffness", Bound::kPositive,
+                           stop->law == StopSpec::Law::kLinear ? "N/m" : "N/m^n"};
   RequireKey(field, "stiffness", Expected(stiffness));
   stop->stiffness = ReadNumber(field.Child("stiffness"), stiffness);
   if (field.Child("exponent").present()) {
@@ -53,7 +54,9 @@ void ReadContact(const Field& field, StopSpec* stop) {
 void ReadRetraction(const Field& field, const VariableUnits& units, StopSpec::Retraction* retraction) {
   CheckKeys(field, kRetractKeys);
   const std::string speed_unit = units.position + "/s of the named joint";
-  for (const char* key : {"joint", "above", "below"}) RequireKey(field, key, "the retraction rule {joint, above, below}");
+  for (const char* key : {"joint", "above", "below"}) {
+    RequireKey(field, key, "the retraction rule {joint, above, below}");
+  }
   retraction->joint = ReadString(field.Child("joint"), "a joint name");
   retraction->retract_above = ReadNumber(field.Child("above"), Quantity{"a speed", Bound::kPositive, speed_unit});
   retraction->engage_below = ReadNumber(field.Child("below"), Quantity{"a speed", Bound::kNonNegative, speed_unit});
@@ -72,7 +75,9 @@ std::string WhyNoLimit(const JointSpec& joint, int variable, const VariableUnits
            units.measure.description;
   }
   if (!joint.has_limits) return joint_name + " has no URDF <limit>";
-  if (variable != 0) return "the URDF <limit> of " + joint_name + " bounds variable 0, not " + units.measure.description;
+  if (variable != 0) {
+    return "the URDF <limit> of " + joint_name + " bounds variable 0, not " + units.measure.description;
+  }
   return "";
 }
 
@@ -122,7 +127,8 @@ std::vector<StopSpec> ReadBlock(const Field& block, const JointSpec& joint, int 
   if (has_upper || from_urdf) add(StopSpec::Side::kUpper, upper, "upper");
   for (const char* side : {"lower", "upper"}) {
     const Field radius = block.Child(std::string("radius_") + side);
-    const bool used = std::any_of(stops.begin(), stops.end(), [side](const StopSpec& s) { return s.name.rfind(side, 0) == 0; });
+    const bool used =
+        std::any_of(stops.begin(), stops.end(), [side](const StopSpec& s) { return s.name.rfind(side, 0) == 0; });
     if (radius.present() && !used) radius.Fail(std::string("there is no ") + side + " stop in this block");
   }
   return stops;
@@ -154,7 +160,9 @@ std::vector<StopSpec> ReadBacklash(const Field& backlash, const JointSpec& joint
   std::vector<StopSpec> stops;
   const std::vector<Field> blocks = ListEntries(backlash, "a backlash block or a list of them");
   // An empty list would give the joint no stops while the key says it has some.
-  if (blocks.empty()) backlash.Fail("[] gives no stops; expected a backlash block or a list of them (no key: no stops)");
+  if (blocks.empty()) {
+    backlash.Fail("[] gives no stops; expected a backlash block or a list of them (no key: no stops)");
+  }
   for (size_t k = 0; k < blocks.size(); ++k) {
     const std::vector<StopSpec> block =
         ReadBlock(blocks[k], joint, variable, units, k == 0 ? "" : "." + std::to_string(k), warnings);

@@ -21,7 +21,9 @@ Eigen::Matrix<double, 6, 6> ReadStiffness(const Field& section) {
   Eigen::Matrix<double, 6, 6> C = Eigen::Matrix<double, 6, 6>::Zero();
   if (full.present()) {
     for (const char* key : kDiagonalKeys) {
-      if (section.Child(key).present()) section.Child(key).Fail("given together with 'stiffness'; expected one of them");
+      if (section.Child(key).present()) {
+        section.Child(key).Fail("given together with 'stiffness'; expected one of them");
+      }
     }
     const std::vector<double> values = ReadNumberList(full, Quantity{"a stiffness entry", Bound::kAny, ""});
     if (values.size() != 36) {

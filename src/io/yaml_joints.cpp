@@ -175,8 +175,10 @@ void ReadInitial(const Field& initial, const Field& drive, const VariableUnits& 
   const std::string rate_unit = units.position + "/s";
   const Quantity position_quantity{"an initial position", Bound::kAny, units.position};
   const Quantity velocity_quantity{"an initial velocity", Bound::kAny, rate_unit};
-  const bool position_given = OverlayMeasure(initial, "position", position_quantity, units.measure, &position).has_value();
-  const bool velocity_given = OverlayMeasure(initial, "velocity", velocity_quantity, units.measure, &velocity).has_value();
+  const bool position_given =
+      OverlayMeasure(initial, "position", position_quantity, units.measure, &position).has_value();
+  const bool velocity_given =
+      OverlayMeasure(initial, "velocity", velocity_quantity, units.measure, &velocity).has_value();
   joint->position_set[variable] = position_given;
   joint->velocity_set[variable] = velocity_given;
   if (!drive.present()) return;

@@ -39,7 +39,8 @@ bool IsBeam(const UrdfModel& model, const std::string& name) {
 // A distributed load is per unit length along a whole beam: no point, and its body must be a beam.
 void ReadDistribution(const Field& entry, const UrdfModel& model, const LoadSpec& load) {
   if (entry.Child("point").present()) {
-    entry.Child("point").Fail("is given for a distributed load; expected no point (the load is uniform along the beam)");
+    entry.Child("point").Fail(
+        "is given for a distributed load; expected no point (the load is uniform along the beam)");
   }
   if (IsBeam(model, load.body)) return;
   entry.Child("distributed").Fail("true on '" + load.body + "', which is not a beam; expected a link under beams:");

@@ -7,10 +7,9 @@
 namespace flexmbd {
 namespace io {
 namespace {
-const std::vector<std::string> kSolverKeys = {"analysis",       "integrator", "rho_inf",      "t_end",  "dt",
-                                              "dt_min",         "dt_max",     "adaptive",     "tol",    "error_tol",
-                                              "error_floor",    "max_iterations", "load_steps", "static_first", "gravity",
-                                              "eigen",          "threads"};
+const std::vector<std::string> kSolverKeys = {
+    "analysis",  "integrator",  "rho_inf",        "t_end",      "dt",           "dt_min",  "dt_max", "adaptive", "tol",
+    "error_tol", "error_floor", "max_iterations", "load_steps", "static_first", "gravity", "eigen",  "threads"};
 // Counts beyond these are typing errors that would run for hours (a fuzzed load_steps of 2e9): each load step is a
 // whole Newton solve, and 10,000 already follow a load path in steps of 1e-4 of the load; a Newton solve that
 // refreshes its tangent whenever it stops contracting fast converges in tens of iterations or not at all.
@@ -221,9 +220,12 @@ void ReadOutput(const Field& output, double t_end, OutputSpec* spec) {
   OverlayNumber(output, "cycle_from", Quantity{"the start of the cycle report", Bound::kNonNegative, "s"},
                 &spec->cycle_from);
   if (spec->cycle_from >= t_end) {
-    cycle.Fail(cycle.Text() + " s is not before solver.t_end " + FormatNumber(t_end) + " s; expected a time in [0, t_end)");
+    cycle.Fail(cycle.Text() + " s is not before solver.t_end " + FormatNumber(t_end) +
+               " s; expected a time in [0, t_end)");
   }
-  if (spec->rate_hz == 0) cycle.Fail("needs equally spaced samples, and output.rate_hz is 0 (every step); expected rate_hz > 0");
+  if (spec->rate_hz == 0) {
+    cycle.Fail("needs equally spaced samples, and output.rate_hz is 0 (every step); expected rate_hz > 0");
+  }
 }
 
 }  // namespace io

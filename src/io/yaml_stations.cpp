@@ -31,7 +31,8 @@ void ReadStationLists(const Field& output, const UrdfModel& model, const char* k
                       BeamOf beam_of, std::map<std::string, std::vector<double>>* lists) {
   const Field stations = output.Child(key);
   if (!stations.present()) return;
-  for (const std::string& name : MapKeys(stations, std::string("a map from ") + kind + " names to lists of stations [m]")) {
+  for (const std::string& name :
+       MapKeys(stations, std::string("a map from ") + kind + " names to lists of stations [m]")) {
     const Field list = stations.Child(name);
     const BeamSpec* beam = beam_of(model, name);
     if (beam == nullptr) list.Fail(NotFoundMessage(kind, kinds, name, where, names));

@@ -221,7 +221,8 @@ bool SimulatorNode::SubscribersReady() {
     std::ostringstream msg;
     msg << "~wait_for_subscribers: still no subscriber on " << topics << " after "
         << settings.wait_for_subscribers_timeout << " s (~wait_for_subscribers_timeout); expected "
-        << settings.wait_for_subscribers << " on every sample topic (a recorder of the topics in ~" << kRecordedTopicsParam << ")";
+        << settings.wait_for_subscribers << " on every sample topic (a recorder of the topics in ~"
+        << kRecordedTopicsParam << ")";
     throw OutputError(msg.str());
   }
   return false;

@@ -398,7 +398,9 @@ int main(int argc, char** argv) {
     } catch (const flexmbd::SolverError& e) {
       std::fprintf(stderr, "flexmbd_run: run failed: %s\n", e.what());
       // A static analysis's message says what it did.
-      if (!IsStatic(model)) std::printf("flexmbd_run: %s\n", simulation.statistics().Summary(simulation.model()).c_str());
+      if (!IsStatic(model)) {
+        std::printf("flexmbd_run: %s\n", simulation.statistics().Summary(simulation.model()).c_str());
+      }
       close_outputs();
       return flexmbd::kExitRunFailed;
     }

@@ -66,7 +66,8 @@ TEST(LoadAndStep, LargerModelsGetLongerTimeLimits) {
   limits.seconds = 100;
   const IsolatedResult isolated = RunIsolated(
       [&] {
-        const TargetResult run = LoadAndStep(FuzzInput{SeedUrdf("test/data/urdf/beam_arm.urdf"), beam, Channel::kFiles});
+        const TargetResult run =
+            LoadAndStep(FuzzInput{SeedUrdf("test/data/urdf/beam_arm.urdf"), beam, Channel::kFiles});
         return TargetResult{run.outcome, run.message + "|" + std::to_string(CpuSecondsLeft())};
       },
       limits);

@@ -79,9 +79,11 @@ TEST(AeroConfig, NonphysicalValuesAreRejected) {
                       "test.yaml: aero.sections.conner.a: -1.5 is off the chord; expected the elastic axis a with "
                       "-1 < value < 1 (semichords aft of mid-chord)");
   EXPECT_CONFIG_ERROR(Load(kValid + "velocity: -3"), "test.yaml: aero.sections.conner.velocity: -3 is negative");
-  EXPECT_CONFIG_ERROR(Load(kValid + "velocity: 20.0, density: 0"), "test.yaml: aero.sections.conner.density: 0 is zero");
-  EXPECT_CONFIG_ERROR(Load(kValid + "velocity: 20.0, inflow_states: 12"),
-                      "test.yaml: aero.sections.conner.inflow_states: 12 is too many; expected 0 <= inflow_states <= 10");
+  EXPECT_CONFIG_ERROR(Load(kValid + "velocity: 20.0, density: 0"),
+                      "test.yaml: aero.sections.conner.density: 0 is zero");
+  EXPECT_CONFIG_ERROR(
+      Load(kValid + "velocity: 20.0, inflow_states: 12"),
+      "test.yaml: aero.sections.conner.inflow_states: 12 is too many; expected 0 <= inflow_states <= 10");
 }
 
 TEST(AeroConfig, WrongTypeIsRejected) {
@@ -107,17 +109,21 @@ TEST(AeroConfig, JointOfTheWrongTypeOrAxisIsRejectedAtBuild) {
       BuildModel(Load("plunge: pitch, pitch: plunge, flap: flap_hinge, semichord: 0.127, a: -0.5, c: 0.5, "
                       "velocity: 20.0")),
       "aero.sections.conner.plunge: joint 'pitch' is not a prismatic joint; expected a prismatic joint");
-  const std::string tilted = std::regex_replace(ConnerUrdf(), std::regex("<axis xyz=\"0 0 1\"/>"), "<axis xyz=\"1 0 0\"/>");
-  EXPECT_CONFIG_ERROR(BuildModel(test::LoadInline(tilted, "aero: {sections: {conner: {" + kValid + "velocity: 20.0}}}")),
-                      "aero.sections.conner.plunge: joint 'plunge' moves along/about an axis at cosine 0 to the world z "
-                      "axis; expected the z axis");
+  const std::string tilted =
+      std::regex_replace(ConnerUrdf(), std::regex("<axis xyz=\"0 0 1\"/>"), "<axis xyz=\"1 0 0\"/>");
+  EXPECT_CONFIG_ERROR(
+      BuildModel(test::LoadInline(tilted, "aero: {sections: {conner: {" + kValid + "velocity: 20.0}}}")),
+      "aero.sections.conner.plunge: joint 'plunge' moves along/about an axis at cosine 0 to the world z "
+      "axis; expected the z axis");
 }
 
 // solver.eigen.sweep.airspeed (docs/config.md, "solver.eigen"): read in order, and refused when it cannot bracket a
 // change of stability or has no section to blow on.
 ModelSpec LoadSweep(const std::string& sweep, const std::string& eigen_extra = "") {
-  return test::LoadInline(ConnerUrdf(), "aero: {sections: {conner: {" + kValid + "velocity: 20.0}}}\n"
-                                        "solver: {analysis: eigen, eigen: {" + eigen_extra + "sweep: {" + sweep + "}}}");
+  return test::LoadInline(ConnerUrdf(), "aero: {sections: {conner: {" + kValid +
+                                            "velocity: 20.0}}}\n"
+                                            "solver: {analysis: eigen, eigen: {" +
+                                            eigen_extra + "sweep: {" + sweep + "}}}");
 }
 
 TEST(AeroConfig, AirspeedSweepIsRead) {

@@ -88,7 +88,9 @@ TEST(AeroRotorConfig, AxisIsNormalised) {
 }
 
 TEST(AeroRotorConfig, BadKeysAndValuesAreRejected) {
-  EXPECT_CONFIG_ERROR(LoadRotor("strips: [blade], radius: 6.5, hub: spin"), "test.yaml: aero.rotors.main.hub: unknown key; valid keys are: strips, radius, axis, inflow, center");
+  EXPECT_CONFIG_ERROR(
+      LoadRotor("strips: [blade], radius: 6.5, hub: spin"),
+      "test.yaml: aero.rotors.main.hub: unknown key; valid keys are: strips, radius, axis, inflow, center");
   EXPECT_CONFIG_ERROR(LoadRotor("strips: [blade], radius: 6.5, inflow: skewed"),
                       "test.yaml: aero.rotors.main.inflow: 'skewed' is not a valid rotor inflow; expected one of "
                       "uniform, harmonic");

@@ -79,7 +79,8 @@ TEST(AeroConfig, StripOnAnUnknownBeamIsRejected) {
 TEST(AeroConfig, StripOnAnUnknownBeamIsRejectedAtBuild) {
   ModelSpec spec = LoadStrip(kValid);
   spec.aero_strips[0].beam = "tail";
-  EXPECT_CONFIG_ERROR(BuildModel(spec), "aero.strips.wing_strips.beam: no beam 'tail'; expected a link under beams: (wing)");
+  EXPECT_CONFIG_ERROR(BuildModel(spec),
+                      "aero.strips.wing_strips.beam: no beam 'tail'; expected a link under beams: (wing)");
 }
 
 TEST(AeroConfig, StripAxesMustCrossTheBeamAtRightAngles) {
@@ -99,9 +100,11 @@ TEST(AeroConfig, StripNonphysicalValuesAreRejected) {
   EXPECT_CONFIG_ERROR(LoadStrip("beam: wing, semichord: 0.9, a: 1"),
                       "test.yaml: aero.strips.wing_strips.a: 1 is off the chord; expected the elastic axis (beam "
                       "axis) a with -1 < value < 1 (semichords aft of mid-chord)");
-  EXPECT_CONFIG_ERROR(LoadStrip(kValid + ", inflow_states: 11"),
-                      "test.yaml: aero.strips.wing_strips.inflow_states: 11 is too many; expected 0 <= inflow_states <= 10");
-  EXPECT_CONFIG_ERROR(Load("density: -1"), "test.yaml: aero.density: -1 is negative; expected an air density > 0 [kg/m^3]");
+  EXPECT_CONFIG_ERROR(
+      LoadStrip(kValid + ", inflow_states: 11"),
+      "test.yaml: aero.strips.wing_strips.inflow_states: 11 is too many; expected 0 <= inflow_states <= 10");
+  EXPECT_CONFIG_ERROR(Load("density: -1"),
+                      "test.yaml: aero.density: -1 is negative; expected an air density > 0 [kg/m^3]");
   EXPECT_CONFIG_ERROR(Load("free_stream: [0, 100]"), "test.yaml: aero.free_stream:");
 }
 
@@ -137,10 +140,12 @@ TEST(AeroConfig, StripFlapBadKeysAreRejected) {
                       "test.yaml: aero.strips.wing.flap.chord: unknown key");
   EXPECT_CONFIG_ERROR(LoadWingAileron("beam: flap, c: 0.5"),
                       "test.yaml: aero.strips.wing.flap.beam: no beam 'flap' in test.urdf");
-  EXPECT_CONFIG_ERROR(LoadWingAileron("beam: wing, c: 0.5"),
-                      "test.yaml: aero.strips.wing.flap.beam: wing carries the strips; expected the control surface's beam");
-  EXPECT_CONFIG_ERROR(LoadWingAileron("beam: aileron, c: 1.0"),
-                      "test.yaml: aero.strips.wing.flap.c: 1.0 is off the chord; expected the flap hinge c with -1 < value < 1");
+  EXPECT_CONFIG_ERROR(
+      LoadWingAileron("beam: wing, c: 0.5"),
+      "test.yaml: aero.strips.wing.flap.beam: wing carries the strips; expected the control surface's beam");
+  EXPECT_CONFIG_ERROR(
+      LoadWingAileron("beam: aileron, c: 1.0"),
+      "test.yaml: aero.strips.wing.flap.c: 1.0 is off the chord; expected the flap hinge c with -1 < value < 1");
 }
 
 TEST(AeroConfig, StripFlapOffTheHingeLineIsRejectedAtBuild) {
@@ -178,18 +183,21 @@ TEST(AeroConfig, StripStationsNameAStripAndStandOnItsBeam) {
                       "[m] (the length of beam wing)");
   EXPECT_CONFIG_ERROR(test::LoadInline(GolandUrdf(), strips + "output: {strip_stations: {wing_strips: [-1]}}"),
                       "test.yaml: output.strip_stations.wing_strips[0]");
-  EXPECT_CONFIG_ERROR(test::LoadInline(GolandUrdf(), kBeam + "output: {strip_stations: {wing_strips: [1.0]}}"),
-                      "test.yaml: output.strip_stations.wing_strips: no strip 'wing_strips' in aero.strips; strips are: (none)");
+  EXPECT_CONFIG_ERROR(
+      test::LoadInline(GolandUrdf(), kBeam + "output: {strip_stations: {wing_strips: [1.0]}}"),
+      "test.yaml: output.strip_stations.wing_strips: no strip 'wing_strips' in aero.strips; strips are: (none)");
   ModelSpec spec = test::LoadInline(GolandUrdf(), strips);
   spec.output.strip_stations["tail"] = {1.0};
-  EXPECT_CONFIG_ERROR(BuildModel(spec), "output.strip_stations.tail: no strip 'tail'; expected a name under aero.strips");
+  EXPECT_CONFIG_ERROR(BuildModel(spec),
+                      "output.strip_stations.tail: no strip 'tail'; expected a name under aero.strips");
 }
 
 TEST(AeroConfig, StripAirspeedSweepNeedsTheStreamsDirection) {
-  EXPECT_CONFIG_ERROR(test::LoadInline(GolandUrdf(), kBeam + "aero: {strips: {wing_strips: {" + kValid +
-                                                         "}}}\nsolver: {analysis: eigen, eigen: {sweep: {airspeed: [10]}}}"),
-                      "test.yaml: solver.eigen.sweep.airspeed: sweeps the strips' free-stream speed along "
-                      "aero.free_stream, which is zero; expected aero.free_stream to give the stream's direction");
+  EXPECT_CONFIG_ERROR(
+      test::LoadInline(GolandUrdf(), kBeam + "aero: {strips: {wing_strips: {" + kValid +
+                                         "}}}\nsolver: {analysis: eigen, eigen: {sweep: {airspeed: [10]}}}"),
+      "test.yaml: solver.eigen.sweep.airspeed: sweeps the strips' free-stream speed along "
+      "aero.free_stream, which is zero; expected aero.free_stream to give the stream's direction");
 }
 
 }  // namespace aero_strip_config_test

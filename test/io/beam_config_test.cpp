@@ -88,7 +88,9 @@ TEST(BeamConfig, NegativeSectionStiffnessNamesTheField) {
   std::string yaml = kArmYaml;
   yaml.replace(yaml.find("EI3: 100.0"), 10, "EI3: -1.0");
   const std::string message = ConfigErrorOf([&] { LoadDataUrdf("beam_arm.urdf", yaml, "arm.yaml"); });
-  EXPECT_NE(message.find("arm.yaml: beams.arm.section.EI3: -1.0 is negative; expected a stiffness EI3 > 0 [N m^2]"), std::string::npos) << message;
+  EXPECT_NE(message.find("arm.yaml: beams.arm.section.EI3: -1.0 is negative; expected a stiffness EI3 > 0 [N m^2]"),
+            std::string::npos)
+      << message;
 }
 
 TEST(BeamConfig, UnknownBeamLinkIsAFieldOfTheYamlThatNamesIt) {

@@ -130,9 +130,10 @@ TEST(ClosureConfig, InitialMotionThatOpensTheLoopIsRejected) {
 }
 
 TEST(ClosureConfig, BadClosuresAreRejectedNamingTheField) {
-  EXPECT_CONFIG_ERROR(Load("closures: {wrist_pin: {type: universal, parent: rod, child: slider, origin: [0, 0, 0]}}"),
-                      "test.yaml: closures.wrist_pin.origin: unknown key; valid keys are: type, parent, child, xyz, rpy, "
-                      "child_xyz, child_rpy, axis, axis2, pitch");
+  EXPECT_CONFIG_ERROR(
+      Load("closures: {wrist_pin: {type: universal, parent: rod, child: slider, origin: [0, 0, 0]}}"),
+      "test.yaml: closures.wrist_pin.origin: unknown key; valid keys are: type, parent, child, xyz, rpy, "
+      "child_xyz, child_rpy, axis, axis2, pitch");
   EXPECT_CONFIG_ERROR(Load("closures: {wrist_pin: {parent: rod, child: slider}}"),
                       "test.yaml: closures.wrist_pin: missing key 'type'");
   EXPECT_CONFIG_ERROR(Load("closures: {wrist_pin: {type: universal, parent: rdo, child: slider}}"),

@@ -47,7 +47,8 @@ std::string OneLinkWithMoments(const std::string& ixx, const std::string& iyy, c
   return R"(<robot name="bad">
     <link name="world"/>
     <link name="l1"><inertial><mass value="1"/>
-      <inertia ixx=")" + ixx + R"(" ixy="0" ixz="0" iyy=")" + iyy + R"(" iyz="0" izz=")" + izz + R"("/></inertial></link>
+      <inertia ixx=")" +
+         ixx + R"(" ixy="0" ixz="0" iyy=")" + iyy + R"(" iyz="0" izz=")" + izz + R"("/></inertial></link>
     <joint name="j1" type="continuous"><parent link="world"/><child link="l1"/><axis xyz="0 0 1"/></joint>
   </robot>)";
 }
@@ -140,14 +141,16 @@ TEST(ConfigErrors, UnknownKeyListsValidKeys) {
 }
 
 TEST(ConfigErrors, CycleReportAfterTheEndIsRejected) {
-  EXPECT_CONFIG_ERROR(Pendulum("solver: {t_end: 2.0}\noutput: {cycle_from: 2.0}"),
-                      "pendulum.yaml: output.cycle_from: 2.0 s is not before solver.t_end 2 s; expected a time in [0, t_end)");
+  EXPECT_CONFIG_ERROR(
+      Pendulum("solver: {t_end: 2.0}\noutput: {cycle_from: 2.0}"),
+      "pendulum.yaml: output.cycle_from: 2.0 s is not before solver.t_end 2 s; expected a time in [0, t_end)");
 }
 
 TEST(ConfigErrors, CycleReportNeedsEquallySpacedSamples) {
-  EXPECT_CONFIG_ERROR(Pendulum("output: {rate_hz: 0, cycle_from: 0.5}"),
-                      "pendulum.yaml: output.cycle_from: needs equally spaced samples, and output.rate_hz is 0 (every step); "
-                      "expected rate_hz > 0");
+  EXPECT_CONFIG_ERROR(
+      Pendulum("output: {rate_hz: 0, cycle_from: 0.5}"),
+      "pendulum.yaml: output.cycle_from: needs equally spaced samples, and output.rate_hz is 0 (every step); "
+      "expected rate_hz > 0");
 }
 
 TEST(ConfigErrors, NegativeCycleReportStartIsRejected) {
@@ -445,9 +448,9 @@ TEST(ConfigErrors, NewlineInAGivenNameKeepsTheMessageOneLine) {
 }
 
 TEST(ConfigErrors, LoadOnUnknownBodyListsBodies) {
-  EXPECT_CONFIG_ERROR(
-      Pendulum("loads: [{body: rdo, force: [1, 0, 0]}]"),
-      "pendulum.yaml: loads[0].body: no body or beam 'rdo' in pendulum.urdf; bodies and beams are: rod; did you mean 'rod'?");
+  EXPECT_CONFIG_ERROR(Pendulum("loads: [{body: rdo, force: [1, 0, 0]}]"),
+                      "pendulum.yaml: loads[0].body: no body or beam 'rdo' in pendulum.urdf; bodies and beams are: "
+                      "rod; did you mean 'rod'?");
 }
 
 TEST(ConfigErrors, PointOnMomentIsRejected) {
@@ -467,7 +470,8 @@ TEST(ConfigErrors, ErrorFloorIsReadAndChecked) {
   EXPECT_EQ(solver.error_floor.position, 1.0e-9);
   EXPECT_EQ(solver.error_floor.rotation, 2.0e-9);
   EXPECT_EQ(solver.error_floor.joint, 3.0e-9);
-  EXPECT_CONFIG_ERROR(Pendulum("solver: {error_floor: {position: -1.0}}"), "pendulum.yaml: solver.error_floor.position");
+  EXPECT_CONFIG_ERROR(Pendulum("solver: {error_floor: {position: -1.0}}"),
+                      "pendulum.yaml: solver.error_floor.position");
   EXPECT_CONFIG_ERROR(Pendulum("solver: {error_floor: {angle: 1.0}}"), "pendulum.yaml: solver.error_floor.angle");
 }
 

@@ -23,7 +23,8 @@ TEST(OutputSize, ValuesPerSampleCountTheCsvColumns) {
 TEST(OutputSize, BeamStationsAddEighteenValuesEach) {
   const std::string yaml = test::ReadDataText("yaml/beam_arm.yaml") + "output: {beam_stations: {arm: [0.0, 1.0]}}\n";
   const Model with = BuildModel(LoadDataUrdf("beam_arm.urdf", yaml, "beam_arm.yaml"));
-  const Model without = BuildModel(LoadDataUrdf("beam_arm.urdf", test::ReadDataText("yaml/beam_arm.yaml"), "beam_arm.yaml"));
+  const Model without =
+      BuildModel(LoadDataUrdf("beam_arm.urdf", test::ReadDataText("yaml/beam_arm.yaml"), "beam_arm.yaml"));
   EXPECT_EQ(OutputValuesPerSample(with) - OutputValuesPerSample(without), 2 * 18);
 }
 
@@ -62,7 +63,8 @@ TEST(OutputSize, BeamStationsAreNamedWhenTheyCount) {
 }
 
 TEST(OutputSize, OptInAllowsLargeOutput) {
-  EXPECT_NO_THROW(Pendulum("solver: {t_end: 1.0e300}\noutput: {rate_hz: 1.0e6, csv: run.csv, allow_large_output: true}"));
+  EXPECT_NO_THROW(
+      Pendulum("solver: {t_end: 1.0e300}\noutput: {rate_hz: 1.0e6, csv: run.csv, allow_large_output: true}"));
 }
 
 TEST(OutputSize, RunWithoutCsvOrBagIsBoundedInSamples) {

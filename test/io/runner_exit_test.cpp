@@ -244,8 +244,8 @@ void ExpectCappedCsvKeepsWholeRows(const std::string& config, const std::string&
   RunOutcome out;
   {
     const flexmbd::test::FileSizeLimit cap(100000);
-    out = RunRunner("--urdf " + std::string(FLEXMBD_SOURCE_DIR) + "/config/double_pendulum/double_pendulum.urdf --config " +
-                    config + " --csv " + csv);
+    out = RunRunner("--urdf " + std::string(FLEXMBD_SOURCE_DIR) +
+                    "/config/double_pendulum/double_pendulum.urdf --config " + config + " --csv " + csv);
   }
   EXPECT_EQ(out.exit_status, kRunFailedExit);
   EXPECT_EQ(std::count(out.stderr_text.begin(), out.stderr_text.end(), '\n'), 1) << out.stderr_text;
@@ -264,8 +264,8 @@ TEST(RunnerExit, CsvOnADiskFillingUpMidRunExitsWithThreeKeepingWholeRows) {
 TEST(RunnerExit, CsvFailingOnTheWriterThreadOfTwoSolverThreadsExitsWithThreeKeepingWholeRows) {
   // With solver.threads 2 the runner writes the samples on a thread of its own: the failure comes from there, is
   // reported once, and the file keeps whole rows, as on one thread (the test above).
-  std::string yaml = flexmbd::ReadTextFile(std::string(FLEXMBD_SOURCE_DIR) + "/config/double_pendulum/double_pendulum.yaml",
-                                           "YAML");
+  std::string yaml =
+      flexmbd::ReadTextFile(std::string(FLEXMBD_SOURCE_DIR) + "/config/double_pendulum/double_pendulum.yaml", "YAML");
   yaml.replace(yaml.find("\nsolver:\n"), 9, "\nsolver:\n  threads: 2\n");
   ExpectCappedCsvKeepsWholeRows(WriteFile("double_pendulum_two_threads.yaml", yaml), "capped_run_two_threads.csv");
 }

@@ -106,25 +106,28 @@ TEST(UrdfLimitConfig, ADriveThatLeavesTheLimitBeforeTheRunEndsIsTakenWithAWarnin
   EXPECT_TRUE(Load(drive + "solver: {analysis: static}").warnings.empty());
 }
 
-// The <limit> is read in the unit of the URDF's type: a revolute's in radians, a prismatic's in metres. A YAML type that
-// gives variable 0 the other unit leaves it out, with a warning naming the file, the joint and both types: before, a
-// revolute made prismatic took its [-0.5, 0.7] rad as metres, in the warnings and as default stops.
+// The <limit> is read in the unit of the URDF's type: a revolute's in radians, a prismatic's in metres. A YAML type
+// that gives variable 0 the other unit leaves it out, with a warning naming the file, the joint and both types: before,
+// a revolute made prismatic took its [-0.5, 0.7] rad as metres, in the warnings and as default stops.
 TEST(UrdfLimitConfig, ALimitInAnotherUnitThanTheYamlTypesVariableIsLeftOutWithAWarningNamingBothTypes) {
   const ModelSpec spec = Load("joints: {hinge: {type: prismatic, initial: {position: 0.9}}}");
-  EXPECT_EQ(spec.warnings, std::vector<std::string>{
-                               "test.yaml: joints.hinge.type: the URDF's revolute joint 'hinge' made prismatic: its "
-                               "<limit> [-0.5, 0.7] is in rad, variable 0 of a prismatic joint in m; the <limit> is left "
-                               "out (no stops from it, no values checked against it)"});
+  EXPECT_EQ(spec.warnings,
+            std::vector<std::string>{
+                "test.yaml: joints.hinge.type: the URDF's revolute joint 'hinge' made prismatic: its "
+                "<limit> [-0.5, 0.7] is in rad, variable 0 of a prismatic joint in m; the <limit> is left "
+                "out (no stops from it, no values checked against it)"});
   const ModelSpec slide = Load("joints: {slide: {type: revolute, backlash: {upper: 3.0}}}");
   ASSERT_EQ(slide.warnings.size(), 1u);
-  EXPECT_EQ(slide.warnings[0].find("test.yaml: joints.slide.type: the URDF's prismatic joint 'slide' made revolute: its "
-                                   "<limit> [-1, 1] is in m, variable 0 of a revolute joint in rad;"),
-            0u)
+  EXPECT_EQ(
+      slide.warnings[0].find("test.yaml: joints.slide.type: the URDF's prismatic joint 'slide' made revolute: its "
+                             "<limit> [-1, 1] is in m, variable 0 of a revolute joint in rad;"),
+      0u)
       << slide.warnings[0];
   // Stops from the <limit> would be in the wrong unit: a block without positions is refused, saying why.
-  EXPECT_CONFIG_ERROR(Load("joints: {hinge: {type: prismatic, backlash: {stop: {type: rigid}}}}"),
-                      "test.yaml: joints.hinge.backlash: gives no stop position and the URDF <limit> of joint 'hinge' "
-                      "is not in m, the unit of variable 0 (s) of prismatic joint 'hinge'; expected lower and/or upper");
+  EXPECT_CONFIG_ERROR(
+      Load("joints: {hinge: {type: prismatic, backlash: {stop: {type: rigid}}}}"),
+      "test.yaml: joints.hinge.backlash: gives no stop position and the URDF <limit> of joint 'hinge' "
+      "is not in m, the unit of variable 0 (s) of prismatic joint 'hinge'; expected lower and/or upper");
 }
 
 TEST(UrdfLimitConfig, ALimitStaysWhereTheYamlTypeKeepsItsUnitAndBoundsVariableZeroOnly) {

@@ -60,7 +60,8 @@ TEST(YamlDocument, TagOnAMapNamesItsKey) {
 }
 
 TEST(YamlDocument, QuotedAndPlainValuesAreAccepted) {
-  const YAML::Node node = io::ParseYamlDocument("output: {csv: \"run.csv\", bag: 'run.bag', rate_hz: 10}\n", "case.yaml");
+  const YAML::Node node =
+      io::ParseYamlDocument("output: {csv: \"run.csv\", bag: 'run.bag', rate_hz: 10}\n", "case.yaml");
   EXPECT_EQ(node["output"]["csv"].as<std::string>(), "run.csv");
 }
 

@@ -94,7 +94,9 @@ TEST(YamlOverlay, SolverSettingsRead) {
 // The default dt_min follows a tolerance tighter than the default one (docs/config.md, solver.dt_min); one given
 // in the YAML stands.
 TEST(YamlOverlay, DefaultMinimumStepFollowsATighterErrorTolerance) {
-  auto solver = [](const std::string& yaml) { return test::LoadDataUrdf("double_pendulum.urdf", yaml, "solver.yaml").solver; };
+  auto solver = [](const std::string& yaml) {
+    return test::LoadDataUrdf("double_pendulum.urdf", yaml, "solver.yaml").solver;
+  };
   EXPECT_EQ(solver("solver: {}").dt_min, 1.0e-7);
   EXPECT_EQ(solver("solver: {error_tol: 1.0e-3}").dt_min, 1.0e-7);
   EXPECT_NEAR(solver("solver: {error_tol: 1.0e-6}").dt_min, 1.0e-9, 1e-24);
@@ -102,9 +104,12 @@ TEST(YamlOverlay, DefaultMinimumStepFollowsATighterErrorTolerance) {
   EXPECT_EQ(solver("solver: {error_tol: 1.0e-6, dt_min: 1.0e-7}").dt_min, 1.0e-7);
 }
 
-// solver.threads (docs/config.md): absent, one thread (two paid 8% of wall time for 55% more CPU on the published antenna); a count given stands.
+// solver.threads (docs/config.md): absent, one thread (two paid 8% of wall time for 55% more CPU on the published
+// antenna); a count given stands.
 TEST(YamlOverlay, ThreadsDefaultToTheCoresAvailable) {
-  auto solver = [](const std::string& yaml) { return test::LoadDataUrdf("double_pendulum.urdf", yaml, "solver.yaml").solver; };
+  auto solver = [](const std::string& yaml) {
+    return test::LoadDataUrdf("double_pendulum.urdf", yaml, "solver.yaml").solver;
+  };
   EXPECT_EQ(solver("solver: {}").threads, 1);
   EXPECT_EQ(solver("solver: {threads: 1}").threads, 1);
   EXPECT_EQ(solver("solver: {threads: 3}").threads, 3);

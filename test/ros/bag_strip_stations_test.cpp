@@ -16,7 +16,8 @@ TEST(BagStripStations, HoldsTheStripLoadsOfEverySample) {
   // Reference: the samples of the first 5 ms of a dynamic run of the twisting wing (test/data), every step;
   // float64 fields and the bag's serialisation are exact.
   const std::string path = testing::TempDir() + "bag_strip_stations.bag";
-  ModelSpec spec = LoadModelSpec(test::SourcePath(kWingUrdf), test::SourcePath("test/data/yaml/wing_twist_strips.yaml"));
+  ModelSpec spec =
+      LoadModelSpec(test::SourcePath(kWingUrdf), test::SourcePath("test/data/yaml/wing_twist_strips.yaml"));
   spec.solver.analysis = SolverSpec::Analysis::kDynamic;
   spec.solver.t_end = 5.0e-3;
   spec.output.rate_hz = 0.0;

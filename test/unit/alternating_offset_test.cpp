@@ -42,7 +42,8 @@ TEST(AlternatingOffset, OnASmoothMotionIsOfTheOrderOfItsLocalError) {
   const std::array<double, 3> h = {step, step, step};
   const std::array<double, 3> u = MeanRates(wave, 0.0, h);
   const double third = -amplitude * omega * omega * omega * std::cos(omega * -1.5 * step);
-  EXPECT_NEAR(AlternatingOffset(u[0], u[1], u[2], h), step * step * step * third / 8, 0.05 * std::abs(step * step * step * third / 8));
+  EXPECT_NEAR(AlternatingOffset(u[0], u[1], u[2], h), step * step * step * third / 8,
+              0.05 * std::abs(step * step * step * third / 8));
 }
 
 }  // namespace alternating_offset_test

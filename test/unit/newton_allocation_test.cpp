@@ -1,7 +1,8 @@
 // No heap allocation in the Newton loop (issue 12): after a warm-up iteration, assembling residual and tangent,
 // refactorising and solving allocate nothing, for a model with beams, joints,
-// springs, dampers, elastic stops and Coulomb friction, and for a rotor whose blades' strips share its inflow. Counted by interposing malloc for the whole process
-// (libstdc++'s operator new and Eigen's dynamic storage both end in malloc).
+// springs, dampers, elastic stops and Coulomb friction, and for a rotor whose blades' strips share its inflow. Counted
+// by interposing malloc for the whole process (libstdc++'s operator new and Eigen's dynamic storage both end in
+// malloc).
 
 #include <gtest/gtest.h>
 
@@ -94,7 +95,8 @@ TEST(NewtonIteration, RotorWithUniformOrHarmonicInflowAllocatesNothing) {
   ModelSpec spec = Load("test/data/urdf/hover_rotor.urdf", "test/data/yaml/hover_rotor.yaml");
   for (const AeroRotorSpec::Inflow inflow : {AeroRotorSpec::Inflow::kUniform, AeroRotorSpec::Inflow::kHarmonic}) {
     spec.aero_rotors.at(0).inflow = inflow;
-    EXPECT_EQ(AllocationsPerIteration(spec, 5, 2), 0) << (inflow == AeroRotorSpec::Inflow::kHarmonic ? "harmonic" : "uniform");
+    EXPECT_EQ(AllocationsPerIteration(spec, 5, 2), 0)
+        << (inflow == AeroRotorSpec::Inflow::kHarmonic ? "harmonic" : "uniform");
   }
 }
 

@@ -73,8 +73,9 @@ TEST(ParallelAssembly, TwoThreadsAssembleACantileverAsOneBitForBit) {
 TEST(ParallelAssembly, TwoThreadsAssembleTheFlexibleAntennaAsOneBitForBit) {
   const std::string dir = std::string(FLEXMBD_SOURCE_DIR) + "/";
   // Its residual alone (about 40 us) may stay on one thread on a fast machine; its tangent (about 200 us) does not.
-  ExpectBitForBit(LoadModelSpec(dir + "config/antenna/antenna.urdf", dir + "test/data/yaml/antenna_flexible_friction.yaml"),
-                  5, false);
+  ExpectBitForBit(
+      LoadModelSpec(dir + "config/antenna/antenna.urdf", dir + "test/data/yaml/antenna_flexible_friction.yaml"), 5,
+      false);
 }
 
 }  // namespace parallel_assembly_test

@@ -24,8 +24,9 @@ constexpr double kSeries = 1.0e-6;
 Eigen::Vector2d TheodorsenRigid(double h, double al, double hd, double ald, double hdd, double aldd) {
   const double b = kB, a = kA, Q = hd + kU * al + b * (0.5 - a) * ald;
   const double lift = M_PI * kRho * b * b * (hdd + kU * ald - b * a * aldd) + 2 * M_PI * kRho * kU * b * Q;
-  const double moment = M_PI * kRho * b * b * (b * a * hdd - kU * b * (0.5 - a) * ald - b * b * (1.0 / 8 + a * a) * aldd) +
-                        2 * M_PI * kRho * kU * b * b * (a + 0.5) * Q;
+  const double moment =
+      M_PI * kRho * b * b * (b * a * hdd - kU * b * (0.5 - a) * ald - b * b * (1.0 / 8 + a * a) * aldd) +
+      2 * M_PI * kRho * kU * b * b * (a + 0.5) * Q;
   (void)h;
   return {lift, moment};
 }

@@ -33,7 +33,8 @@ constexpr double kInverseTolerance = 1.0e-10;
 TEST(PittPetersDisc, RowsInvertThePublishedGainMatrix) {
   for (const Case& c : kCases) {
     const DiscMomentum m = PittPetersMomentum(c.climb, c.in_plane, c.nu, kRhoArea);
-    EXPECT_TRUE(test::PublishedPittPetersInflow(c.climb, c.in_plane, c.nu[0], m.value, kRhoArea).isApprox(c.nu, kInverseTolerance))
+    EXPECT_TRUE(test::PublishedPittPetersInflow(c.climb, c.in_plane, c.nu[0], m.value, kRhoArea)
+                    .isApprox(c.nu, kInverseTolerance))
         << "climb " << c.climb << " w " << c.in_plane.transpose();
   }
 }

@@ -31,7 +31,9 @@ inline void ExpectMidStepTangentMatchesDifferences(const Model& model, const Ele
   StepContextBuilder builder(model);
   const std::vector<NodeSchemeCoefficients> trapezoidal(model.num_nodes());
   const double h = 1.0e-3;
-  auto context = [&](const Eigen::VectorXd& u) -> const StepContext& { return builder.Dynamic(start, u, h, trapezoidal); };
+  auto context = [&](const Eigen::VectorXd& u) -> const StepContext& {
+    return builder.Dynamic(start, u, h, trapezoidal);
+  };
   const Eigen::VectorXd u = SomeIncrements(model);
   const Eigen::MatrixXd expected = UnknownDifferences(element, u, context, step);
   const Eigen::MatrixXd actual = LocalTangent(element, context(u));

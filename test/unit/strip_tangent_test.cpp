@@ -73,7 +73,9 @@ TEST(StripTangent, MidStepSchemeTangentMatchesDifferences) {
   test::ExpectMidStepTangentMatchesDifferences(s.model, *s.element, s.start, kStep, kTolerance);
 }
 
-TEST(StripTangent, EndPointStiffnessAndRatePartsMatchDifferences) { ExpectEndPointPartsMatchDifferences(GolandStrip()); }
+TEST(StripTangent, EndPointStiffnessAndRatePartsMatchDifferences) {
+  ExpectEndPointPartsMatchDifferences(GolandStrip());
+}
 
 // The Goland strip with the stream reversed: air from the trailing edge (docs/theory.md, (A12)).
 Strip ReversedGolandStrip() {
@@ -133,7 +135,9 @@ TEST(StripTangent, RotorBladeMidStepSchemeTangentMatchesDifferences) {
 
 // The rotor's own element has no acceleration part (M = 0), which the end-point check cannot scale by: its
 // stiffness and rate parts are checked together in the mid-step scheme tangent above.
-TEST(StripTangent, RotorBladeEndPointStiffnessAndRatePartsMatchDifferences) { ExpectEndPointPartsMatchDifferences(RotorStrip()); }
+TEST(StripTangent, RotorBladeEndPointStiffnessAndRatePartsMatchDifferences) {
+  ExpectEndPointPartsMatchDifferences(RotorStrip());
+}
 
 Strip HarmonicRotorStrip() { return RotorStrip(AeroRotorSpec::Inflow::kHarmonic); }
 

@@ -67,7 +67,8 @@ TEST(AntennaFixedStepFriction, TenthOfASecondStepsRunPastTheStallAndFollowHalfTh
   const std::string file = CaseFile("antenna_friction_fixed_step");
   const std::string coarse_yaml = test::ReadFile(file);
   const test::CsvTable coarse = RunToCsv(coarse_yaml, "antenna_fixed_coarse", "10");
-  const test::CsvTable fine = RunToCsv(test::Replaced(coarse_yaml, "dt: 0.1}", "dt: 0.05}"), "antenna_fixed_fine", "10");
+  const test::CsvTable fine =
+      RunToCsv(test::Replaced(coarse_yaml, "dt: 0.1}", "dt: 0.05}"), "antenna_fixed_fine", "10");
   ExpectBoundAndBooksHold(coarse, file);
   ASSERT_EQ(coarse.rows.size(), fine.rows.size());
   constexpr double kAngleTolerance = 1.4e-3;  // [rad]

@@ -130,7 +130,8 @@ Release ReleaseFromTipLoad(double t_end) {
   const int tip = model.beams()[0].nodes.back();
   simulation.Run([&](const OutputSample& s) {
     if (first) r.initial_energy = s.total(), first = false;
-    r.worst_balance = std::max(r.worst_balance, std::abs(s.total() - r.initial_energy - s.external_work + s.dissipated));
+    r.worst_balance =
+        std::max(r.worst_balance, std::abs(s.total() - r.initial_energy - s.external_work + s.dissipated));
     r.dissipated = s.dissipated;
     r.t.push_back(s.t);
     r.tip_z.push_back(simulation.state().nodes[tip].x.z());

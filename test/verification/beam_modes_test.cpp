@@ -36,7 +36,9 @@ double NearestError(const std::vector<double>& f, double target) {
   return best;
 }
 
-double BendingHz(double beta_l) { return beta_l * beta_l * std::sqrt(kEI / (kMass * std::pow(kLength, 4))) / (2 * M_PI); }
+double BendingHz(double beta_l) {
+  return beta_l * beta_l * std::sqrt(kEI / (kMass * std::pow(kLength, 4))) / (2 * M_PI);
+}
 
 TEST(BeamModes, CantileverBendingFrequenciesMatchEulerBernoulli) {
   // beta_n L = 1.8751, 4.6941, 7.8548 (clamped-free Euler-Bernoulli beam; e.g. Blevins, Formulas for Natural

@@ -85,8 +85,9 @@ struct Drop {
 // At error_tol 5e-7 the release needs a first step shorter than the default dt_min of the default tolerance,
 // 1e-7 s: the hinge's holding moment, released at once, turns the root node, whose rotary inertia about the flap
 // axis is small (m_ii 1.2e-5 kg m), at ~1e7 rad/s^2 (measured first step 7.3e-8 s; at error_tol 1e-6 1.2e-7 s since
-// the damped blade's deformation error is discounted by its decay, docs/theory.md (T12b), 8.9e-8 s before). The default dt_min follows the
-// tolerance (docs/config.md), so the runner at the case's settings with only error_tol tightened runs on.
+// the damped blade's deformation error is discounted by its decay, docs/theory.md (T12b), 8.9e-8 s before). The default
+// dt_min follows the tolerance (docs/config.md), so the runner at the case's settings with only error_tol tightened
+// runs on.
 TEST(BladeDrop, TightToleranceStartsWithTheDefaultMinimumStep) {
   std::ifstream file(std::string(FLEXMBD_SOURCE_DIR) + "/config/blade_drop/release_9.7deg.yaml");
   std::stringstream text;
@@ -115,8 +116,9 @@ TEST(BladeDrop, StartedOnItsStopRestsThereCarryingTheWeightsMoment) {
   std::stringstream text;
   text << file.rdbuf();
   std::string yaml = text.str();
-  for (const auto& [from, to] : {std::make_pair(std::string("position_deg: 9.7"), std::string("position_deg: 0.0")),
-                                 std::make_pair(std::string("solver: {t_end: 1.0,"), std::string("solver: {t_end: 0.3,"))}) {
+  for (const auto& [from, to] :
+       {std::make_pair(std::string("position_deg: 9.7"), std::string("position_deg: 0.0")),
+        std::make_pair(std::string("solver: {t_end: 1.0,"), std::string("solver: {t_end: 0.3,"))}) {
     ASSERT_NE(yaml.find(from), std::string::npos) << yaml;
     yaml.replace(yaml.find(from), from.size(), to);
   }

@@ -158,8 +158,9 @@ TEST(ConnerSection, RunnerReportsNoCycleAtRest) {
 // T10 = sqrt(1 - c^2) + acos(c) (Theodorsen's flap term; REFERENCES section 5.3). The pitch spring rests at 3 deg.
 TEST(ConnerSection, CsvCarriesTheSteadySectionLoads) {
   const std::string csv = testing::TempDir() + "conner_steady.csv";
-  std::string yaml = Replaced(CaseText("flutter_below.yaml"), "pitch: {spring: {k: 37.34}, initial: {position_deg: 1.0}}",
-                              "pitch: {spring: {k: 37.34, rest_deg: 3.0}}");
+  std::string yaml =
+      Replaced(CaseText("flutter_below.yaml"), "pitch: {spring: {k: 37.34}, initial: {position_deg: 1.0}}",
+               "pitch: {spring: {k: 37.34, rest_deg: 3.0}}");
   yaml = Replaced(yaml, "t_end: 4.0", "t_end: 0.01\n  static_first: true");
   yaml = Replaced(yaml, "output: {rate_hz: 200}", "output: {rate_hz: 200, csv: " + csv + "}");
   const std::string out = test::RunnerOutput("config/conner_section/conner_section.urdf", yaml, "conner_steady");
@@ -227,7 +228,8 @@ FreeMotion FreeRun(const std::string& yaml, double t0, double t1) {
     t.push_back(s.t);
     x.push_back(s.position[pitch]);
     if (std::isnan(e0)) e0 = s.total();
-    run.books = std::max(run.books, std::abs(s.total() - e0 + s.numerical_dissipation + s.dissipated - s.external_work));
+    run.books =
+        std::max(run.books, std::abs(s.total() - e0 + s.numerical_dissipation + s.dissipated - s.external_work));
     run.throughput = std::max(run.throughput, std::abs(s.external_work));
   });
   run.rate = test::PeakRate(t, x, t0, t1);
@@ -351,7 +353,8 @@ LimitCycle FreeplayRun(double gap_scale) {
       contact.push_back(touching);
     }
     if (std::isnan(e0)) e0 = s.total();
-    cycle.books = std::max(cycle.books, std::abs(s.total() - e0 + s.numerical_dissipation + s.dissipated - s.external_work));
+    cycle.books =
+        std::max(cycle.books, std::abs(s.total() - e0 + s.numerical_dissipation + s.dissipated - s.external_work));
     cycle.throughput = std::max(cycle.throughput, std::abs(s.external_work));
   });
   const double dt = 1.0 / spec.output.rate_hz;

@@ -100,7 +100,8 @@ TEST(DriveSamples, ASetpointIsFollowedFromTheFirstSampleAfterTheCommand) {
     const double decay = std::exp(-(s.t - t_c) / kLag);
     worst_position = std::max(worst_position, std::abs(s.position[1] - kSetpoint * (1.0 - decay)));
     worst_rate = std::max(worst_rate, std::abs(s.velocity[1] - kSetpoint / kLag * decay));
-    worst_effort = std::max(worst_effort, std::abs(s.effort[1] - kMass * (kGravity - kSetpoint / (kLag * kLag) * decay)));
+    worst_effort =
+        std::max(worst_effort, std::abs(s.effort[1] - kMass * (kGravity - kSetpoint / (kLag * kLag) * decay)));
   }
   RecordProperty("first_step", std::to_string(samples[before].dt));
   RecordProperty("worst_position", std::to_string(worst_position));

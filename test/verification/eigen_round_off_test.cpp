@@ -18,7 +18,8 @@ namespace eigen_round_off_test {
 std::string CantileverYaml(int elements, const std::string& rotary_inertia) {
   return "beams:\n  arm: {length: 1.0, elements: " + std::to_string(elements) +
          ", section: {EA: 1.0e9, GA2: 1.0e9, GA3: 1.0e9, GJ: 100.0, EI2: 100.0, EI3: 1.0e4, m: 0.5, m_ii: [1.0e-3, " +
-         rotary_inertia + ", " + rotary_inertia + "]}}\nsolver: {analysis: eigen, gravity: [0, 0, 0], eigen: {modes: 3}}\n";
+         rotary_inertia + ", " + rotary_inertia +
+         "]}}\nsolver: {analysis: eigen, gravity: [0, 0, 0], eigen: {modes: 3}}\n";
 }
 
 // Euler-Bernoulli clamped-free beam: f1 = (beta1 L)^2 / (2 pi L^2) sqrt(EI / m), beta1 L = 1.875104 (Blevins,
@@ -58,7 +59,8 @@ TEST(EigenRoundOff, RotationOfAFreeHubIsARigidBodyModeNotADivergence) {
   const std::string out = test::RunnerOutput("test/data/urdf/light_hub_rotor.urdf", yaml, "light_hub_rotor");
   EXPECT_NE(out.find("3 degrees of freedom, 1 rigid-body modes"), std::string::npos) << out;
   EXPECT_EQ(UnstableRows(out), 0) << out;
-  const double w = 10.0, m = 5.0, e = 0.5, d = 1.0, k = 200.0, i_axial = 0.001, i_cross = 1.6666666666666667 + m * d * d;
+  const double w = 10.0, m = 5.0, e = 0.5, d = 1.0, k = 200.0, i_axial = 0.001,
+               i_cross = 1.6666666666666667 + m * d * d;
   // Flap (about the hinge's y): (k + W^2 (m e d + Izz - Ixx)) / Iyy.
   const double flap = std::sqrt((k + w * w * (m * e * d + i_cross - i_axial)) / i_cross) / (2 * M_PI);
   // Lag with the hub free: m W^2 e d / (Izz - Mpz^2 / Mpp), Mpz = Izz + m e d the lag's coupling to the spin and

@@ -109,7 +109,8 @@ TEST(FrictionSamples, ASampleInsideAStepThatCapturesASlipShowsTheStepsModeAndFor
   test::RunnerOutput("test/data/urdf/stick_slip.urdf", yaml, "stick_slip_samples");
   const test::CsvTable table = test::ReadCsv(csv);
   const size_t sticking = table.Column("friction.slider.sticking"), torque = table.Column("friction.slider.torque");
-  const size_t normal = table.Column("friction.slider.normal_force"), slip = table.Column("friction.slider.slip_velocity");
+  const size_t normal = table.Column("friction.slider.normal_force"),
+               slip = table.Column("friction.slider.slip_velocity");
   int slides = 0, captured = 0;
   for (size_t k = 1; k < table.rows.size(); ++k) {
     const std::vector<double>& row = table.rows[k];

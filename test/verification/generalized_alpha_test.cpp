@@ -16,7 +16,8 @@ constexpr double kMass = 2.0, kStiffness = 50.0, kAmplitude = 0.1;  // [kg], [N/
 
 // The mass-spring of test::MassSpring without gravity, stepped by generalized-alpha.
 ModelSpec MassSpring(double dt, double t_end, double rho_inf) {
-  ModelSpec spec = test::MassSpring(kMass, kStiffness, kAmplitude, SolverSpec::Integrator::kGeneralizedAlpha, dt, t_end);
+  ModelSpec spec =
+      test::MassSpring(kMass, kStiffness, kAmplitude, SolverSpec::Integrator::kGeneralizedAlpha, dt, t_end);
   spec.solver.rho_inf = rho_inf;
   spec.solver.gravity = Vec3::Zero();
   spec.solver.dt_max = dt;
@@ -103,7 +104,9 @@ TEST(GeneralizedAlpha, DoublePendulumConstraintsHold) {
   StepContextBuilder builder(model);
   simulation.Run([&](const OutputSample&) {
     const StepContext& ctx = builder.AtState(simulation.state());
-    for (const Joint* joint : model.joints()) worst = std::max(worst, joint->ConstraintValues(ctx).cwiseAbs().maxCoeff());
+    for (const Joint* joint : model.joints()) {
+      worst = std::max(worst, joint->ConstraintValues(ctx).cwiseAbs().maxCoeff());
+    }
   });
   // Index-3: constraints solved to kConstraintTolerance = 1e-11 at every step; the issue asks for 1e-10.
   constexpr double kConstraintLimit = 1.0e-10;

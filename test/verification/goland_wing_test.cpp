@@ -78,7 +78,8 @@ TEST(GolandWing, ClampedWingHasNoRigidBodyModes) {
   // 50 m/s one such shape moved its nodes by 2.5e-8 of its states on one machine and was taken as rigid. Speeds every
   // 10 m/s give the classification as many round-off patterns, and lower roots (46 inflow roots were rigid at 10 m/s
   // while the tests weighed the states' rows).
-  for (double speed : {10.0, 20.0, 30.0, 40.0, 50.0, 60.0, 70.0, 80.0, 90.0, 100.0, 110.0, 120.0, 130.0, 136.0, 150.0}) {
+  for (double speed :
+       {10.0, 20.0, 30.0, 40.0, 50.0, 60.0, 70.0, 80.0, 90.0, 100.0, 110.0, 120.0, 130.0, 136.0, 150.0}) {
     ModelSpec spec = Case("flutter_eigen.yaml");
     spec.aero_flow.free_stream = Vec3(0.0, speed, 0.0);
     const Model model = BuildModel(spec);
@@ -139,7 +140,8 @@ FreeMotion FreeRun(const std::string& yaml, double t0) {
     t.push_back(s.t);
     twist.push_back(s.beam_stations.at(0).rotation.x());
     if (std::isnan(e0)) e0 = s.total();
-    run.books = std::max(run.books, std::abs(s.total() - e0 + s.numerical_dissipation + s.dissipated - s.external_work));
+    run.books =
+        std::max(run.books, std::abs(s.total() - e0 + s.numerical_dissipation + s.dissipated - s.external_work));
     run.throughput = std::max(run.throughput, std::abs(s.external_work));
   });
   run.rate = test::PeakRate(t, twist, t0, spec.solver.t_end);

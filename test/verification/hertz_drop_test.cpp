@@ -65,7 +65,9 @@ DropRun RunCase(const ModelSpec& spec) {
 
 // Speed at which the ball left contact c: the flight to the next contact, between the same height under gravity
 // alone, lasts 2 v / g.
-double ReboundSpeed(const DropRun& run, size_t c) { return kG * (run.contacts[c + 1].begin - run.contacts[c].end) / 2.0; }
+double ReboundSpeed(const DropRun& run, size_t c) {
+  return kG * (run.contacts[c + 1].begin - run.contacts[c].end) / 2.0;
+}
 
 double ContactDuration(double speed) { return test::ElasticContactDuration(kMass, kStiffness, kExponent, speed, kG); }
 

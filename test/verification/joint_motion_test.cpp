@@ -74,7 +74,8 @@ Outcome RunJoint(JointType type) {
   simulation.Run([&](const OutputSample& s) {
     if (!have_first) first = s, have_first = true;
     last = s;
-    const double violation = model.joints()[0]->ConstraintValues(builder.AtState(simulation.state())).cwiseAbs().maxCoeff();
+    const double violation =
+        model.joints()[0]->ConstraintValues(builder.AtState(simulation.state())).cwiseAbs().maxCoeff();
     out.max_constraint = std::max(out.max_constraint, violation);
   });
   out.q = simulation.state().q;

@@ -116,8 +116,9 @@ TEST(RotatingBeam, SteadyStateStretchesTheBladeByItsCentrifugalLoad) {
   // u(L) = m Omega^2 L^3 / (3 EA) = 8.333e-6 m, which the cubic elements represent exactly; the geometric
   // nonlinearity (tension on the stretched radius, the strain measure) is of the order of the strain, 1.25e-5
   // (measured 1.0e-5): 1e-4 leaves a margin of 8.
-  const Model model = BuildModel(LoadModelSpec(std::string(FLEXMBD_SOURCE_DIR) + "/test/data/urdf/spinning_hub.urdf",
-                                               std::string(FLEXMBD_SOURCE_DIR) + "/test/data/yaml/spinning_blade.yaml"));
+  const Model model =
+      BuildModel(LoadModelSpec(std::string(FLEXMBD_SOURCE_DIR) + "/test/data/urdf/spinning_hub.urdf",
+                               std::string(FLEXMBD_SOURCE_DIR) + "/test/data/yaml/spinning_blade.yaml"));
   const SteadyRotation spin = SteadyRotationOf(model, model.initial_state());
   const SteadyResult steady = SolveSteadyRotation(model, model.initial_state(), spin);
   const double tip = steady.state.nodes[model.beams()[0].nodes.back()].x.norm() - 1.0;
@@ -152,8 +153,10 @@ void ExpectRunUpModesMatchSteadyState(const std::string& beam_extra, const std::
       name + "_steady");
   const std::string run = test::RunnerOutput(
       kUrdf,
-      model + "joints: {spin: {drive: {law: rate_ramp, rate: 6.0, duration: 20.0}}}\n"
-              "solver: {" + solver_extra + "gravity: [0, 0, 0], t_end: 40.0, eigen: {modes: 2, at_times: [30.0, 40.0]}}\n",
+      model +
+          "joints: {spin: {drive: {law: rate_ramp, rate: 6.0, duration: 20.0}}}\n"
+          "solver: {" +
+          solver_extra + "gravity: [0, 0, 0], t_end: 40.0, eigen: {modes: 2, at_times: [30.0, 40.0]}}\n",
       name + "_run_up");
   for (double t : {30.0, 40.0}) {
     const std::string table = test::ModeTableAt(run, t);

@@ -189,10 +189,11 @@ TEST(RotorInflow, HarmonicsStayZeroInHover) {
 }
 
 // A side wind of 10 m/s along y (mu = 0.064, wake skew 66 deg) on the harmonic rotor spun at 10 pi rad/s, so that
-// one revolution takes 0.2 s: over the revolution from 1.2 s (9 time constants of the inflow in) the mean nu against the published steady relation nu = L(nu_0) F (test::PublishedPittPetersInflow)
-// for the means of the strips' thrust and moments. Means, because the two blades' loads and so the states swing at
-// twice the rotor speed; the relation is linear in F and (A14)'s rates average out over the revolution, so what the
-// means miss is second order in the swing of nu_0 through L's dependence on it.
+// one revolution takes 0.2 s: over the revolution from 1.2 s (9 time constants of the inflow in) the mean nu against
+// the published steady relation nu = L(nu_0) F (test::PublishedPittPetersInflow) for the means of the strips' thrust
+// and moments. Means, because the two blades' loads and so the states swing at twice the rotor speed; the relation is
+// linear in F and (A14)'s rates average out over the revolution, so what the means miss is second order in the swing of
+// nu_0 through L's dependence on it.
 std::string SideWindYaml() {
   std::string yaml = HarmonicYaml();
   for (const auto& [from, to] : std::vector<std::pair<std::string, std::string>>{

@@ -27,7 +27,9 @@ TEST(Simulation, AdvancingInPiecesMatchesOneRun) {
   one.Run([&](const OutputSample& s) { whole.push_back(s); });
   Simulation split(model);
   split.Begin([&](const OutputSample& s) { pieces.push_back(s); });
-  for (double t = 0.37; t < 2.0; t += 0.37) split.AdvanceTo(t, 2.0, [&](const OutputSample& s) { pieces.push_back(s); });
+  for (double t = 0.37; t < 2.0; t += 0.37) {
+    split.AdvanceTo(t, 2.0, [&](const OutputSample& s) { pieces.push_back(s); });
+  }
   split.AdvanceTo(2.0, 2.0, [&](const OutputSample& s) { pieces.push_back(s); });
   ASSERT_EQ(whole.size(), pieces.size());
   for (size_t k = 0; k < whole.size(); ++k) {

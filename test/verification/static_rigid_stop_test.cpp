@@ -131,8 +131,9 @@ TEST(StaticRigidStop, FreeSliderPushedOntoItsStopRestsOnItWithThePushAsTheContac
     const char *name, *start, *backlash, *stop;
     double position;
   };
-  for (const Case& c : {Case{"open", "0.2", "{upper: 0.5}", "upper", 0.5}, Case{"closed", "0.5", "{upper: 0.5}", "upper", 0.5},
-                        Case{"between", "0.2", "{lower: -0.5, upper: 0.5}", "upper", 0.5}}) {
+  for (const Case& c :
+       {Case{"open", "0.2", "{upper: 0.5}", "upper", 0.5}, Case{"closed", "0.5", "{upper: 0.5}", "upper", 0.5},
+        Case{"between", "0.2", "{lower: -0.5, upper: 0.5}", "upper", 0.5}}) {
     SCOPED_TRACE(c.name);
     test::CsvTable csv;
     const std::vector<double> row = test::EquilibriumRow(

@@ -123,7 +123,8 @@ TEST(StaticStart, TheDoublePendulumStartsWithItsElbowAtRestAndLosesNothing) {
 std::string BladeOnADrivenHubYaml() {
   std::string yaml = test::SourceText("test/data/yaml/rotating_cantilever.yaml");
   yaml = test::Replaced(yaml, "initial: {velocity: 6.0}", std::string("drive: ") + kSine);
-  return test::Replaced(yaml, "  analysis: eigen\n  eigen: {about: steady_state, modes: 4}\n", "  static_first: true\n");
+  return test::Replaced(yaml, "  analysis: eigen\n  eigen: {about: steady_state, modes: 4}\n",
+                        "  static_first: true\n");
 }
 
 // A blade bent by its weight (the blade above with gravity along the spin axis, 1.2 m of droop at the tip): the

@@ -58,7 +58,9 @@ TEST(StaticAnalysis, StaticFirstStartsDynamicsAtRest) {
   const Model model = BuildModel(spec);
   Simulation simulation(model);
   double worst_drift = 0;
-  simulation.Run([&](const OutputSample& s) { worst_drift = std::max(worst_drift, std::abs(s.position[0] - 1.8954942670339809)); });
+  simulation.Run([&](const OutputSample& s) {
+    worst_drift = std::max(worst_drift, std::abs(s.position[0] - 1.8954942670339809));
+  });
   // Equilibrium to Newton accuracy; the dynamics then see residual forces of order 1e-12 relative only.
   constexpr double kDriftTolerance = 1.0e-9;
   EXPECT_LT(worst_drift, kDriftTolerance);

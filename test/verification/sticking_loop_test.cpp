@@ -221,7 +221,8 @@ TEST(StickingLoop, RunnerRunsTheStuckLoopsThatWereSingular) {
       "sticking_loop_runner_dead_centre");
   EXPECT_NE(dead_centre.find("finished at t = 0.2 s"), std::string::npos) << dead_centre;
   const std::string yaml = test::ReadFile(std::string(FLEXMBD_SOURCE_DIR) + "/test/data/yaml/four_bar.yaml");
-  const std::string four_bar = test::RunnerOutput("test/data/urdf/four_bar.urdf", yaml, "sticking_loop_runner_four_bar");
+  const std::string four_bar =
+      test::RunnerOutput("test/data/urdf/four_bar.urdf", yaml, "sticking_loop_runner_four_bar");
   EXPECT_NE(four_bar.find("finished at t = 1 s"), std::string::npos) << four_bar;
 }
 
@@ -233,7 +234,8 @@ TEST(StickingLoop, FreeFourBarWhoseCrankStrikesItsStopWhileTheRockerSlidesRunsOn
   // a small share of a step, 1e-4 s leaves a margin); friction's work never falls; the books close to Newton's
   // tolerance (1e-6 of the throughput, as FrictionWork; measured 2e-9).
   const std::string csv = testing::TempDir() + "four_bar_crank_stop.csv";
-  std::string yaml = test::ReadFile(std::string(FLEXMBD_SOURCE_DIR) + "/test/data/yaml/four_bar_crank_stop_friction.yaml");
+  std::string yaml =
+      test::ReadFile(std::string(FLEXMBD_SOURCE_DIR) + "/test/data/yaml/four_bar_crank_stop_friction.yaml");
   yaml.replace(yaml.find("output: {rate_hz: 0}"), 20, "output: {rate_hz: 0, csv: " + csv + "}");
   const std::string output = test::RunnerOutput("test/data/urdf/four_bar.urdf", yaml, "four_bar_crank_stop");
   SCOPED_TRACE(output);

@@ -49,8 +49,8 @@ TEST(WingAileron, RunnerFlutterSpeedIsWhereAModeStartsToGrow) {
   // Published (issue 17, case 2): 560 ft/s = 170.69 m/s. Compared in docs/validation.md, not here: this model's
   // strips flutter far below it (see there for what the source's data leave open).
   constexpr double kPublished = 560 * 0.3048;
-  const std::string output =
-      test::RunnerOutput("config/wing_aileron/wing_aileron.urdf", ReadFile(kDir + "flutter_sweep.yaml"), "wing_aileron_sweep");
+  const std::string output = test::RunnerOutput("config/wing_aileron/wing_aileron.urdf",
+                                                ReadFile(kDir + "flutter_sweep.yaml"), "wing_aileron_sweep");
   const std::vector<test::Crossing> crossings = test::RunnerCrossings(output);
   ASSERT_FALSE(crossings.empty()) << output;
   ASSERT_EQ(crossings.front().kind, "flutter") << output;  // flutter lines come first, in order of speed

@@ -41,7 +41,8 @@ class RotorInflow : public Element {
                    Eigen::Ref<Eigen::VectorXd> magnitude) const override;
   void AddTangent(const StepContext& ctx, Eigen::Ref<Eigen::MatrixXd> J) const override;
   bool HasRateParts(AnalysisMode mode) const override { return mode != AnalysisMode::kStatic; }
-  void AddRateParts(const StepContext& ctx, Eigen::Ref<Eigen::MatrixXd> D, Eigen::Ref<Eigen::MatrixXd> M) const override;
+  void AddRateParts(const StepContext& ctx, Eigen::Ref<Eigen::MatrixXd> D,
+                    Eigen::Ref<Eigen::MatrixXd> M) const override;
 
   const std::string& name() const { return name_; }
   bool harmonic() const { return harmonic_; }
@@ -71,7 +72,9 @@ class RotorInflow : public Element {
 };
 
 /// The number of inflow states of a rotor: 1 (uniform) or 3 (harmonic).
-inline int RotorInflowStates(const AeroRotorSpec& spec) { return spec.inflow == AeroRotorSpec::Inflow::kHarmonic ? 3 : 1; }
+inline int RotorInflowStates(const AeroRotorSpec& spec) {
+  return spec.inflow == AeroRotorSpec::Inflow::kHarmonic ? 3 : 1;
+}
 
 /// The in-plane axes (e_c, e_s) of a disc about `axis` (A14): e_c the world x axis projected on the disc (the y
 /// axis when x is within 45 deg of the axis), e_s = axis x e_c.

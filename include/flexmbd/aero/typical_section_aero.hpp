@@ -40,7 +40,8 @@ class TypicalSectionAero : public Element {
                    Eigen::Ref<Eigen::VectorXd> magnitude) const override;
   void AddTangent(const StepContext& ctx, Eigen::Ref<Eigen::MatrixXd> J) const override;
   bool HasRateParts(AnalysisMode mode) const override { return mode != AnalysisMode::kStatic; }
-  void AddRateParts(const StepContext& ctx, Eigen::Ref<Eigen::MatrixXd> D, Eigen::Ref<Eigen::MatrixXd> M) const override;
+  void AddRateParts(const StepContext& ctx, Eigen::Ref<Eigen::MatrixXd> D,
+                    Eigen::Ref<Eigen::MatrixXd> M) const override;
   /// The air's work on the section over a step: external work.
   void AddStepWork(const StepContext& ctx, StepWork* work) const override;
 

@@ -51,11 +51,17 @@ class FrictionEffect : public ModalEffect {
   bool LocatesEventsFromEndRates() const override { return true; }
   void Commit(const StepContext& ctx, const State& end, EffectState* effect) const override;
 
-  /// The mode across an impulse (a jump of a drive's rate) of a joint stuck before it, from the limiting step
+  /// The mode across an impulse (a jump of a drive's rate) of a joint stuck before it, or whose slide it stops
+  /// (SlideStoppedBy), from the limiting step
   /// `stuck` of the velocity projection solved with the joint stuck: its forces are the impulses over the step's
   /// size. Stuck while the sticking impulse stays within mu_s rho times the normal impulse (Coulomb's law for
   /// impulses), else sliding the way the impulse pushes it; the trial mode where the row is left out (F8).
   int ModeAcrossImpulse(const StepContext& stuck) const;
+  /// True where the joint slides in the limiting step `released` of the velocity projection at a jump of a drive's
+  /// rate, solved with it sliding, and that step's mean rate (the rate after the jump) runs against the slide: the
+  /// jump's impulse stops the slide, and kinetic friction held the slide's way would push the joint on across it. It
+  /// is then judged as a joint stuck before the jump is (ModeAcrossImpulse, F8).
+  bool SlideStoppedBy(const StepContext& released) const;
   /// Enters `mode` after an impulse: the force of a stick before it is no base for locating a breakaway (F3').
   static void EnterAfterImpulse(int mode, EffectState* effect);
   /// The initial mode for a starting rate: sliding in its direction, sticking at rest.

@@ -128,8 +128,9 @@ struct EnergyTally {
 struct StepWork {
   double external = 0;    ///< by applied loads, drives and commanded efforts [J]
   double dissipated = 0;  ///< by dampers, friction, contact and structural damping (>= 0) [J]
-  double numerical = 0;   ///< by the integrator's dissipation in elastic elements (>= 0), and the scheme's share of a
-                          ///< frictional step's work, where the friction's would be negative (<= 0, docs/theory.md (F9)) [J]
+  /// By the integrator's dissipation in elastic elements (>= 0), and the scheme's share of a frictional step's work,
+  /// where the friction's would be negative (<= 0, docs/theory.md (F9)) [J].
+  double numerical = 0;
 };
 
 /// Most local unknowns an element with rate parts may have: a cubic beam's 4 nodes.
@@ -160,7 +161,8 @@ class Element {
 
   /// Adds the rate parts of the local tangent: D = dr/d(end rates) and M = dr/d(end accelerations), both
   /// num_local x num_local, columns in local order (node translation rates v_f, body-frame rotation rates w_f,
-  /// joint variable rates qdot_f, element state rates; multiplier columns stay zero). Only called when HasRateParts(ctx.mode).
+  /// joint variable rates qdot_f, element state rates; multiplier columns stay zero). Only called when
+  /// HasRateParts(ctx.mode).
   virtual void AddRateParts(const StepContext& /*ctx*/, Eigen::Ref<Eigen::MatrixXd> /*D*/,
                             Eigen::Ref<Eigen::MatrixXd> /*M*/) const {}
 

@@ -122,8 +122,10 @@ DiscretePath<ColsB> Multiply(const MatrixPath& a, const DiscretePath<ColsB>& b) 
   // The product rule on every term above; a factor without a variation does not move.
   p.has_variation = true;
   using ValueB = typename DiscretePath<ColsB>::Value;
-  p.vi = (a.has_variation ? (A(a.vi) * b.i).eval() : ValueB::Zero().eval()) + (b.has_variation ? (A(a.i) * b.vi).eval() : ValueB::Zero().eval());
-  p.vf = (a.has_variation ? (A(a.vf) * b.f).eval() : ValueB::Zero().eval()) + (b.has_variation ? (A(a.f) * b.vf).eval() : ValueB::Zero().eval());
+  p.vi = (a.has_variation ? (A(a.vi) * b.i).eval() : ValueB::Zero().eval()) +
+         (b.has_variation ? (A(a.i) * b.vi).eval() : ValueB::Zero().eval());
+  p.vf = (a.has_variation ? (A(a.vf) * b.f).eval() : ValueB::Zero().eval()) +
+         (b.has_variation ? (A(a.f) * b.vf).eval() : ValueB::Zero().eval());
   const Mat3 va_m = a.has_variation ? A(0.5 * (a.vi + a.vf)) : Mat3::Zero();
   const ValueB vb_m = b.has_variation ? ValueB(0.5 * (b.vi + b.vf)) : ValueB::Zero();
   for (uint32_t bits = p.active; bits != 0; bits &= bits - 1) {

@@ -196,7 +196,8 @@ struct SolverSpec {
   enum class Integrator { kEnergyDecaying, kEnergyPreserving, kGeneralizedAlpha };
   Analysis analysis = Analysis::kDynamic;
   Integrator integrator = Integrator::kEnergyDecaying;
-  double rho_inf = 0.6;            ///< high-frequency amplification per step: energy-decaying [1/3, 1], generalized-alpha [0, 1]
+  /// High-frequency amplification per step: energy-decaying [1/3, 1], generalized-alpha [0, 1].
+  double rho_inf = 0.6;
   double t_end = 1.0;              ///< [s]
   double dt = 1.0e-2;              ///< initial (and, without adaptivity, fixed) step [s]
   double dt_min = 1.0e-7;          ///< [s]; unset in YAML: this times error_tol / 1e-4 in [1e-3, 1]

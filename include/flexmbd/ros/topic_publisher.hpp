@@ -61,8 +61,8 @@ class TopicPublisher : public MessageSink {
 
  private:
   // The topics every sample goes to: joint_states, ~energy, ~reactions, ~solver, /tf and those advertised of
-  // ~contacts, ~friction, ~beam_loads, ~aero_loads. A subscriber to /tf that connects late would miss the link frames of a
-  // short run at real_time_factor 0 (it happened to the node_topics rostest on a loaded machine).
+  // ~contacts, ~friction, ~beam_loads, ~aero_loads. A subscriber to /tf that connects late would miss the link frames
+  // of a short run at real_time_factor 0 (it happened to the node_topics rostest on a loaded machine).
   std::vector<const QueuedTopic*> SampleTopics() const;
 
   QueuedTopic joint_states_, energy_, reactions_, solver_, contacts_, friction_, beam_loads_, aero_loads_, tf_;

@@ -19,8 +19,8 @@ struct EffectEvent {
   int from = 0, to = 0;
 };
 
-/// One line (without newline) per stop and frictional joint: the intervals in contact (or sticking), the last one closed at the
-/// state's time if still open, e.g. "stop B1 upper: 2 contact interval(s) [0.51, 0.52] [0.93, 1] s"; for
+/// One line (without newline) per stop and frictional joint: the intervals in contact (or sticking), the last one
+/// closed at the state's time if still open, e.g. "stop B1 upper: 2 contact interval(s) [0.51, 0.52] [0.93, 1] s"; for
 /// friction also the sticking threshold v0 in force and the energy dissipated. After a static analysis
 /// (solver.analysis: static) each stop is closed, with its contact force, or open, with its gap, and friction
 /// is left out: "stop slide upper: closed in the static equilibrium, contact force 9.81 N".

@@ -72,7 +72,8 @@ struct EigenResult {
   int num_dof = 0;          ///< degrees of freedom left after removing the independent constraints
   int num_rigid_body = 0;   ///< rigid-body modes among all (dense) or among those found (sparse)
   int num_states = 0;       ///< element states among the num_kinematic, the last entries of each shape (theory (E7))
-  double frequency_scale_hz = 0.0;  ///< the largest root's |s| / 2 pi, against which round-off is judged (theory (E5)) [Hz]
+  /// The largest root's |s| / 2 pi, against which round-off is judged (theory (E5)) [Hz].
+  double frequency_scale_hz = 0.0;
   bool symmetric = false;   ///< solved as an undamped symmetric problem (no damping, no gyroscopic terms)
   std::string method;       ///< "dense" or "sparse shift-invert"
 };

@@ -3,7 +3,8 @@
 /// Lie-group generalized-alpha for the index-3 equations (Arnold and Bruls 2007; Bruls and Cardona 2010;
 /// algorithm in REFERENCES section 3.2). The equations of motion and the constraints hold at the end of the
 /// step; each node's increment (dx, theta), R_f = R_i Exp(theta), follows Newmark's relations
-///   increment = h v_n + h^2 (1/2 - beta) a_n + h^2 beta a_{n+1},   v_{n+1} = v_n + h (1 - gamma) a_n + h gamma a_{n+1},
+///   increment = h v_n + h^2 (1/2 - beta) a_n + h^2 beta a_{n+1},
+///   v_{n+1} = v_n + h (1 - gamma) a_n + h gamma a_{n+1},
 ///   (1 - alpha_m) a_{n+1} + alpha_m a_n = (1 - alpha_f) vdot_{n+1} + alpha_f vdot_n,
 /// with a the algorithmic acceleration and the coefficients set by rho_inf in [0, 1]. Angular velocities and
 /// accelerations are in the node frame. The first step starts from consistent accelerations, measured over a
@@ -53,9 +54,12 @@ struct GeneralizedAlphaCoefficients {
   double PredictedStateIncrement(double w_n, double xdot_n, double h) const {
     return h * ((1.0 - gamma) * w_n + gamma * (xdot_n - alpha_m * w_n) / (1.0 - alpha_m));
   }
-  double state_rate_rate(double h) const { return (1.0 - alpha_m) / (h * gamma * (1.0 - alpha_f)); }  ///< d xdot / d increment
-  double velocity_rate(double h) const { return gamma / (h * beta); }                                  ///< d v / d increment
-  double acceleration_rate(double h) const { return (1.0 - alpha_m) / (h * h * beta * (1.0 - alpha_f)); }  ///< d vdot / d increment
+  /// d xdot / d increment
+  double state_rate_rate(double h) const { return (1.0 - alpha_m) / (h * gamma * (1.0 - alpha_f)); }
+  /// d v / d increment
+  double velocity_rate(double h) const { return gamma / (h * beta); }
+  /// d vdot / d increment
+  double acceleration_rate(double h) const { return (1.0 - alpha_m) / (h * h * beta * (1.0 - alpha_f)); }
 };
 
 class GeneralizedAlphaIntegrator : public TimeIntegrator {

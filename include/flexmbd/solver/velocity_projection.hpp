@@ -44,8 +44,9 @@ class VelocityProjection {
   /// variable, DriveRates), effects released: first projects them onto the constraints with the drives at `before`,
   /// booked as Apply books it, then onto those with the drives at `after`, whose change of the kinetic energy is
   /// the drives' work, booked as external work. `h` is the step that follows, which scales the limiting steps.
-  /// A friction stuck in `state` is held stuck, and stays stuck across the jump unless its sticking impulse passes
-  /// mu_s rho times its normal impulse; it then slides the way the impulse pushes it. `state` takes these modes (F8).
+  /// A friction stuck in `state`, or sliding in it and stopped by the jump's impulse, is held stuck, and stays stuck
+  /// across the jump unless its sticking impulse passes mu_s rho times its normal impulse; it then slides the way the
+  /// impulse pushes it. `state` takes these modes (F8).
   /// False (state unchanged) if a limiting step did not converge.
   bool ApplyAtDriveJump(State* state, const Eigen::VectorXd& before, const Eigen::VectorXd& after, double h);
 
@@ -64,17 +65,22 @@ class VelocityProjection {
   // (null: their laws or set-points).
   bool Project(State* state, const std::vector<bool>& held, double h, const Eigen::VectorXd* drive_rates,
                Removed removed);
-  // Sets the frictions stuck in `state` sticking in modes_; false if there is none.
-  bool HoldStuckJoints(const State& state);
-  // Solves a limiting step of size h in modes_ (the frictions stuck in `state` held, HoldStuckJoints), and sets each
-  // of those to the mode Coulomb's law for impulses gives it (F8). False if the step did not converge.
-  bool JudgeStuckJoints(const State& state, double h);
+  // Sets the frictions stuck in `state` sticking in modes_, and marks them in judged_.
+  void HoldStuckJoints(const State& state);
+  // If a friction slides in modes_, solves a limiting step of size h in them, and sets sticking in modes_, and marks
+  // in judged_, each whose slide it stops (FrictionEffect::SlideStoppedBy). False if the step did not converge.
+  bool HoldStoppedSlides(const State& state, double h);
+  // At a jump of the drives' rates, with the frictions stuck before it held (HoldStuckJoints): holds those whose slide
+  // it stops too, solves a limiting step of size h with all of them held, and sets each to the mode Coulomb's law for
+  // impulses gives it (F8). False if a step did not converge.
+  bool JudgeAcrossJump(const State& state, double h);
 
   const Model& model_;
   SparseSystem* system_;
   StepContextBuilder builder_;
   StickingRedundancy redundancy_;
   std::vector<EffectState> modes_;  ///< the modes the last projection was solved in
+  std::vector<bool> judged_;        ///< by slot: the frictions the last projection judged across a jump (F8)
 };
 
 }  // namespace flexmbd

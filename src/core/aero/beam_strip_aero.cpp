@@ -269,7 +269,8 @@ void BeamStripAero::AddFlapTerms(const Motion& m, const Flap& f, Loads* out) con
   const Row3 dQ_dV = out->dw34_dV + (1.0 - phi) * eg * angle * du_dV;
   const Row3 rigid_dV = Ma(2, 0) * m.w.cross(n).transpose() + Knc(2, 1) * (v_n * du_dV + u * n.transpose()) +
                         pitch_rate_term * omega * du_dV;
-  out->dV.row(2) = -phi * (rho * (rigid_dV + by_V) + k * (kutta * du_dV + u * (f0 * dQ_dV - f_wake * lag0_ * out->dw34_dV)));
+  out->dV.row(2) =
+      -phi * (rho * (rigid_dV + by_V) + k * (kutta * du_dV + u * (f0 * dQ_dV - f_wake * lag0_ * out->dw34_dV)));
   out->dw.row(2) = -phi * (rho * (Ma(2, 0) * n.cross(m.V).transpose() + u * pitch_rate_term * e.transpose()) +
                            k * u * (f0 - f_wake * lag0_) * out->dw34_dw);
   out->dVdot.row(2) = -phi * rho * Ma(2, 0) * n.transpose();
@@ -387,7 +388,9 @@ void BeamStripAero::AddRateParts(const StepContext& ctx, Eigen::Ref<Eigen::Matri
   auto add = [&](Eigen::Ref<Eigen::MatrixXd> target, int column, const RowGradient& g, double factor) {
     target.block(0, column, nn, 3) -= factor * F.topRows(nn) * g.topRows<3>();
     target.block(nn, column, N, 3) += factor * g.bottomRows(N);
-    if (has_rotor()) target.block(rotor_local(), column, rotor_.num_states, 3) -= m.weights * (factor * share * g.row(0));
+    if (has_rotor()) {
+      target.block(rotor_local(), column, rotor_.num_states, 3) -= m.weights * (factor * share * g.row(0));
+    }
   };
   // Columns: node translation rate (V = R^T (air - v)), body-frame angular rates (the flap's rate and
   // acceleration are the flap node's minus the node's about the pitch axis).

@@ -124,7 +124,8 @@ void TypicalSectionAero::AddRateParts(const StepContext& ctx, Eigen::Ref<Eigen::
                                       Eigen::Ref<Eigen::MatrixXd> M) const {
   const double U = velocity_, rho = density_, b = loads_.semichord;
   const double circulation = 2.0 * M_PI * rho * U * b;
-  const Mat3 dQdqd = -span_ * (rho * U * loads_.Cnc + circulation * (loads_.es - lag0_ * loads_.ef) * loads_.ew.transpose());
+  const Mat3 dQdqd =
+      -span_ * (rho * U * loads_.Cnc + circulation * (loads_.es - lag0_ * loads_.ef) * loads_.ew.transpose());
   const Mat3 dQdqdd = -span_ * rho * loads_.Ma;
   double rate = 0, acceleration = 0;
   RateFactors(ctx, &rate, &acceleration);

@@ -43,7 +43,8 @@ bool BreakawayToLocate(double fraction) { return fraction > kBreakawayEventFract
 }  // namespace
 
 FrictionEffect::FrictionEffect(const FrictionSpec& spec, const Joint& joint, int variable_unknown, int stick_multiplier,
-                             int stick_multiplier_unknown, int joint_multiplier_unknown, int slot, const SolverSpec& solver)
+                               int stick_multiplier_unknown, int joint_multiplier_unknown, int slot,
+                               const SolverSpec& solver)
     : ModalEffect(slot),
       spec_(spec),
       solver_(solver),
@@ -197,7 +198,11 @@ void FrictionEffect::AddTangent(const StepContext& ctx, Eigen::Ref<Eigen::Matrix
 
 double FrictionEffect::StickingResidual(const StepContext& ctx) const {
   const VariableStep& q = (*ctx.variables)[variable_];
-  return q.q_f - q.q_i - 0.5 * ctx.h * q.qdot_i;
+  // A step's row brings the end rate to 0. In the limiting steps of a projection at a jump of a drive's rate the mean
+  // rate is the rate after the jump, so the row holds the joint at rest over them, as a drive at rate 0 would: a
+  // joint the jump stops from a slide is then at rest after it, not at half its rate before (F8).
+  const double travel = ctx.drive_rates != nullptr ? 0.0 : 0.5 * ctx.h * q.qdot_i;
+  return q.q_f - q.q_i - travel;
 }
 
 double FrictionEffect::AppliedForce(const StepContext& ctx) const {
@@ -253,6 +258,13 @@ int FrictionEffect::ModeAcrossImpulse(const StepContext& stuck) const {
   const double lambda = (*stuck.lambda)[stick_multiplier_];
   if (std::abs(lambda) <= StaticBound(*stuck.lambda, *stuck.start)) return kSticking;
   return lambda > 0 ? kSlidingPositive : kSlidingNegative;
+}
+
+bool FrictionEffect::SlideStoppedBy(const StepContext& released) const {
+  const int slide = Direction(TrialMode(released));
+  if (slide == 0 || !has_sticking_row() || Held(*released.effects)) return false;
+  const VariableStep& q = (*released.variables)[variable_];
+  return slide * (q.q_f - q.q_i) < 0;
 }
 
 void FrictionEffect::EnterAfterImpulse(int mode, EffectState* effect) {

@@ -242,7 +242,8 @@ StepLimit RigidStop::Limit(const StepContext& ctx, const State& end) const {
     // It crossed and did not begin the contact (ReviseMode): redone centred if it began close to the stop and
     // lasted longer than twice its crossing time, else landed just short of the stop (C5).
     const double crossing = CrossingTime(ctx);
-    const double retry = CloseAfterLastStep(start) && 2 * crossing < h ? 2 * crossing : kEventLanding * h * g_i / (g_i - g_f);
+    const double retry =
+        CloseAfterLastStep(start) && 2 * crossing < h ? 2 * crossing : kEventLanding * h * g_i / (g_i - g_f);
     limit.retry = std::max(retry, solver_.dt_min);
     return limit;
   }

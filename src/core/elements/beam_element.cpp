@@ -73,7 +73,9 @@ BeamElement::BeamElement(std::string name, std::vector<int> nodes, double length
 
 double BeamElement::Energy(const Field& field) const {
   double energy = 0.0;
-  for (int g = 0; g < field.num_points(); ++g) energy += 0.5 * field.strain(g).dot(weighted_stiffness_[g] * field.strain(g));
+  for (int g = 0; g < field.num_points(); ++g) {
+    energy += 0.5 * field.strain(g).dot(weighted_stiffness_[g] * field.strain(g));
+  }
   return energy;
 }
 

@@ -71,7 +71,8 @@ PointToLocalColumns(const BeamShape& shape, int g, const Eigen::MatrixBase<Deriv
   for (int k = 0; k < n; ++k) {
     const double N = shape.N[g][k], dN = shape.dNds[g][k];
     out.template middleCols<3>(6 * k) = dN * X.template middleCols<3>(kDy);
-    out.template middleCols<3>(6 * k + kRotation) = N * X.template middleCols<3>(kPsi) + dN * X.template middleCols<3>(kDpsi);
+    out.template middleCols<3>(6 * k + kRotation) =
+        N * X.template middleCols<3>(kPsi) + dN * X.template middleCols<3>(kDpsi);
   }
   return out;
 }

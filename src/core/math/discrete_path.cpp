@@ -26,7 +26,9 @@ MatrixPath NodeRotationPath(const NodeStep& node, int offset, const PathDirectio
   p.i = node.R_i;
   p.f = node.R_f;
   // R_f - R_i = R_i Skew(theta) S(theta) = sum_j theta_j R_i Skew(e_j) S  (exact);  dR_f = R_f Skew(T dtheta).
-  for (int j = 0; j < 3; ++j) p.Set(offset + j, node.R_i * Skew(Vec3::Unit(j)) * node.S, node.R_f * Skew(node.T.col(j)));
+  for (int j = 0; j < 3; ++j) {
+    p.Set(offset + j, node.R_i * Skew(Vec3::Unit(j)) * node.S, node.R_f * Skew(node.T.col(j)));
+  }
   int l = 0;
   if (!Along(direction, offset, 3, &l)) return p;
   p.StartVariation();

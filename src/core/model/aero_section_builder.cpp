@@ -51,8 +51,9 @@ std::unique_ptr<TypicalSectionAero> MakeAeroSection(const Model& model, const st
     joints[k] = FindJoint(model, role_field, *names[k]);
     const JointKinematics& kinematics = joints[k]->kinematics();
     if (revolute[k] ? !IsRevolute(kinematics) : !IsPrismatic(kinematics)) {
-      throw ConfigError(role_field + ": joint '" + *names[k] + "' is not a " + (revolute[k] ? "revolute" : "prismatic") +
-                        " joint; expected a " + (revolute[k] ? "revolute" : "prismatic") + " joint");
+      throw ConfigError(role_field + ": joint '" + *names[k] + "' is not a " +
+                        (revolute[k] ? "revolute" : "prismatic") + " joint; expected a " +
+                        (revolute[k] ? "revolute" : "prismatic") + " joint");
     }
     const double alignment = AxisInWorld(model, *joints[k]).dot(directions[k]);
     if (std::abs(std::abs(alignment) - 1.0) > kAlignment) {

@@ -152,14 +152,19 @@ std::vector<StripRotor> StripRotors(const Model& model, const std::string& prefi
   return rotors;
 }
 
-std::vector<StripStationInfo> LocateStripStations(const Model& model, const std::string& prefix, const ModelSpec& spec) {
+std::vector<StripStationInfo> LocateStripStations(const Model& model, const std::string& prefix,
+                                                  const ModelSpec& spec) {
   std::vector<StripStationInfo> located;
   for (const auto& [name, stations] : spec.output.strip_stations) {
     const std::string field = prefix + "output.strip_stations." + name;
     size_t first = 0;  // the strip's first element in model.aero_strips(): the strips before it, node by node
     auto strip = spec.aero_strips.begin();
-    for (; strip != spec.aero_strips.end() && strip->name != name; ++strip) first += StripBeam(model, prefix, *strip).nodes.size();
-    if (strip == spec.aero_strips.end()) throw ConfigError(field + ": no strip '" + name + "'; expected a name under aero.strips");
+    for (; strip != spec.aero_strips.end() && strip->name != name; ++strip) {
+      first += StripBeam(model, prefix, *strip).nodes.size();
+    }
+    if (strip == spec.aero_strips.end()) {
+      throw ConfigError(field + ": no strip '" + name + "'; expected a name under aero.strips");
+    }
     const BeamInfo& beam = StripBeam(model, prefix, *strip);
     const double length = std::find_if(spec.beams.begin(), spec.beams.end(),
                                        [&](const BeamSpec& b) { return b.name == beam.name; })->length;

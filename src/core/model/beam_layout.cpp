@@ -64,7 +64,9 @@ std::vector<double> LumpedLengths(const BeamSpec& beam) {
   std::vector<double> lengths(beam.elements * beam.order + 1, 0.0);
   const double element_length = beam.length / beam.elements;
   for (int e = 0; e < beam.elements; ++e) {
-    for (int k = 0; k <= beam.order; ++k) lengths[e * beam.order + k] += 0.5 * element_length * ShapeIntegral(beam.order, k);
+    for (int k = 0; k <= beam.order; ++k) {
+      lengths[e * beam.order + k] += 0.5 * element_length * ShapeIntegral(beam.order, k);
+    }
   }
   return lengths;
 }
@@ -148,7 +150,9 @@ void ValidateBeam(const std::string& prefix, const BeamSpec& beam) {
   if (!(beam.damping >= 0.0)) {
     fail("damping", std::to_string(beam.damping) + " is negative; expected a damping time mu >= 0 [s]");
   }
-  if (!(beam.section.mass_per_length > 0.0)) fail("section.m", "mass per length is not positive; expected m > 0 [kg/m]");
+  if (!(beam.section.mass_per_length > 0.0)) {
+    fail("section.m", "mass per length is not positive; expected m > 0 [kg/m]");
+  }
   if ((beam.section.inertia_per_length.array() < 0.0).any()) {
     fail("section.m_ii", "a mass moment per length is negative; expected values >= 0 [kg m]");
   }

@@ -45,7 +45,9 @@ void ValidateFriction(const std::string& where, const FrictionSpec& f, JointType
   if (!(f.mu_s >= f.mu_k)) Fail(at, "mu_s", f.mu_s, "a static coefficient >= mu_k (" + std::to_string(f.mu_k) + ")");
   if (!(f.radius > 0)) Fail(at, "radius", f.radius, "a race radius > 0 [m]");
   if (!(f.preload >= 0)) Fail(at, "preload", f.preload, "a preload >= 0 [N]");
-  if (!(f.v0 >= 0)) Fail(at, "v0", f.v0, "a sticking speed >= 0 [m/s] (0: 100 error_tol, at most 1%, of the largest slip speed)");
+  if (!(f.v0 >= 0)) {
+    Fail(at, "v0", f.v0, "a sticking speed >= 0 [m/s] (0: 100 error_tol, at most 1%, of the largest slip speed)");
+  }
   if (f.law == FrictionSpec::Law::kRegularised && !(f.v0 > 0)) {
     Fail(at, "v0", f.v0, "a regularisation speed > 0 [m/s] for the regularised law");
   }

@@ -23,7 +23,8 @@ std::string Prefix(const ModelSpec& spec) { return spec.source.empty() ? std::st
 void ValidateBody(const ModelSpec& spec, const BodySpec& body) {
   if (!(body.mass > 0.0)) {
     std::ostringstream msg;
-    msg << Prefix(spec) << "body '" << body.name << "': mass " << body.mass << " is not positive; expected mass > 0 [kg]";
+    msg << Prefix(spec) << "body '" << body.name << "': mass " << body.mass
+        << " is not positive; expected mass > 0 [kg]";
     throw ConfigError(msg.str());
   }
   const Eigen::SelfAdjointEigenSolver<Mat3> eig(0.5 * (body.inertia_cm_B + body.inertia_cm_B.transpose()));
@@ -257,7 +258,9 @@ Model BuildModel(const ModelSpec& spec) {
     for (const VariableEffectsSpec& effects : joint.effects) {
       model.num_multipliers_ += effects.drives.size() + effects.static_hold;
       for (const StopSpec& stop : effects.stops) model.num_multipliers_ += stop.kind == StopSpec::Kind::kRigid;
-      for (const FrictionSpec& f : effects.frictions) model.num_multipliers_ += f.law != FrictionSpec::Law::kRegularised;
+      for (const FrictionSpec& f : effects.frictions) {
+        model.num_multipliers_ += f.law != FrictionSpec::Law::kRegularised;
+      }
       num_effect_slots += effects.stops.size() + effects.frictions.size();
     }
   }

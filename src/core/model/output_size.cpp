@@ -21,8 +21,12 @@ constexpr int kValuesPerSampleTrailer = 8;   // six energies, dt, iterations
 long OutputValuesPerSample(const Model& model) {
   long aero = 0;
   for (const TypicalSectionAero* section : model.aero_sections()) aero += kValuesPerAeroSection + section->num_states();
-  for (const StripStationInfo& station : model.strip_stations()) aero += kValuesPerAeroSection + station.inner->num_states();
-  for (const RotorInflow* rotor : model.aero_rotors()) aero += kValuesPerRotor + (rotor->harmonic() ? kValuesPerHarmonics : 0);
+  for (const StripStationInfo& station : model.strip_stations()) {
+    aero += kValuesPerAeroSection + station.inner->num_states();
+  }
+  for (const RotorInflow* rotor : model.aero_rotors()) {
+    aero += kValuesPerRotor + (rotor->harmonic() ? kValuesPerHarmonics : 0);
+  }
   return aero + kValuesPerSampleHeader + kValuesPerVariable * static_cast<long>(model.variable_names().size()) +
          kValuesPerJoint * static_cast<long>(model.joints().size()) +
          kValuesPerStop * static_cast<long>(model.stops().size()) +
@@ -67,7 +71,9 @@ void CheckOutputSize(const Model& model) {
   if (!(samples * per_sample > kMaxOutputValues)) return;
   std::ostringstream msg;
   msg << SamplesText(model, samples);
-  if (output.rate_hz == 0) msg << " (one per step, at least t_end / dt" << (model.solver().adaptive ? "_max" : "") << ")";
+  if (output.rate_hz == 0) {
+    msg << " (one per step, at least t_end / dt" << (model.solver().adaptive ? "_max" : "") << ")";
+  }
   msg << " of " << per_sample << " values";
   if (!model.beam_stations().empty()) {
     msg << " (" << kValuesPerBeamStation * model.beam_stations().size() << " of them from output.beam_stations)";

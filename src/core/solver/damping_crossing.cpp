@@ -9,12 +9,13 @@ namespace flexmbd {
 namespace {
 
 // A mode grows, for the flutter search, when its damping ratio is below minus kRoundOffMargin and, in a model with
-// element states, its frequency is below kResolved of the frequency scale (theory (E9)). Undamped roots of the dense first-order solve with element
-// states (E7) come out with damping ratios of round-off size and either sign that drift with the speed, the more the
-// nearer the top of the spectrum: in the Goland wing's sweep -1.1e-9 at 1.9e4 Hz (0.16 of the scale) and below -1e-6
-// at 1.21e5 Hz (the scale), the beam's axial and shear roots. Flutter roots sit lower: 11 Hz there (1e-4 of the
-// scale), the Conner section's 6 Hz at 0.05 of its scale (its fastest inflow root). A flutter root's ratio changes by
-// ~5e-3 per m/s, so the margin moves the located speed by ~2e-4 m/s, 1.5e-6 of it: far inside the 1e-4 bracket.
+// element states, its frequency is below kResolved of the frequency scale (theory (E9)). Undamped roots of the dense
+// first-order solve with element states (E7) come out with damping ratios of round-off size and either sign that drift
+// with the speed, the more the nearer the top of the spectrum: in the Goland wing's sweep -1.1e-9 at 1.9e4 Hz (0.16 of
+// the scale) and below -1e-6 at 1.21e5 Hz (the scale), the beam's axial and shear roots. Flutter roots sit lower: 11 Hz
+// there (1e-4 of the scale), the Conner section's 6 Hz at 0.05 of its scale (its fastest inflow root). A flutter root's
+// ratio changes by ~5e-3 per m/s, so the margin moves the located speed by ~2e-4 m/s, 1.5e-6 of it: far inside the 1e-4
+// bracket.
 constexpr double kRoundOffMargin = 1.0e-6, kResolved = 0.1;
 
 bool Grows(const Mode& mode, const EigenResult& result) {

@@ -163,7 +163,9 @@ Eigen::VectorXd EnergyDecayingIntegrator::Predict(const State& start, double h) 
   for (int k = 0; k < model_.num_variables(); ++k) {
     x[model_.variable_unknown(k)] = h * start.qdot[k] + (has_rates ? 0.5 * h * h * start.qddot_prev[k] : 0.0);
   }
-  for (int k = 0; k < model_.num_element_states(); ++k) x[model_.element_state_unknown(k)] = h * start.element_state_rates[k];
+  for (int k = 0; k < model_.num_element_states(); ++k) {
+    x[model_.element_state_unknown(k)] = h * start.element_state_rates[k];
+  }
   x.tail(model_.num_multipliers()) = start.lambda;
   return x;
 }

@@ -74,7 +74,9 @@ OutputSample MakeSample(const Model& model, const State& state, const StepContex
   s.velocity = state.qdot;
   s.effort = Eigen::VectorXd::Zero(model.num_variables());
   for (const Joint* joint : model.joints()) {
-    if (joint->num_variables() > 0) s.effort.segment(joint->first_variable(), joint->num_variables()) = joint->VariableForces(ctx);
+    if (joint->num_variables() > 0) {
+      s.effort.segment(joint->first_variable(), joint->num_variables()) = joint->VariableForces(ctx);
+    }
     const Eigen::VectorXd lambda = state.lambda.segment(joint->first_multiplier(), joint->num_constraints());
     s.reaction_force_W.push_back(-lambda.head<3>());
     s.reaction_moment.push_back(joint->num_constraints() == 6 ? Vec3(-lambda.tail<3>()) : Vec3::Zero());
@@ -87,8 +89,12 @@ OutputSample MakeSample(const Model& model, const State& state, const StepContex
   s.external_work = state.external_work;
   s.dissipated = state.dissipated_physical;
   s.numerical_dissipation = state.dissipated_numerical;
-  for (const BeamStationInfo& station : model.beam_stations()) s.beam_stations.push_back(SampleStation(model, state, ctx, station));
-  for (const TypicalSectionAero* section : model.aero_sections()) s.aero_sections.push_back(SampleAero(*section, state, ctx));
+  for (const BeamStationInfo& station : model.beam_stations()) {
+    s.beam_stations.push_back(SampleStation(model, state, ctx, station));
+  }
+  for (const TypicalSectionAero* section : model.aero_sections()) {
+    s.aero_sections.push_back(SampleAero(*section, state, ctx));
+  }
   for (const StripStationInfo& station : model.strip_stations()) {
     // A station at a node (weight 0) takes that node's strip alone.
     const AeroSectionSample inner = SampleStrip(*station.inner, state, ctx);

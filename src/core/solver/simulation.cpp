@@ -203,7 +203,8 @@ void Simulation::AdvanceTo(double t_until, double t_end, const SampleSink& sink)
     // Steps land on t_end and on every breakpoint of the time functions before it, never across one, except one
     // closer than dt_min: the step after a landing grows from the landing's size, and a table's 1e-9 s edge landed on
     // left the run below dt_min. The run's last steps share the time left; a breakpoint or an instant the run stops at
-    // before its end (at_times) is reached by one step, so that the state an eigen-analysis takes there stays as it was.
+    // before its end (at_times) is reached by one step, so that the state an eigen-analysis takes there stays as it
+    // was.
     const std::vector<double>& breakpoints = model_.breakpoints();
     const auto next_breakpoint = std::upper_bound(breakpoints.begin(), breakpoints.end(),
                                                   state_.t + std::max(kTimeEpsilon * h_, solver.dt_min));

@@ -45,7 +45,9 @@ OutputSample VanishingStepSample(const Model& model, SparseSystem* system, const
   // the state's mode: `sticking` says whether it is stuck at the instant, and one at rest that breaks away is.
   State with_forces = state;
   with_forces.lambda = *ctx->lambda;
-  for (const JointStop* stop : model.stop_effects()) with_forces.effects[stop->slot()].mode = (*modes)[stop->slot()].mode;
+  for (const JointStop* stop : model.stop_effects()) {
+    with_forces.effects[stop->slot()].mode = (*modes)[stop->slot()].mode;
+  }
   return MakeSample(model, with_forces, *ctx, 0.0, 0);
 }
 }  // namespace
@@ -63,10 +65,12 @@ OutputSample StartSample(const Model& model, const State& state, double h) {
   // friction's states are single's; the stops' and friction's forces are extrapolated as the others.
   OutputSample start = single;
   MixLinearQuantities(single, twice, -1.0, &start);
-  auto extrapolated = [](const auto& now, const auto& later) -> std::decay_t<decltype(now)> { return 2.0 * now - later; };
-  // A stop never pulls (docs/theory.md (C2)), so its force at the start is >= 0; the line can cross zero where the force
-  // is not linear in the step: an elastic stop touched at rest has forces that grow as h^2 from 0, extrapolated to
-  // -2 c h^2 (-2.5e-5 N for a slider pressed by 5 N onto a stop of 1e5 N/m). Its error is that O(h^2) term.
+  auto extrapolated = [](const auto& now, const auto& later) -> std::decay_t<decltype(now)> {
+    return 2.0 * now - later;
+  };
+  // A stop never pulls (docs/theory.md (C2)), so its force at the start is >= 0; the line can cross zero where the
+  // force is not linear in the step: an elastic stop touched at rest has forces that grow as h^2 from 0, extrapolated
+  // to -2 c h^2 (-2.5e-5 N for a slider pressed by 5 N onto a stop of 1e5 N/m). Its error is that O(h^2) term.
   for (size_t k = 0; k < start.stops.size(); ++k) {
     const double force = extrapolated(single.stops[k].force, twice.stops[k].force);
     const bool pulls = force < 0.0;

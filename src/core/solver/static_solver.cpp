@@ -62,7 +62,8 @@ bool HoldPushedJoints(const Model& model, const StaticIncrement& increment_rule,
   // Without accelerations the nearest rigid stop is closed whichever way it lies, and if it pulls, opened again and
   // released, and the next nearest closed.
   const bool directed = released_motion != nullptr;
-  const Eigen::VectorXd& accelerations = directed ? released_motion->qddot_prev : start->qddot_prev;  // read if directed
+  const Eigen::VectorXd& accelerations =
+      directed ? released_motion->qddot_prev : start->qddot_prev;  // read if directed
   std::vector<int> nearest(model.num_variables(), -1);
   const std::vector<const JointStop*>& stops = model.stop_effects();
   for (size_t k = 0; k < stops.size(); ++k) {

@@ -31,10 +31,10 @@ std::string DescribeErrorEntry(const Model& model, int unknown) {
 
 std::string StepStatistics::Summary(const Model& model) const {
   std::ostringstream out;
-  out << "steps: " << accepted << " accepted, " << rejected() << " rejected (" << rejected_error << " local error, " << rejected_event << " stop or friction event, "
-      << rejected_newton << " Newton not converged, " << rejected_singular << " singular matrix); "
-      << newton_iterations << " Newton iterations (" << tangents << " with a fresh tangent); step size " << h_min
-      << " to " << h_max << " s";
+  out << "steps: " << accepted << " accepted, " << rejected() << " rejected (" << rejected_error << " local error, "
+      << rejected_event << " stop or friction event, " << rejected_newton << " Newton not converged, "
+      << rejected_singular << " singular matrix); " << newton_iterations << " Newton iterations (" << tangents
+      << " with a fresh tangent); step size " << h_min << " to " << h_max << " s";
   if (trial > 0) out << "; " << trial << " trial steps chose the first step " << h_start << " s";
   const auto most = std::max_element(limited_by.begin(), limited_by.end(),
                                      [](const auto& a, const auto& b) { return a.second < b.second; });

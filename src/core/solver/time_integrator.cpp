@@ -245,7 +245,9 @@ void RecordStepHistory(const State& start, double h, State* end) {
   for (Eigen::VectorXd& rates : end->mean_state_rate) {
     if (rates.size() != end->element_states.size()) rates = Eigen::VectorXd::Zero(end->element_states.size());
   }
-  if (end->element_states.size() > 0) end->peak_state_rate = end->peak_state_rate.cwiseMax(end->mean_state_rate[0].cwiseAbs());
+  if (end->element_states.size() > 0) {
+    end->peak_state_rate = end->peak_state_rate.cwiseMax(end->mean_state_rate[0].cwiseAbs());
+  }
   if (end->peak_joint_rate.size() != end->qdot.size()) end->peak_joint_rate = Eigen::VectorXd::Zero(end->qdot.size());
   end->peak_joint_rate = end->peak_joint_rate.cwiseMax(end->qdot.cwiseAbs());
 }
@@ -265,7 +267,9 @@ Eigen::VectorXd CoastingIncrements(const Model& model, const State& start, doubl
     x.segment<3>(model.node_unknown(k) + 3) = h * start.nodes[k].w;
   }
   for (int k = 0; k < model.num_variables(); ++k) x[model.variable_unknown(k)] = h * start.qdot[k];
-  for (int k = 0; k < model.num_element_states(); ++k) x[model.element_state_unknown(k)] = h * start.element_state_rates[k];
+  for (int k = 0; k < model.num_element_states(); ++k) {
+    x[model.element_state_unknown(k)] = h * start.element_state_rates[k];
+  }
   return x;
 }
 

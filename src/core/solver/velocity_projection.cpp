@@ -68,22 +68,43 @@ bool VelocityProjection::SolveLimitingStep(const State& state, double h, MeanMot
   return true;
 }
 
-bool VelocityProjection::HoldStuckJoints(const State& state) {
+void VelocityProjection::HoldStuckJoints(const State& state) {
   // Released, a joint stuck at rest would slide the way its round-off rate points.
-  bool any = false;
   for (const FrictionEffect* friction : model_.friction_effects()) {
     if (!StuckIn(state, *friction)) continue;
     modes_[friction->slot()].mode = FrictionEffect::kSticking;
-    any = true;
+    judged_[friction->slot()] = true;
   }
-  return any;
 }
 
-bool VelocityProjection::JudgeStuckJoints(const State& state, double h) {
+bool VelocityProjection::HoldStoppedSlides(const State& state, double h) {
+  const auto& frictions = model_.friction_effects();
+  const bool sliding = std::any_of(frictions.begin(), frictions.end(), [&](const FrictionEffect* friction) {
+    return friction->has_sticking_row() && modes_[friction->slot()].mode != FrictionEffect::kSticking;
+  });
+  if (!sliding) return true;
+  const StepContext* released = flexmbd::SolveLimitingStep(model_, system_, &builder_, state, h);
+  if (released == nullptr) return false;
+  // Read every slide before a mode changes: the context's trial modes are modes_.
+  std::vector<int> stopped;
+  for (const FrictionEffect* friction : frictions) {
+    if (friction->SlideStoppedBy(*released)) stopped.push_back(friction->slot());
+  }
+  for (const int slot : stopped) {
+    modes_[slot].mode = FrictionEffect::kSticking;
+    judged_[slot] = true;
+  }
+  if (!stopped.empty()) redundancy_.Mark(state, &modes_);
+  return true;
+}
+
+bool VelocityProjection::JudgeAcrossJump(const State& state, double h) {
+  if (!HoldStoppedSlides(state, h)) return false;
+  if (std::none_of(judged_.begin(), judged_.end(), [](bool judged) { return judged; })) return true;
   if (flexmbd::SolveLimitingStep(model_, system_, &builder_, state, h) == nullptr) return false;
   bool revised = false;
   for (const FrictionEffect* friction : model_.friction_effects()) {
-    if (!StuckIn(state, *friction)) continue;
+    if (!judged_[friction->slot()]) continue;
     const int mode = friction->ModeAcrossImpulse(builder_.context());
     revised = revised || mode != modes_[friction->slot()].mode;
     modes_[friction->slot()].mode = mode;
@@ -108,9 +129,10 @@ bool VelocityProjection::ApplyAtDriveJump(State* state, const Eigen::VectorXd& b
       !Project(&projected, nothing_held, kLimitingStepFraction * h, &after, Removed::kDrivesWork)) {
     return false;
   }
-  // The jump is an impulse: a joint stuck before it stays stuck, or slides, as Coulomb's law for impulses says (F8).
+  // The jump is an impulse: a joint stuck before it, or whose slide it stops, sticks or slides as Coulomb's law for
+  // impulses says (F8).
   for (const FrictionEffect* friction : model_.friction_effects()) {
-    if (StuckIn(*state, *friction)) {
+    if (judged_[friction->slot()]) {
       FrictionEffect::EnterAfterImpulse(modes_[friction->slot()].mode, &projected.effects[friction->slot()]);
     }
   }
@@ -124,13 +146,15 @@ bool VelocityProjection::Project(State* state, const std::vector<bool>& held, do
   for (const ModalEffect* effect : model_.modal_effects()) {
     if (!held[effect->slot()]) modes_[effect->slot()].mode = effect->ReleasedMode(*state);
   }
-  // At a jump of the drives' rates the frictions stuck before it are judged (F8).
-  const bool judge = drive_rates != nullptr && HoldStuckJoints(*state);
+  // At a jump of the drives' rates the frictions stuck before it, and those whose slide it stops, are judged (F8).
+  const bool at_jump = drive_rates != nullptr;
+  judged_.assign(modes_.size(), false);
+  if (at_jump) HoldStuckJoints(*state);
   redundancy_.Mark(*state, &modes_);
   builder_.set_effect_modes(&modes_);
   builder_.set_drive_rates(drive_rates);
   MeanMotion single, twice;
-  const bool converged = (!judge || JudgeStuckJoints(*state, h)) && SolveLimitingStep(*state, h, &single) &&
+  const bool converged = (!at_jump || JudgeAcrossJump(*state, h)) && SolveLimitingStep(*state, h, &single) &&
                          SolveLimitingStep(*state, 2.0 * h, &twice);
   builder_.set_drive_rates(nullptr);
   if (!converged) return false;

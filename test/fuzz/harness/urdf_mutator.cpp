@@ -123,7 +123,9 @@ void UrdfMutator::Mutate(XMLDocument* doc, Rng* rng) const {
       return;
     case 2: {
       const std::vector<XMLElement*> joints = Named(elements, "joint");
-      if (!joints.empty()) joints[Pick(rng, joints.size())]->SetAttribute("type", kJointTypes[Pick(rng, kJointTypes.size())].c_str());
+      if (!joints.empty()) {
+        joints[Pick(rng, joints.size())]->SetAttribute("type", kJointTypes[Pick(rng, kJointTypes.size())].c_str());
+      }
       return;
     }
     case 3:
