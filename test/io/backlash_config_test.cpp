@@ -180,7 +180,8 @@ TEST(BacklashConfig, DriveOntoOrIntoAStopThatGivesWayIsAccepted) {
   for (const std::string joint :
        {"slide: {drive: {law: table, times: [0, 0.5], values: [0, 0.5]}, backlash: {upper: 0.5}}",
         "slide: {drive: {law: linear_ramp, value: 2.0}, backlash: {upper: 0.5, stop: {type: elastic, stiffness: 1e4}}}",
-        "hinge: {drive: {law: linear_ramp, value: 0.6}, backlash: {upper: 0.5, retract: {joint: spin, above: 2, below: 1}}}",
+        "hinge: {drive: {law: linear_ramp, value: 0.6},"
+        " backlash: {upper: 0.5, retract: {joint: spin, above: 2, below: 1}}}",
         "slide: {drive: {law: linear_ramp, value: 2.0, start: 1.0}, backlash: {upper: 0.5}}"}) {
     EXPECT_NO_THROW(Load("joints: {" + joint + "}\nsolver: {t_end: 1.0}")) << joint;
   }

@@ -98,9 +98,10 @@ TEST(BeamExtensionsConfig, DistributedLoadWithAPointIsRejected) {
 TEST(BeamExtensionsConfig, MomentOnABeamActsOnTheNodeItsPointPicks) {
   // Found as a user: a cantilever's tip moment could not be given (a moment's point was refused), and without a
   // point the moment went to the clamped root node, where it moved nothing.
-  const ModelSpec spec = LoadDataUrdf("beam_arm.urdf", Replaced("force: [0.0, 0.0, -2.0], distributed: true, frame: body",
-                                                                "moment: [0.0, 0.0, 3.0], point: [1.0, 0.0, 0.0]"),
-                                      "arm.yaml");
+  const ModelSpec spec =
+      LoadDataUrdf("beam_arm.urdf", Replaced("force: [0.0, 0.0, -2.0], distributed: true, frame: body",
+                                             "moment: [0.0, 0.0, 3.0], point: [1.0, 0.0, 0.0]"),
+                   "arm.yaml");
   ASSERT_EQ(spec.loads.size(), 1u);
   EXPECT_EQ(spec.loads[0].kind, LoadSpec::Kind::kMoment);
   EXPECT_EQ(spec.loads[0].p_BoP_B, Vec3(1.0, 0.0, 0.0));

@@ -103,7 +103,8 @@ TEST(ContactAtStart, ElasticStopTouchedAtRestUnderAPreloadOscillatesAsAMassOnASp
   const std::string csv_path = testing::TempDir() + "preloaded_elastic.csv";
   test::RunnerOutput("test/data/urdf/stick_slip.urdf",
                      "joints:\n  slider:\n    spring: {k: 100.0, rest: 0.06}\n    initial: {position: 0.05}\n"
-                     "    backlash: {upper: 0.05, stop: {type: elastic, law: linear, stiffness: 1.0e5, restitution: 1.0}}\n"
+                     "    backlash: {upper: 0.05,\n"
+                     "               stop: {type: elastic, law: linear, stiffness: 1.0e5, restitution: 1.0}}\n"
                      "solver: {t_end: 0.1}\noutput: {rate_hz: 20000, csv: " + csv_path + "}\n",
                      "preloaded_elastic");
   const test::CsvTable csv = test::ReadCsv(csv_path);

@@ -41,7 +41,8 @@ Window SpinWindow(const std::string& urdf, const std::string& yaml, const std::s
   return {numerical / energy, (at(*last, "energy.total") - energy + numerical) / energy};
 }
 
-const std::string kSpin = "joints:\n  spin:\n    initial: {velocity: 10.0}\nsolver: {t_end: 20.0, gravity: [0.0, 0.0, 0.0]}\n";
+const std::string kSpin =
+    "joints:\n  spin:\n    initial: {velocity: 10.0}\nsolver: {t_end: 20.0, gravity: [0.0, 0.0, 0.0]}\n";
 
 // With the lag turned, a steady spin's terms vanish and what the scheme removes is its term on the error Newton
 // leaves in each step's change of velocity, tol |dv| (the default tol 1e-6): per step at most

@@ -98,10 +98,12 @@ EnergyDecayingIntegrator::Coefficients EnergyDecayingIntegrator::Choose(const St
     if (elements_dissipated_[element->index()]) c.elements[element->index()] = elements_all_on_[element->index()];
   }
   const double ratio = start.history_steps >= 2 ? 1.0 : 0.0;  // no a_prev2 before the second step
+  const double tol = model_.solver().tol;
   for (int k = 0; k < model_.num_nodes(); ++k) {
     const NodeState& n = start.nodes[k];
-    c.nodes[k].alpha_translation = Dissipates(n.a_prev, ratio * n.a_prev2, Mat3::Identity(), model_.solver().tol) ? alpha_inf_ : 0.0;
-    c.nodes[k].alpha_rotation = Dissipates(n.alpha_prev, ratio * n.alpha_prev2, node_inertia_[k], model_.solver().tol) ? alpha_inf_ : 0.0;
+    c.nodes[k].alpha_translation = Dissipates(n.a_prev, ratio * n.a_prev2, Mat3::Identity(), tol) ? alpha_inf_ : 0.0;
+    c.nodes[k].alpha_rotation =
+        Dissipates(n.alpha_prev, ratio * n.alpha_prev2, node_inertia_[k], tol) ? alpha_inf_ : 0.0;
   }
   if (start.qddot_prev2.size() != model_.num_variables()) return c;
   for (int k = 0; k < model_.num_variables(); ++k) {
@@ -120,11 +122,12 @@ bool EnergyDecayingIntegrator::DropEnergyGainingDissipation(const State& start, 
       dropped = true;
     }
   };
+  const double tol = model_.solver().tol;
   for (int k = 0; k < model_.num_nodes(); ++k) {
     const NodeStep& s = (*ctx.nodes)[k];
     const NodeState& n = start.nodes[k];
-    drop_unless(Dissipates(s.v_f - s.v_i, h * n.a_prev, Mat3::Identity(), model_.solver().tol), &c->nodes[k].alpha_translation);
-    drop_unless(Dissipates(s.w_f - s.w_i, h * n.alpha_prev, node_inertia_[k], model_.solver().tol), &c->nodes[k].alpha_rotation);
+    drop_unless(Dissipates(s.v_f - s.v_i, h * n.a_prev, Mat3::Identity(), tol), &c->nodes[k].alpha_translation);
+    drop_unless(Dissipates(s.w_f - s.w_i, h * n.alpha_prev, node_inertia_[k], tol), &c->nodes[k].alpha_rotation);
   }
   for (int k = 0; k < model_.num_variables(); ++k) {
     const VariableStep& v = (*ctx.variables)[k];

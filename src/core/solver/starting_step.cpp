@@ -23,8 +23,9 @@ double ChooseStartingStep(TimeIntegrator* integrator, const State& start, double
     double size = h;  // of the step tried: h, or less where an event or an effect's limit asks for it
     int steps_since_event = 0, events = 0;
     while (steps_since_event < kStepsToAnEstimate) {
-      // Without the scheme's dissipation, which damps a motion too fast for the step and hid it from the estimate (a
-      // contact touched at rest under a preload, two steps per period of its oscillation: docs/theory.md, "First step").
+      // Without the scheme's dissipation, which damps a motion too fast for the step and hid it from the estimate
+      // (a contact touched at rest under a preload, two steps per period of its oscillation: docs/theory.md,
+      // "First step").
       result = integrator->TrialStep(state, size, &end);
       controller->BookTrial(result);
       if (result.status == StepStatus::kRejectedEvent) {
