@@ -7,7 +7,6 @@
 
 #include <gtest/gtest.h>
 
-#include <algorithm>
 #include <cmath>
 #include <string>
 #include <vector>
@@ -74,11 +73,7 @@ void ExpectImpulseOfTheTipNode(const Impact& impact) {
 void ExpectFrictionWorkAndBooks(const test::CsvTable& table) {
   EXPECT_EQ(test::LargestFall(table, "friction.slot.work"), 0.0);
   EXPECT_GT(table.rows.back().at(table.Column("friction.slot.work")), 0.0);
-  double worst = 0;
-  for (const std::vector<double>& row : table.rows) {
-    const test::CsvBooks books = test::BooksAt(table, row);
-    worst = std::max(worst, std::abs(books.imbalance) / books.throughput);
-  }
+  const double worst = test::WorstImbalance(table);
   testing::Test::RecordProperty("books_per_throughput_1e-9", std::to_string(worst * 1e9));
   EXPECT_LE(worst, 1.0e-6);
 }
