@@ -330,9 +330,13 @@ StepLimit FrictionEffect::Limit(const StepContext& ctx, const State& end) const 
   // Redo the step to end just before the slip stops (linear in the rate), where it can stick gently; not where an
   // impact elsewhere turns it: a rigid stop's contact step reverses the motion whatever its length, and the landings
   // fell below any dt_min (a free four-bar's sliding rocker when its crank struck its stop, explore6). The step keeps
-  // the slide's mode, and the next one starts sliding the way the joint then moves (ReviseMode).
+  // the slide's mode, and the next one starts sliding the way the joint then moves (ReviseMode). So does a step of
+  // dt_min, whose landing would be shorter still, as a stop's landing (C5): a stiff mode turns a slip in any step (a
+  // slot at the tip of a flexible rail of EA 1e9 after a rigid impact, at 1.6e5 m/s^2).
   if (Direction(TrialMode(ctx)) * v_f < 0 && !BreakingAway(ctx) && !ImpactInStep(ctx)) {
-    limit.retry = kEventLanding * ctx.h * std::abs(v_i) / (std::abs(v_i) + std::abs(v_f));
+    if (ctx.h > solver_.dt_min) {
+      limit.retry = std::max(kEventLanding * ctx.h * std::abs(v_i) / (std::abs(v_i) + std::abs(v_f)), solver_.dt_min);
+    }
     return limit;
   }
   const double speed = EndSpeed(ctx, end), change = spec_.radius * std::abs(v_f - v_i);
