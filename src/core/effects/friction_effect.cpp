@@ -344,7 +344,7 @@ StepLimit FrictionEffect::Limit(const StepContext& ctx, const State& end) const 
   if (std::abs(v_f) >= std::abs(v_i) || change == 0) return limit;  // not slowing down
   // Never below dt_min, as the landings of stops (C5): the steps are v0 / |a|, and a slip that a stiff mode turns has
   // no bound on |a| (a slot at a flexible rail's tip after a rigid impact: 5e4 m/s^2, steps of 5e-8 s). A step of
-  // dt_min then captures the slip or lands on its reversal (F2).
+  // dt_min then captures the slip, or lets it reverse where it is (F2).
   for (int k = 0; k < 4; ++k) {
     if (speed <= kSpeedBands[k] * v0) {
       limit.next = std::max(ctx.h * kSpeedTargets[k] * v0 / change, solver_.dt_min);
