@@ -25,6 +25,16 @@ inline CsvBooks BooksAt(const CsvTable& table, const std::vector<double>& row) {
           std::abs(first) + removed + std::abs(at("energy.external_work"))};
 }
 
+/// The largest imbalance of the books over the rows, relative to the energy through them at each.
+inline double WorstImbalance(const CsvTable& table) {
+  double worst = 0;
+  for (const std::vector<double>& row : table.rows) {
+    const CsvBooks books = BooksAt(table, row);
+    worst = std::max(worst, std::abs(books.imbalance) / books.throughput);
+  }
+  return worst;
+}
+
 /// The largest fall of `column` from one row to the next, the value before the first row taken as 0: 0 for a work
 /// that never falls (D8, a friction's work booked row by row).
 inline double LargestFall(const CsvTable& table, const std::string& column) {

@@ -50,11 +50,7 @@ void ExpectRunsWithClosedBooks(const std::string& shoulder, const std::string& r
   EXPECT_NE(out.find("stop elbow " + stop + ": "), std::string::npos) << out;
   const test::CsvTable table = test::ReadCsv(csv);
   ASSERT_FALSE(table.rows.empty());
-  double worst = 0;
-  for (const std::vector<double>& row : table.rows) {
-    const test::CsvBooks books = test::BooksAt(table, row);
-    worst = std::max(worst, std::abs(books.imbalance) / books.throughput);
-  }
+  const double worst = test::WorstImbalance(table);
   testing::Test::RecordProperty("books_per_throughput_1e-9", std::to_string(worst * 1e9));
   EXPECT_LE(worst, 1.0e-6);
 }

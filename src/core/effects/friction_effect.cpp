@@ -38,8 +38,13 @@ constexpr double kStepAfterJumpSafety = 0.9;
 // BreakawayFraction when the static bound is not reached.
 constexpr double kNoBreakaway = std::numeric_limits<double>::infinity();
 
-// True when a breakaway at this fraction of the step lies far enough into it to be located by a shorter step.
-bool BreakawayToLocate(double fraction) { return fraction > kBreakawayEventFraction && fraction < 1.0; }
+// True when a breakaway at this fraction of a step of size h lies far enough into it to be located by a shorter
+// step; never in a step of dt_min, which breaks away where it is, as a stop's landing begins its contact (C5): a
+// stuck joint that a stiff mode shakes has its force cross the bound at any step size (a slot at a flexible rail's tip
+// after a rigid impact, located down to 8.7e-10 s at error_tol 1e-6).
+bool BreakawayToLocate(double fraction, double h, double dt_min) {
+  return fraction > kBreakawayEventFraction && fraction < 1.0 && h > dt_min;
+}
 }  // namespace
 
 FrictionEffect::FrictionEffect(const FrictionSpec& spec, const Joint& joint, int variable_unknown, int stick_multiplier,
@@ -233,7 +238,7 @@ int FrictionEffect::ReviseMode(const StepContext& ctx) const {
     const double lambda = (*ctx.lambda)[stick_multiplier_];
     if (std::abs(lambda) <= StaticBound(*ctx.lambda, *ctx.start)) return mode;
     // Past the bound far into the step: stuck until the crossing, which Limit locates (F3').
-    if (BreakawayToLocate(BreakawayFraction(ctx))) return mode;
+    if (BreakawayToLocate(BreakawayFraction(ctx), ctx.h, solver_.dt_min)) return mode;
     return lambda > 0 ? kSlidingPositive : kSlidingNegative;
   }
   // A joint breaking away (it began the step stuck and its static bound did not hold) keeps sliding for the
@@ -314,7 +319,9 @@ StepLimit FrictionEffect::Limit(const StepContext& ctx, const State& end) const 
   if (TrialMode(ctx) == kSticking) {
     // Also a step whose mean force kept the bound may pass it before its end.
     const double fraction = BreakawayFraction(ctx);
-    if (BreakawayToLocate(fraction)) limit.retry = kEventLanding * fraction * ctx.h;
+    if (BreakawayToLocate(fraction, ctx.h, solver_.dt_min)) {
+      limit.retry = std::max(kEventLanding * fraction * ctx.h, solver_.dt_min);
+    }
     return limit;
   }
   const double v_i = ctx.start->qdot[variable_], v_f = end.qdot[variable_];
@@ -335,17 +342,24 @@ StepLimit FrictionEffect::Limit(const StepContext& ctx, const State& end) const 
   // Redo the step to end just before the slip stops (linear in the rate), where it can stick gently; not where an
   // impact elsewhere turns it: a rigid stop's contact step reverses the motion whatever its length, and the landings
   // fell below any dt_min (a free four-bar's sliding rocker when its crank struck its stop, explore6). The step keeps
-  // the slide's mode, and the next one starts sliding the way the joint then moves (ReviseMode).
+  // the slide's mode, and the next one starts sliding the way the joint then moves (ReviseMode). So does a step of
+  // dt_min, whose landing would be shorter still, as a stop's landing (C5): a stiff mode turns a slip in any step (a
+  // slot at the tip of a flexible rail of EA 1e9 after a rigid impact, at 1.6e5 m/s^2).
   if (Direction(TrialMode(ctx)) * v_f < 0 && !BreakingAway(ctx) && !ImpactInStep(ctx)) {
-    limit.retry = kEventLanding * ctx.h * std::abs(v_i) / (std::abs(v_i) + std::abs(v_f));
+    if (ctx.h > solver_.dt_min) {
+      limit.retry = std::max(kEventLanding * ctx.h * std::abs(v_i) / (std::abs(v_i) + std::abs(v_f)), solver_.dt_min);
+    }
     return limit;
   }
   const double speed = EndSpeed(ctx, end), change = spec_.radius * std::abs(v_f - v_i);
   const double v0 = StickingSpeed(ctx.start->effects[slot()]);
   if (std::abs(v_f) >= std::abs(v_i) || change == 0) return limit;  // not slowing down
+  // Never below dt_min, as the landings of stops (C5): the steps are v0 / |a|, and a slip that a stiff mode turns has
+  // no bound on |a| (a slot at a flexible rail's tip after a rigid impact: 5e4 m/s^2, steps of 5e-8 s). A step of
+  // dt_min then captures the slip, or lets it reverse where it is (F2).
   for (int k = 0; k < 4; ++k) {
     if (speed <= kSpeedBands[k] * v0) {
-      limit.next = ctx.h * kSpeedTargets[k] * v0 / change;
+      limit.next = std::max(ctx.h * kSpeedTargets[k] * v0 / change, solver_.dt_min);
       break;
     }
   }
