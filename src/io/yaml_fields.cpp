@@ -75,7 +75,7 @@ bool OutOfDoubleRange(const Field& field) {
 
 // A quoted (or block) scalar is text, whatever it reads ("100", 'true'): the schema's numbers and booleans are
 // plain scalars, as YAML 1.2 resolves them. yaml-cpp tags a parsed quoted scalar "!" and a plain one "?"; the
-// tree the ROS node builds from its parameters tags the text ones "!" and leaves the others untagged (ros::ToYaml).
+// node the ROS node builds from its parameters has none (rosparam has typed them already).
 void RejectQuoted(const Field& field, const std::string& expected) {
   if (field.node().IsScalar() && field.node().Tag() == "!") {
     field.Fail("\"" + field.Text() + "\" is quoted, which makes it a text; expected " + expected +

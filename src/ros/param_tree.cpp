@@ -39,14 +39,8 @@ YAML::Node ToYaml(const XmlRpc::XmlRpcValue& value, const std::string& name) {
       return YAML::Node(std::to_string(static_cast<const int&>(value)));
     case Value::TypeDouble:
       return YAML::Node(FormatDouble(static_cast<const double&>(value)));
-    case Value::TypeString: {
-      // rosparam typed it as text ("100" quoted in the file it loaded, a launch file's type="str"): it stays text,
-      // tagged as yaml-cpp tags a quoted scalar, so the loader refuses it where a number or a boolean is expected, as
-      // it refuses a quoted value in a file.
-      YAML::Node text(static_cast<const std::string&>(value));
-      text.SetTag("!");
-      return text;
-    }
+    case Value::TypeString:
+      return YAML::Node(static_cast<const std::string&>(value));
     case Value::TypeArray: {
       YAML::Node sequence(YAML::NodeType::Sequence);
       for (int k = 0; k < value.size(); ++k) {

@@ -127,34 +127,6 @@ TEST(ParamTree, BadParameterGivesTheLoadersMessageNamingTheNamespace) {
   }
 }
 
-// rosparam types `k: "100"` (quoted in the file it loads) and `static_first: "true"` as text. They stay text, and the
-// loader refuses them as it refuses a quoted value in a file (docs/config.md, "Errors"), naming the namespace, the
-// field and the expected form; a text read as the number 100 and the boolean true before.
-TEST(ParamTree, TextParameterWhereANumberOrABooleanIsExpectedIsRefusedAsAQuotedValueIs) {
-  const std::string urdf = test::SourcePath("config/double_pendulum/double_pendulum.urdf");
-  struct Case {
-    const char* section;
-    const char* key;
-    const char* text;
-    const char* message;
-  };
-  for (const Case& c : {Case{"solver", "max_iterations", "20",
-                             "/arm: solver.max_iterations: \"20\" is quoted, which makes it a text; expected an "
-                             "iteration count >= 1, written without quotes"},
-                        Case{"solver", "static_first", "true",
-                             "/arm: solver.static_first: \"true\" is quoted, which makes it a text; expected true or "
-                             "false, written without quotes"}}) {
-    XmlRpc::XmlRpcValue value;
-    value[c.section][c.key] = std::string(c.text);
-    try {
-      LoadModelSpecFromStrings(ReadTextFile(urdf, "URDF file"), urdf, ToYaml(value, "/arm"), "/arm");
-      ADD_FAILURE() << c.key << ": no ConfigError";
-    } catch (const ConfigError& error) {
-      EXPECT_EQ(std::string(error.what()), c.message);
-    }
-  }
-}
-
 }  // namespace param_tree_test
 }  // namespace ros
 }  // namespace flexmbd

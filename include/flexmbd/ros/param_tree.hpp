@@ -13,8 +13,7 @@ namespace flexmbd {
 namespace ros {
 
 /// The YAML tree of a parameter value: structs become maps, arrays sequences, numbers, booleans and strings
-/// scalars (doubles with 17 significant digits, so they parse back exactly; strings tagged as quoted scalars, text
-/// whatever they read, as a quoted value in a YAML file is). Throws ConfigError naming
+/// scalars (doubles with 17 significant digits, so they parse back exactly). Throws ConfigError naming
 /// `name` (the parameter's path) for a date, binary or empty value, which YAML configs never hold.
 YAML::Node ToYaml(const XmlRpc::XmlRpcValue& value, const std::string& name);
 
