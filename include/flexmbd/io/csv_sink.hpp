@@ -40,9 +40,16 @@ class CsvSink {
 
  private:
   [[noreturn]] void ThrowWriteError();
+  /// Appends `value` (a double or an int) to the row being formed; PutField a comma and `value`.
+  template <typename Number>
+  void Put(Number value);
+  template <typename Number>
+  void PutField(Number value);
 
   std::string path_;
   std::vector<bool> harmonic_rotors_;  ///< per rotor: whether it has the harmonic inflow's columns
+  std::vector<char> row_;              ///< the row being formed, written to the stream whole
+  size_t row_length_ = 0;
   WholeLineFileBuffer file_;
   std::ostream out_;
 };
